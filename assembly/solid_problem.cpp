@@ -1,0 +1,341 @@
+#include "assembly/solid_problem.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <unordered_map>
+
+#include "io/errors.hpp"
+#include "kernels/surface_load.hpp"
+
+namespace grout {
+
+namespace {
+
+const MaterialInput& material_of(const Input& input, const ElementBlock& block) {
+  for (const auto& m : input.materials) {
+    if (m.block == block.name || m.block == "id_" + std::to_string(block.id)) return m;
+  }
+  throw InputError(input.file + ": grout/materials: no material for element block '" +
+                   block.name + "'");
+}
+
+// A rank assembles the elements that touch one of its nodes (for its rows) and computes
+// the stresses of its own elements, whose nodes may all belong to other ranks.
+bool is_local_element(const Partition& partition, int rank, GlobalIndex element,
+                      const GlobalIndex* conn, int npe) {
+  return partition.element_part[element] == rank ||
+         std::any_of(conn, conn + npe, [&](GlobalIndex n) { return partition.node_part[n] == rank; });
+}
+
+}  // namespace
+
+SolidProblem::SolidProblem(const Mesh& mesh, const Input& input, Teuchos::RCP<const Comm> comm)
+    : mesh_(mesh), input_(input), comm_(std::move(comm)), dim_(mesh.dimension) {
+  num_nodes_ = mesh.num_nodes();
+  const Partition partition = partition_mesh(mesh, comm_->getSize());
+  build_maps(partition);
+  build_blocks(partition);
+  build_graph();
+  build_loads();
+  for (const auto& d : input.dirichlet) dirichlet_.push_back(&d);
+}
+
+// Owned nodes: those the partition gives this rank. Column nodes: owned first (same order as
+// the row map), then every other node of an element touching an owned node, ascending.
+void SolidProblem::build_maps(const Partition& partition) {
+  const int rank = comm_->getRank();
+  std::vector<char> is_column(num_nodes_, 0);
+  for (GlobalIndex n = 0; n < num_nodes_; ++n) {
+    if (partition.node_part[n] == rank) {
+      column_nodes_.push_back(n);
+      is_column[n] = 2;
+    }
+  }
+  num_owned_nodes_ = int(column_nodes_.size());
+  std::vector<GlobalIndex> ghosts;
+  for (const auto& block : mesh_.blocks) {
+    const int npe = block.nodes_per_element;
+    for (GlobalIndex e = 0; e < block.num_elements(); ++e) {
+      const GlobalIndex* conn = &block.connectivity[e * npe];
+      if (!is_local_element(partition, rank, block.first_element + e, conn, npe)) continue;
+      for (int a = 0; a < npe; ++a) {
+        if (!is_column[conn[a]]) {
+          is_column[conn[a]] = 1;
+          ghosts.push_back(conn[a]);
+        }
+      }
+    }
+  }
+  std::sort(ghosts.begin(), ghosts.end());
+  column_nodes_.insert(column_nodes_.end(), ghosts.begin(), ghosts.end());
+
+  auto dofs_of = [&](std::size_t count) {
+    std::vector<GO> dofs(count * dim_);
+    for (std::size_t k = 0; k < count; ++k)
+      for (int c = 0; c < dim_; ++c) dofs[k * dim_ + c] = column_nodes_[k] * dim_ + c;
+    return dofs;
+  };
+  const auto owned = dofs_of(num_owned_nodes_);
+  const auto column = dofs_of(column_nodes_.size());
+  const GO n_global = num_nodes_ * dim_;
+  owned_map_ = Teuchos::rcp(new Map(n_global, owned.data(), owned.size(), 0, comm_));
+  column_map_ = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                     column.data(), column.size(), 0, comm_));
+  importer_ = Teuchos::rcp(new Import(owned_map_, column_map_));
+
+  column_coordinates_ = Kokkos::View<double**>("grout::column_coordinates", column_nodes_.size(),
+                                               dim_);
+  for (std::size_t k = 0; k < column_nodes_.size(); ++k)
+    for (int d = 0; d < dim_; ++d)
+      column_coordinates_(k, d) = mesh_.coordinates[column_nodes_[k] * dim_ + d];
+}
+
+void SolidProblem::build_blocks(const Partition& partition) {
+  const int rank = comm_->getRank();
+  std::unordered_map<GlobalIndex, int> column_index;
+  column_index.reserve(column_nodes_.size() * 2);
+  for (std::size_t k = 0; k < column_nodes_.size(); ++k) column_index[column_nodes_[k]] = int(k);
+
+  const bool plane_stress = input_.model.plane == PlaneKind::stress;
+  for (const auto& block : mesh_.blocks) {
+    const MaterialInput& material = material_of(input_, block);
+    const int npe = block.nodes_per_element;
+    std::vector<GlobalIndex> local;
+    for (GlobalIndex e = 0; e < block.num_elements(); ++e) {
+      const GlobalIndex* conn = &block.connectivity[e * npe];
+      if (is_local_element(partition, rank, block.first_element + e, conn, npe)) local.push_back(e);
+    }
+    LocalBlock lb;
+    lb.name = block.name;
+    lb.topology = block.topology;
+    lb.nodes_per_element = npe;
+    lb.constants = elastic_constants(material.youngs_modulus, material.poissons_ratio, dim_,
+                                     plane_stress);
+    lb.poissons_ratio = material.poissons_ratio;
+    lb.nodes = Kokkos::View<int**>("grout::block_nodes", local.size(), npe);
+    lb.global = Kokkos::View<GlobalIndex*>("grout::block_elements", local.size());
+    lb.owned = Kokkos::View<bool*>("grout::block_owned", local.size());
+    for (std::size_t i = 0; i < local.size(); ++i) {
+      const GlobalIndex e = local[i];
+      for (int a = 0; a < npe; ++a) lb.nodes(i, a) = column_index.at(block.connectivity[e * npe + a]);
+      lb.global(i) = block.first_element + e;
+      lb.owned(i) = partition.element_part[block.first_element + e] == rank;
+    }
+    blocks_.push_back(lb);
+  }
+}
+
+// Row (owned node k, component c) couples with every column dof of every local element that
+// contains node k. Built in local indices, rows sorted.
+void SolidProblem::build_graph() {
+  std::vector<std::vector<int>> node_neighbours(num_owned_nodes_);
+  for (const auto& block : blocks_) {
+    for (std::size_t e = 0; e < block.nodes.extent(0); ++e) {
+      for (int a = 0; a < block.nodes_per_element; ++a) {
+        const int k = block.nodes(e, a);
+        if (k >= num_owned_nodes_) continue;
+        for (int b = 0; b < block.nodes_per_element; ++b)
+          node_neighbours[k].push_back(block.nodes(e, b));
+      }
+    }
+  }
+  const std::size_t n_rows = std::size_t(num_owned_nodes_) * dim_;
+  Kokkos::View<std::size_t*> row_ptr("grout::graph_rows", n_rows + 1);
+  for (int k = 0; k < num_owned_nodes_; ++k) {
+    auto& nb = node_neighbours[k];
+    if (nb.empty()) nb.push_back(k);  // a node of no element keeps its diagonal
+    std::sort(nb.begin(), nb.end());
+    nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
+    for (int c = 0; c < dim_; ++c) row_ptr(k * dim_ + c + 1) = nb.size() * dim_;
+  }
+  for (std::size_t i = 0; i < n_rows; ++i) row_ptr(i + 1) += row_ptr(i);
+  Kokkos::View<LO*> entries("grout::graph_entries", row_ptr(n_rows));
+  for (int k = 0; k < num_owned_nodes_; ++k) {
+    for (int c = 0; c < dim_; ++c) {
+      std::size_t p = row_ptr(k * dim_ + c);
+      for (int m : node_neighbours[k])
+        for (int d = 0; d < dim_; ++d) entries(p++) = m * dim_ + d;
+    }
+  }
+  graph_ = Teuchos::rcp(new Graph(owned_map_, column_map_, row_ptr, entries));
+  graph_->fillComplete(owned_map_, owned_map_);
+}
+
+void SolidProblem::build_loads() {
+  std::unordered_map<GlobalIndex, int> column_index;
+  for (std::size_t k = 0; k < column_nodes_.size(); ++k) column_index[column_nodes_[k]] = int(k);
+  for (std::size_t l = 0; l < input_.loads.size(); ++l) {
+    const SideSet* set = mesh_.find_side_set(input_.loads[l].side_set);
+    if (!set) {
+      throw InputError(input_.file + ": grout/loads/" + input_.loads[l].name +
+                       "/side_set: no side set '" + input_.loads[l].side_set + "' in mesh '" +
+                       mesh_.file + "'");
+    }
+    for (std::size_t i = 0; i < set->elements.size(); ++i) {
+      const GlobalIndex e = set->elements[i];
+      const ElementBlock* block = nullptr;
+      for (const auto& b : mesh_.blocks)
+        if (e >= b.first_element && e < b.first_element + b.num_elements()) block = &b;
+      int local[max_side_nodes];
+      const int n = side_local_nodes(block->topology, set->sides[i], local);
+      LoadedFace face;
+      face.topology = side_topology(block->topology);
+      face.num_nodes = n;
+      face.load = l;
+      bool touches_owned = false;
+      for (int a = 0; a < n; ++a) {
+        const GlobalIndex node =
+            block->connectivity[(e - block->first_element) * block->nodes_per_element + local[a]];
+        const auto it = column_index.find(node);
+        face.nodes[a] = it == column_index.end() ? -1 : it->second;
+        touches_owned |= face.nodes[a] >= 0 && face.nodes[a] < num_owned_nodes_;
+      }
+      if (touches_owned) faces_.push_back(face);
+    }
+  }
+}
+
+Teuchos::RCP<Matrix> SolidProblem::create_matrix() const { return Teuchos::rcp(new Matrix(graph_)); }
+
+Teuchos::RCP<Vector> SolidProblem::create_vector() const { return Teuchos::rcp(new Vector(owned_map_)); }
+
+void SolidProblem::import_to_column(const Vector& u, Vector& u_column) const {
+  u_column.doImport(u, *importer_, Tpetra::INSERT);
+}
+
+void SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
+  Vector u_column(column_map_);
+  u_column.doImport(u, *importer_, Tpetra::INSERT);
+  const auto u_view = Kokkos::subview(u_column.getLocalViewHost(Tpetra::Access::ReadOnly), Kokkos::ALL(), 0);
+  f_int.putScalar(0.0);
+  auto f_view = Kokkos::subview(f_int.getLocalViewHost(Tpetra::Access::ReadWrite), Kokkos::ALL(), 0);
+  if (K) {
+    K->resumeFill();
+    K->setAllToScalar(0.0);
+  }
+  const auto local_matrix = K ? K->getLocalMatrixHost() : Matrix::local_matrix_host_type();
+  const bool with_tangent = K != nullptr;
+  const int dim = dim_;
+  const int n_owned = num_owned_nodes_;
+  const auto X_all = column_coordinates_;
+
+  for (const auto& block : blocks_) {
+    const auto nodes = block.nodes;
+    const auto global = block.global;
+    const Topology topology = block.topology;
+    const int npe = block.nodes_per_element;
+    const ElasticConstants constants = block.constants;
+    GlobalIndex first_inverted = std::numeric_limits<GlobalIndex>::max();
+    Kokkos::parallel_reduce(
+        "grout::assemble_solid", Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, nodes.extent(0)),
+        KOKKOS_LAMBDA(const int e, GlobalIndex& bad) {
+          double X[max_element_dofs], ue[max_element_dofs], fe[max_element_dofs];
+          double Ke[max_element_dofs * max_element_dofs];
+          int cols[max_element_dofs];
+          const int n = npe * dim;
+          for (int a = 0; a < npe; ++a) {
+            for (int d = 0; d < dim; ++d) {
+              const int k = nodes(e, a);
+              X[a * dim + d] = X_all(k, d);
+              ue[a * dim + d] = u_view(k * dim + d);
+              cols[a * dim + d] = k * dim + d;
+            }
+          }
+          const ElementStatus status = linear_elastic_element<double>(
+              topology, dim, X, ue, constants, fe, with_tangent ? Ke : nullptr);
+          if (status != ElementStatus::ok) {
+            bad = global(e) < bad ? global(e) : bad;
+            return;
+          }
+          for (int a = 0; a < npe; ++a) {
+            if (nodes(e, a) >= n_owned) continue;
+            for (int d = 0; d < dim; ++d) {
+              const int i = a * dim + d;
+              Kokkos::atomic_add(&f_view(cols[i]), fe[i]);
+              if (with_tangent) local_matrix.sumIntoValues(cols[i], cols, n, &Ke[i * n], false, true);
+            }
+          }
+        },
+        Kokkos::Min<GlobalIndex>(first_inverted));
+    if (first_inverted != std::numeric_limits<GlobalIndex>::max()) {
+      throw InputError("mesh '" + mesh_.file + "': element " + std::to_string(first_inverted + 1) +
+                       " of block '" + block.name + "' is inverted (det J <= 0)");
+    }
+  }
+  if (K) K->fillComplete(owned_map_, owned_map_);
+}
+
+void SolidProblem::external_force(double t, Vector& f_ext) const {
+  f_ext.putScalar(0.0);
+  auto f = Kokkos::subview(f_ext.getLocalViewHost(Tpetra::Access::ReadWrite), Kokkos::ALL(), 0);
+  for (const auto& face : faces_) {
+    const LoadInput& load = input_.loads[face.load];
+    double X[max_side_nodes * 3] = {}, p[max_side_nodes] = {}, tr[max_side_nodes * 3] = {};
+    double fe[max_side_nodes * 3] = {};
+    for (int a = 0; a < face.num_nodes; ++a) {
+      double x[3] = {0.0, 0.0, 0.0};
+      for (int d = 0; d < dim_; ++d) x[d] = X[a * dim_ + d] = column_coordinates_(face.nodes[a], d);
+      if (load.type == LoadKind::pressure) {
+        p[a] = load.value(t, x[0], x[1], x[2]);
+      } else {
+        for (int d = 0; d < dim_; ++d) tr[a * dim_ + d] = load.components[d](t, x[0], x[1], x[2]);
+      }
+    }
+    const bool pressure = load.type == LoadKind::pressure;
+    surface_load(face.topology, dim_, X, pressure ? p : nullptr, pressure ? nullptr : tr, fe);
+    for (int a = 0; a < face.num_nodes; ++a) {
+      if (face.nodes[a] >= num_owned_nodes_) continue;
+      for (int d = 0; d < dim_; ++d) f(face.nodes[a] * dim_ + d) += fe[a * dim_ + d];
+    }
+  }
+}
+
+std::vector<double> SolidProblem::prescribed_displacements(double t) const {
+  std::vector<double> value(num_nodes_ * dim_, std::numeric_limits<double>::quiet_NaN());
+  for (const DirichletInput* bc : dirichlet_) {
+    const NodeSet* set = mesh_.find_node_set(bc->node_set);
+    if (!set) {
+      throw InputError(input_.file + ": grout/dirichlet/" + bc->name + "/node_set: no node set '" +
+                       bc->node_set + "' in mesh '" + mesh_.file + "'");
+    }
+    for (GlobalIndex n : set->nodes) {
+      double x[3] = {0.0, 0.0, 0.0};
+      for (int d = 0; d < dim_; ++d) x[d] = mesh_.coordinates[n * dim_ + d];
+      value[n * dim_ + bc->component] = bc->value(t, x[0], x[1], x[2]);
+    }
+  }
+  return value;
+}
+
+void SolidProblem::element_stresses(const Vector& u,
+                                    std::vector<std::vector<double>>& stress) const {
+  Vector u_column(column_map_);
+  u_column.doImport(u, *importer_, Tpetra::INSERT);
+  const auto u_view = Kokkos::subview(u_column.getLocalViewHost(Tpetra::Access::ReadOnly), Kokkos::ALL(), 0);
+  const bool plane_strain = input_.model.plane == PlaneKind::strain;
+  const int n_components = dim_ == 2 ? 4 : 6;
+  for (const auto& block : blocks_) {
+    for (std::size_t e = 0; e < block.nodes.extent(0); ++e) {
+      if (!block.owned(e)) continue;
+      double X[max_element_dofs], ue[max_element_dofs], s[6];
+      for (int a = 0; a < block.nodes_per_element; ++a) {
+        for (int d = 0; d < dim_; ++d) {
+          X[a * dim_ + d] = column_coordinates_(block.nodes(e, a), d);
+          ue[a * dim_ + d] = u_view(block.nodes(e, a) * dim_ + d);
+        }
+      }
+      linear_elastic_stress(block.topology, dim_, X, ue, block.constants, plane_strain,
+                            block.poissons_ratio, s);
+      for (int c = 0; c < n_components; ++c) stress[c][block.global(e)] = s[c];
+    }
+  }
+}
+
+std::vector<std::string> SolidProblem::stress_names() const {
+  if (dim_ == 2) return {"stress_xx", "stress_yy", "stress_xy", "stress_zz"};
+  return {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_xz"};
+}
+
+}  // namespace grout

@@ -1,0 +1,103 @@
+#pragma once
+// The small-strain solid on Tpetra: dof maps, the matrix graph, element assembly of the
+// internal force and tangent, surface loads, prescribed displacements and element stresses.
+//
+// Distribution ("owner computes"): the mesh is replicated; a rank owns the nodes of the
+// partition and assembles, for its owned rows only, every element touching an owned node
+// (its own elements plus a layer of ghost elements). No assembly communication is needed,
+// and each row sums its element contributions in global element order, so the matrix and
+// residual are the same on any number of ranks.
+
+#include <Kokkos_Core.hpp>
+#include <Teuchos_RCP.hpp>
+#include <string>
+#include <vector>
+
+#include "assembly/partition.hpp"
+#include "assembly/tpetra_types.hpp"
+#include "io/input.hpp"
+#include "kernels/linear_elastic.hpp"
+
+namespace grout {
+
+/// The elements of one block that this rank assembles (its own plus ghosts).
+struct LocalBlock {
+  std::string name;
+  Topology topology = Topology::quad4;
+  int nodes_per_element = 0;
+  ElasticConstants constants{};
+  double poissons_ratio = 0.0;
+  Kokkos::View<int**> nodes;            ///< [element][a] column-map node index
+  Kokkos::View<GlobalIndex*> global;    ///< global element index
+  Kokkos::View<bool*> owned;            ///< element belongs to this rank's partition
+};
+
+/// A loaded element side whose nodes include an owned node.
+struct LoadedFace {
+  Topology topology = Topology::line2;
+  int num_nodes = 0;
+  int nodes[max_side_nodes] = {};  ///< column-map node indices
+  std::size_t load = 0;            ///< index into Input::loads
+};
+
+class SolidProblem {
+ public:
+  SolidProblem(const Mesh& mesh, const Input& input, Teuchos::RCP<const Comm> comm);
+
+  int dimension() const { return dim_; }
+  const Teuchos::RCP<const Comm>& comm() const { return comm_; }
+  /// Owned dofs (row, domain and range map); dof of node n, component c is n*dim + c.
+  const Teuchos::RCP<const Map>& owned_map() const { return owned_map_; }
+  /// Dofs of every node of the local elements, owned first (column map).
+  const Teuchos::RCP<const Map>& column_map() const { return column_map_; }
+  const Teuchos::RCP<const Graph>& graph() const { return graph_; }
+  Teuchos::RCP<Matrix> create_matrix() const;
+  Teuchos::RCP<Vector> create_vector() const;
+  /// u on the column map (owned values plus ghosts).
+  void import_to_column(const Vector& u, Vector& u_column) const;
+
+  /// f_int(u) = ∫ Bᵀσ(u) dV on the owned rows and, if K is non-null, the tangent K (on the
+  /// fixed graph, fill-completed on return). Throws InputError on an inverted element.
+  void assemble(const Vector& u, Vector& f_int, Matrix* K) const;
+
+  /// Consistent nodal forces of the pressure/traction loads at time t (owned rows).
+  void external_force(double t, Vector& f_ext) const;
+
+  /// Prescribed displacement per global dof at time t (NaN where free), on every rank.
+  std::vector<double> prescribed_displacements(double t) const;
+
+  /// Volume-averaged stress of this rank's own elements, Voigt order (see
+  /// linear_elastic_stress), written into `stress[component][global element]`; other
+  /// entries are left untouched.
+  void element_stresses(const Vector& u, std::vector<std::vector<double>>& stress) const;
+  /// Output names of the stress components (2D: xx yy xy zz; 3D: xx yy zz xy yz xz).
+  std::vector<std::string> stress_names() const;
+
+  GlobalIndex num_global_nodes() const { return num_nodes_; }
+  int num_owned_nodes() const { return num_owned_nodes_; }
+  /// Global node index of column-map node k.
+  GlobalIndex column_node(int k) const { return column_nodes_[k]; }
+
+ private:
+  void build_maps(const Partition& partition);
+  void build_blocks(const Partition& partition);
+  void build_graph();
+  void build_loads();
+  Kokkos::View<double**> column_coordinates_;  ///< [column node][d]
+
+  const Mesh& mesh_;
+  const Input& input_;
+  Teuchos::RCP<const Comm> comm_;
+  int dim_ = 2;
+  GlobalIndex num_nodes_ = 0;
+  int num_owned_nodes_ = 0;
+  std::vector<GlobalIndex> column_nodes_;  ///< column-map node -> global node
+  Teuchos::RCP<const Map> owned_map_, column_map_;
+  Teuchos::RCP<Import> importer_;  ///< owned -> column
+  Teuchos::RCP<Graph> graph_;
+  std::vector<LocalBlock> blocks_;
+  std::vector<LoadedFace> faces_;
+  std::vector<const DirichletInput*> dirichlet_;
+};
+
+}  // namespace grout

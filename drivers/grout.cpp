@@ -1,0 +1,138 @@
+// grout: solve the problem an input YAML describes (DESIGN.md §5) and write its results.
+//
+//   grout input.yaml [--output-dir DIR]      on one rank
+//   mpirun -np 2 grout input.yaml
+// --output-dir puts the Exodus and CSV files the input names into DIR instead of beside the
+// input (DIR is created if missing).
+//
+// Exit codes: 0 done, 2 bad input (message names the file and key or mesh entity),
+// 3 a step did not converge (every earlier step is already written), 1 anything else.
+
+#include <Tpetra_Core.hpp>
+#include <chrono>
+#include <filesystem>
+#include <cstdio>
+#include <iostream>
+
+#include "assembly/distribute_mesh.hpp"
+#include "assembly/solid_problem.hpp"
+#include "drivers/results_output.hpp"
+#include "io/errors.hpp"
+#include "io/exodus.hpp"
+#include "io/input.hpp"
+#include "nonlinear/linear_solver.hpp"
+#include "nonlinear/static_solver.hpp"
+
+namespace {
+
+using namespace grout;
+
+void print_usage() {
+  std::fprintf(stderr,
+               "usage: grout <input.yaml> [--output-dir DIR]\n"
+               "  Solves the contact/solid problem described by the YAML input and writes the\n"
+               "  Exodus results and the CSV summary it names (see docs/input.md).\n");
+}
+
+NewtonSettings newton_settings(const Input& input) {
+  NewtonSettings s;
+  if (input.solver->isSublist("Newton")) {
+    Teuchos::ParameterList p = input.solver->sublist("Newton");
+    s.max_iterations = p.get<int>("max_iterations", s.max_iterations);
+    s.relative_tolerance = p.get<double>("relative_tolerance", s.relative_tolerance);
+    s.absolute_tolerance = p.get<double>("absolute_tolerance", s.absolute_tolerance);
+  }
+  return s;
+}
+
+// Outputs go to `dir` under the file names the input gives them.
+void redirect_outputs(Input& input, const std::string& dir, bool root) {
+  namespace fs = std::filesystem;
+  if (root) fs::create_directories(dir);
+  input.output.file = (fs::path(dir) / fs::path(input.output.file).filename()).string();
+  if (!input.output.summary.empty())
+    input.output.summary = (fs::path(dir) / fs::path(input.output.summary).filename()).string();
+}
+
+int run(const std::string& input_path, const std::string& output_dir,
+        const Teuchos::RCP<const Comm>& comm) {
+  const bool root = comm->getRank() == 0;
+  const auto start = std::chrono::steady_clock::now();
+
+  // Parse: the input is validated into plain structs before anything is built.
+  Input input = read_input(input_path);
+  if (!output_dir.empty()) redirect_outputs(input, output_dir, root);
+  const Mesh mesh = read_and_broadcast_mesh(*comm, [&] { return read_exodus(input.mesh_file); });
+  check_input_against_mesh(input, mesh);
+  if (root) {
+    std::printf("grout: %s: %lld nodes, %lld elements, %d rank(s)\n", input.file.c_str(),
+                mesh.num_nodes(), mesh.num_elements(), comm->getSize());
+  }
+
+  // Build: partition, maps, graph; the linear solver from the `solver` sublist.
+  const SolidProblem problem(mesh, input, comm);
+  const Teuchos::ParameterList linear_params = input.solver->isSublist("Linear Solver")
+                                                   ? input.solver->sublist("Linear Solver")
+                                                   : Teuchos::ParameterList();
+  LinearSolver linear(linear_params, input.file + ": grout/solver/Linear Solver");
+  ResultsOutput output(mesh, input, problem);
+
+  // Solve, writing and flushing every converged step at once.
+  solve_static(problem, linear, newton_settings(input), input.time.end, input.time.steps,
+               [&](const StepResult& step) {
+                 output.write(step);
+                 if (root) {
+                   std::printf("step %d/%d  t = %g  newton %d  linear %d  |r| = %.3e\n", step.step,
+                               input.time.steps, step.time, step.newton_iterations,
+                               step.linear_iterations, step.residual);
+                   std::fflush(stdout);
+                 }
+               });
+  if (root) {
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("grout: wrote %s and %s (%.2f s)\n", input.output.file.c_str(),
+                input.output.summary.c_str(), seconds);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Tpetra::ScopeGuard tpetra(&argc, &argv);
+  const auto comm = Tpetra::getDefaultComm();
+  const bool root = comm->getRank() == 0;
+  std::string input_path, output_dir;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help") {
+      if (root) print_usage();
+      return 0;
+    } else if (arg == "--output-dir" && i + 1 < argc) {
+      output_dir = argv[++i];
+    } else if (input_path.empty() && arg.rfind("-", 0) != 0) {
+      input_path = arg;
+    } else {
+      if (root) std::fprintf(stderr, "grout: error: unexpected argument '%s'\n", arg.c_str());
+      if (root) print_usage();
+      return 2;
+    }
+  }
+  if (input_path.empty()) {
+    if (root) print_usage();
+    return 2;
+  }
+  try {
+    return run(input_path, output_dir, comm);
+  } catch (const grout::InputError& e) {
+    if (root) std::fprintf(stderr, "grout: error: %s\n", e.what());
+    return 2;
+  } catch (const grout::ConvergenceError& e) {
+    if (root) std::fprintf(stderr, "grout: error: %s (converged steps are in the output)\n", e.what());
+    return 3;
+  } catch (const std::exception& e) {
+    if (root) std::fprintf(stderr, "grout: error: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,34 @@
+#pragma once
+// Results of every converged step: gathered to rank 0, written to Exodus (DESIGN.md §5
+// field names) and to the CSV summary, both flushed at once.
+
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "assembly/solid_problem.hpp"
+#include "io/exodus.hpp"
+#include "nonlinear/static_solver.hpp"
+
+namespace grout {
+
+class ResultsOutput {
+ public:
+  ResultsOutput(const Mesh& mesh, const Input& input, const SolidProblem& problem);
+  void write(const StepResult& step);
+
+ private:
+  /// Nodal values [component][node] of an owned dof vector, on every rank.
+  std::vector<std::vector<double>> gather_nodal(const Vector& v) const;
+
+  const Mesh& mesh_;
+  const Input& input_;
+  const SolidProblem& problem_;
+  bool root_ = false;
+  std::vector<std::string> global_names_;
+  std::unique_ptr<ExodusWriter> exodus_;
+  std::ofstream summary_;
+};
+
+}  // namespace grout

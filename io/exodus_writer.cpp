@@ -1,0 +1,316 @@
+// Writing Exodus II meshes and results with the Exodus 6.02 C API.
+//
+// Files are classic netCDF (what every ParaView reads), created with EX_CLOBBER and the
+// 64-bit integer API (GlobalIndex arrays are passed straight through). Each time step is
+// followed by ex_update() so the data is on disk before the next step starts.
+
+#include <exodusII.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "io/errors.hpp"
+#include "io/exodus.hpp"
+
+namespace grout {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  throw InputError(path + ": " + what);
+}
+
+const char* exodus_element_type(Topology t) {
+  switch (t) {
+    case Topology::quad4:
+      return "QUAD4";
+    case Topology::tri3:
+      return "TRI3";
+    case Topology::hex8:
+      return "HEX8";
+    case Topology::tet4:
+      return "TETRA4";
+    case Topology::line2:
+      break;
+  }
+  return nullptr;
+}
+
+/// Use the mesh's ids when they are positive and distinct, else number 1, 2, ...
+template <class Entity>
+std::vector<int64_t> entity_ids(const std::vector<Entity>& entities) {
+  std::vector<int64_t> ids;
+  std::set<int64_t> seen;
+  bool valid = true;
+  for (const auto& e : entities) {
+    ids.push_back(e.id);
+    valid = valid && e.id > 0 && seen.insert(e.id).second;
+  }
+  if (!valid)
+    for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = int64_t(i + 1);
+  return ids;
+}
+
+/// An Exodus file being written; closed on destruction unless released.
+class WriteFile {
+ public:
+  WriteFile(const std::string& path, int max_name_length) : path_(path) {
+    int comp_ws = sizeof(double), io_ws = sizeof(double);
+    id_ = ex_create(path.c_str(), EX_CLOBBER | EX_ALL_INT64_API, &comp_ws, &io_ws);
+    if (id_ < 0) fail(path, "cannot create Exodus file");
+    // Names longer than the 32-character default would be truncated.
+    ex_set_max_name_length(id_, std::max(max_name_length, int(MAX_NAME_LENGTH)));
+  }
+  ~WriteFile() {
+    if (id_ >= 0) ex_close(id_);
+  }
+  WriteFile(WriteFile&& other) noexcept
+      : path_(std::move(other.path_)), id_(std::exchange(other.id_, -1)) {}
+  WriteFile(const WriteFile&) = delete;
+  WriteFile& operator=(const WriteFile&) = delete;
+
+  int id() const { return id_; }
+  int release() { return std::exchange(id_, -1); }
+  void check(int status, const std::string& what) const {
+    if (status < 0)
+      fail(path_,
+           "Exodus error while writing " + what + " (status " + std::to_string(status) + ")");
+  }
+  void put_names(ex_entity_type type, const std::vector<std::string>& names,
+                 const std::string& what) const {
+    if (names.empty()) return;
+    std::vector<char*> pointers;
+    for (const auto& n : names) pointers.push_back(const_cast<char*>(n.c_str()));
+    check(ex_put_names(id_, type, pointers.data()), what);
+  }
+  void put_variables(ex_entity_type type, const std::vector<std::string>& names,
+                     const std::string& what) const {
+    if (names.empty()) return;
+    check(ex_put_variable_param(id_, type, int(names.size())), what);
+    std::vector<char*> pointers;
+    for (const auto& n : names) pointers.push_back(const_cast<char*>(n.c_str()));
+    check(ex_put_variable_names(id_, type, int(names.size()), pointers.data()), what);
+  }
+
+ private:
+  std::string path_;
+  int id_ = -1;
+};
+
+template <class Entity>
+std::vector<std::string> entity_names(const std::vector<Entity>& entities) {
+  std::vector<std::string> names;
+  for (const auto& e : entities) names.push_back(e.name);
+  return names;
+}
+
+void write_coordinates(const WriteFile& file, const Mesh& mesh) {
+  const auto n = std::size_t(mesh.num_nodes());
+  const int d = mesh.dimension;
+  std::vector<double> xyz[3];
+  for (int k = 0; k < d; ++k) xyz[k].resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int k = 0; k < d; ++k) xyz[k][i] = mesh.coordinates[d * i + k];
+  if (n > 0)
+    file.check(
+        ex_put_coord(file.id(), xyz[0].data(), xyz[1].data(), d == 3 ? xyz[2].data() : nullptr),
+        "coordinates");
+  const char* names[3] = {"x", "y", "z"};
+  file.check(ex_put_coord_names(file.id(), const_cast<char**>(names)), "coordinate names");
+}
+
+void write_blocks(const WriteFile& file, const Mesh& mesh, const std::vector<int64_t>& ids) {
+  for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
+    const ElementBlock& block = mesh.blocks[b];
+    const char* type = exodus_element_type(block.topology);
+    if (!type) fail(mesh.file, "element block '" + block.name + "' has no Exodus element type");
+    const GlobalIndex n = block.num_elements();
+    file.check(
+        ex_put_block(file.id(), EX_ELEM_BLOCK, ids[b], type, n, block.nodes_per_element, 0, 0, 0),
+        "element block '" + block.name + "'");
+    if (n == 0) continue;
+    std::vector<int64_t> connectivity(block.connectivity.begin(), block.connectivity.end());
+    for (auto& node : connectivity) ++node;  // Exodus is 1-based
+    file.check(ex_put_conn(file.id(), EX_ELEM_BLOCK, ids[b], connectivity.data(), nullptr, nullptr),
+               "connectivity of element block '" + block.name + "'");
+  }
+  file.put_names(EX_ELEM_BLOCK, entity_names(mesh.blocks), "element block names");
+}
+
+void write_side_sets(const WriteFile& file, const Mesh& mesh, const std::vector<int64_t>& ids) {
+  for (std::size_t s = 0; s < mesh.side_sets.size(); ++s) {
+    const SideSet& set = mesh.side_sets[s];
+    const std::string what = "side set '" + set.name + "'";
+    file.check(ex_put_set_param(file.id(), EX_SIDE_SET, ids[s], int64_t(set.elements.size()), 0),
+               what);
+    if (set.elements.empty()) continue;
+    std::vector<int64_t> elements(set.elements.begin(), set.elements.end());
+    for (auto& e : elements) ++e;
+    std::vector<int64_t> sides(set.sides.begin(), set.sides.end());
+    file.check(ex_put_set(file.id(), EX_SIDE_SET, ids[s], elements.data(), sides.data()), what);
+  }
+  file.put_names(EX_SIDE_SET, entity_names(mesh.side_sets), "side set names");
+}
+
+void write_node_sets(const WriteFile& file, const Mesh& mesh, const std::vector<int64_t>& ids) {
+  for (std::size_t s = 0; s < mesh.node_sets.size(); ++s) {
+    const NodeSet& set = mesh.node_sets[s];
+    const std::string what = "node set '" + set.name + "'";
+    file.check(ex_put_set_param(file.id(), EX_NODE_SET, ids[s], int64_t(set.nodes.size()), 0),
+               what);
+    if (set.nodes.empty()) continue;
+    std::vector<int64_t> nodes(set.nodes.begin(), set.nodes.end());
+    for (auto& n : nodes) ++n;
+    file.check(ex_put_set(file.id(), EX_NODE_SET, ids[s], nodes.data(), nullptr), what);
+  }
+  file.put_names(EX_NODE_SET, entity_names(mesh.node_sets), "node set names");
+}
+
+int longest_name(const Mesh& mesh, const std::vector<std::vector<std::string>>& variables) {
+  std::size_t n = 0;
+  for (const auto& b : mesh.blocks) n = std::max(n, b.name.size());
+  for (const auto& s : mesh.side_sets) n = std::max(n, s.name.size());
+  for (const auto& s : mesh.node_sets) n = std::max(n, s.name.size());
+  for (const auto& list : variables)
+    for (const auto& v : list) n = std::max(n, v.size());
+  return int(n);
+}
+
+/// Create `path` and write the mesh (and the variable names); the file stays open.
+WriteFile create_mesh_file(const std::string& path, const Mesh& mesh,
+                           const std::vector<std::string>& nodal_vars,
+                           const std::vector<std::string>& element_vars,
+                           const std::vector<std::string>& global_vars) {
+  if (mesh.dimension != 2 && mesh.dimension != 3)
+    fail(path, "cannot write a mesh of dimension " + std::to_string(mesh.dimension));
+  WriteFile file(path, longest_name(mesh, {nodal_vars, element_vars, global_vars}));
+  const auto block_ids = entity_ids(mesh.blocks);
+  file.check(ex_put_init(file.id(), "Grout", mesh.dimension, mesh.num_nodes(), mesh.num_elements(),
+                         int64_t(mesh.blocks.size()), int64_t(mesh.node_sets.size()),
+                         int64_t(mesh.side_sets.size())),
+             "the header");
+  write_coordinates(file, mesh);
+  write_blocks(file, mesh, block_ids);
+  write_side_sets(file, mesh, entity_ids(mesh.side_sets));
+  write_node_sets(file, mesh, entity_ids(mesh.node_sets));
+
+  file.put_variables(EX_GLOBAL, global_vars, "global variable names");
+  file.put_variables(EX_NODAL, nodal_vars, "nodal variable names");
+  file.put_variables(EX_ELEM_BLOCK, element_vars, "element variable names");
+  if (!element_vars.empty() && !mesh.blocks.empty()) {
+    // Every element variable exists on every block.
+    std::vector<int> truth(mesh.blocks.size() * element_vars.size(), 1);
+    file.check(ex_put_truth_table(file.id(), EX_ELEM_BLOCK, int(mesh.blocks.size()),
+                                  int(element_vars.size()), truth.data()),
+               "the element variable truth table");
+  }
+  file.check(ex_update(file.id()), "the mesh");
+  return file;
+}
+
+}  // namespace
+
+void write_exodus_mesh(const std::string& path, const Mesh& mesh) {
+  create_mesh_file(path, mesh, {}, {}, {});
+}
+
+ExodusWriter::ExodusWriter(const std::string& path, const Mesh& mesh,
+                           std::vector<std::string> nodal_vars,
+                           std::vector<std::string> element_vars,
+                           std::vector<std::string> global_vars)
+    : path_(path),
+      num_nodes_(mesh.num_nodes()),
+      num_elements_(mesh.num_elements()),
+      num_nodal_(nodal_vars.size()),
+      num_element_(element_vars.size()),
+      num_global_(global_vars.size()) {
+  WriteFile file = create_mesh_file(path, mesh, nodal_vars, element_vars, global_vars);
+  const auto ids = entity_ids(mesh.blocks);
+  for (std::size_t b = 0; b < mesh.blocks.size(); ++b)
+    blocks_.push_back({ids[b], mesh.blocks[b].first_element, mesh.blocks[b].num_elements()});
+  exoid_ = file.release();
+}
+
+ExodusWriter::~ExodusWriter() {
+  close();
+}
+
+ExodusWriter::ExodusWriter(ExodusWriter&& other) noexcept
+    : path_(std::move(other.path_)),
+      exoid_(std::exchange(other.exoid_, -1)),
+      num_nodes_(other.num_nodes_),
+      num_elements_(other.num_elements_),
+      blocks_(std::move(other.blocks_)),
+      num_nodal_(other.num_nodal_),
+      num_element_(other.num_element_),
+      num_global_(other.num_global_),
+      num_steps_(other.num_steps_) {}
+
+ExodusWriter& ExodusWriter::operator=(ExodusWriter&& other) noexcept {
+  if (this != &other) {
+    close();
+    path_ = std::move(other.path_);
+    exoid_ = std::exchange(other.exoid_, -1);
+    num_nodes_ = other.num_nodes_;
+    num_elements_ = other.num_elements_;
+    blocks_ = std::move(other.blocks_);
+    num_nodal_ = other.num_nodal_;
+    num_element_ = other.num_element_;
+    num_global_ = other.num_global_;
+    num_steps_ = other.num_steps_;
+  }
+  return *this;
+}
+
+void ExodusWriter::close() noexcept {
+  if (exoid_ >= 0) ex_close(exoid_);
+  exoid_ = -1;
+}
+
+void ExodusWriter::write_step(double time, const std::vector<std::vector<double>>& nodal,
+                              const std::vector<std::vector<double>>& element,
+                              const std::vector<double>& globals) {
+  if (exoid_ < 0) fail(path_, "write_step on a closed Exodus writer");
+  // Sizes are the caller's contract, not user input: a mismatch is a programming error.
+  auto require = [&](bool ok, const std::string& what) {
+    if (!ok) throw std::invalid_argument(path_ + ": write_step: " + what);
+  };
+  require(nodal.size() == num_nodal_,
+          "expected " + std::to_string(num_nodal_) + " nodal variables");
+  require(element.size() == num_element_,
+          "expected " + std::to_string(num_element_) + " element variables");
+  require(globals.size() == num_global_,
+          "expected " + std::to_string(num_global_) + " global variables");
+  for (const auto& v : nodal) require(GlobalIndex(v.size()) == num_nodes_, "nodal variable size");
+  for (const auto& v : element)
+    require(GlobalIndex(v.size()) == num_elements_, "element variable size");
+
+  const int step = num_steps_ + 1;
+  const std::string at = " at step " + std::to_string(step);
+  auto check = [&](int status, const std::string& what) {
+    if (status < 0) fail(path_, "Exodus error while writing " + what + at);
+  };
+  check(ex_put_time(exoid_, step, &time), "the time value");
+  for (std::size_t v = 0; v < nodal.size(); ++v)
+    check(ex_put_var(exoid_, step, EX_NODAL, int(v + 1), 1, num_nodes_, nodal[v].data()),
+          "nodal variable " + std::to_string(v + 1));
+  for (std::size_t v = 0; v < element.size(); ++v)
+    for (const auto& b : blocks_) {
+      if (b.num_elements == 0) continue;
+      check(ex_put_var(exoid_, step, EX_ELEM_BLOCK, int(v + 1), b.id, b.num_elements,
+                       element[v].data() + b.first_element),
+            "element variable " + std::to_string(v + 1));
+    }
+  if (!globals.empty())
+    check(ex_put_var(exoid_, step, EX_GLOBAL, 1, 1, int64_t(globals.size()), globals.data()),
+          "global variables");
+  check(ex_update(exoid_), "(flushing)");
+  num_steps_ = step;
+}
+
+}  // namespace grout

@@ -1,0 +1,25 @@
+#include "io/mesh.hpp"
+
+namespace grout {
+
+namespace {
+template <class Entity>
+const Entity* find_by_name(const std::vector<Entity>& entities, std::string_view name) {
+  for (const auto& e : entities) {
+    if (e.name == name || "id_" + std::to_string(e.id) == name) return &e;
+  }
+  return nullptr;
+}
+}  // namespace
+
+const ElementBlock* Mesh::find_block(std::string_view name) const {
+  return find_by_name(blocks, name);
+}
+const SideSet* Mesh::find_side_set(std::string_view name) const {
+  return find_by_name(side_sets, name);
+}
+const NodeSet* Mesh::find_node_set(std::string_view name) const {
+  return find_by_name(node_sets, name);
+}
+
+}  // namespace grout

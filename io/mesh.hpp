@@ -1,0 +1,59 @@
+#pragma once
+// The mesh as plain data, as read from an Exodus II file (replicated on every rank).
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "kernels/topology.hpp"
+
+namespace grout {
+
+using GlobalIndex = long long;
+
+struct ElementBlock {
+  std::string name;  ///< Exodus name, or "id_<n>" when the file has none
+  int id = 0;        ///< Exodus block id
+  Topology topology = Topology::quad4;
+  int nodes_per_element = 0;
+  GlobalIndex first_element = 0;          ///< global 0-based index of the block's first element
+  std::vector<GlobalIndex> connectivity;  ///< 0-based node indices, element-major
+  GlobalIndex num_elements() const {
+    return nodes_per_element ? GlobalIndex(connectivity.size()) / nodes_per_element : 0;
+  }
+};
+
+struct SideSet {
+  std::string name;
+  int id = 0;
+  std::vector<GlobalIndex> elements;  ///< 0-based global element indices
+  std::vector<int> sides;             ///< Exodus side numbers (1-based), same length
+};
+
+struct NodeSet {
+  std::string name;
+  int id = 0;
+  std::vector<GlobalIndex> nodes;  ///< 0-based node indices
+};
+
+struct Mesh {
+  std::string file;  ///< where it was read from (for error messages)
+  int dimension = 2;
+  std::vector<double> coordinates;  ///< node-major: x0 y0 [z0] x1 y1 ...
+  std::vector<ElementBlock> blocks;
+  std::vector<SideSet> side_sets;
+  std::vector<NodeSet> node_sets;
+
+  GlobalIndex num_nodes() const { return GlobalIndex(coordinates.size()) / dimension; }
+  GlobalIndex num_elements() const {
+    GlobalIndex n = 0;
+    for (const auto& b : blocks) n += b.num_elements();
+    return n;
+  }
+  /// Look-up by Exodus name or by "id_<n>"; nullptr when absent.
+  const ElementBlock* find_block(std::string_view name) const;
+  const SideSet* find_side_set(std::string_view name) const;
+  const NodeSet* find_node_set(std::string_view name) const;
+};
+
+}  // namespace grout

@@ -1,0 +1,117 @@
+#include "nonlinear/linear_solver.hpp"
+
+#include <Amesos2.hpp>
+#include <BelosSolverFactory.hpp>
+#include <BelosTpetraAdapter.hpp>
+#include <MueLu_CreateTpetraPreconditioner.hpp>
+#include <stdexcept>
+
+#include "io/errors.hpp"
+
+namespace grout {
+
+struct LinearSolver::Impl {
+  std::string type;
+  Teuchos::ParameterList belos;
+  Teuchos::ParameterList muelu;
+  std::string belos_type = "CG";
+};
+
+LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::string& where)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->type = params.isParameter("type") ? params.get<std::string>("type") : "amesos2";
+  if (impl_->type != "amesos2" && impl_->type != "belos") {
+    throw InputError(where + "/type: unknown linear solver '" + impl_->type +
+                     "' (expected: amesos2, belos)");
+  }
+  if (params.isSublist("Belos")) impl_->belos = params.sublist("Belos");
+  if (params.isSublist("MueLu")) impl_->muelu = params.sublist("MueLu");
+  impl_->belos_type = impl_->belos.get<std::string>("Solver Type", "CG");
+  impl_->belos.remove("Solver Type", false);
+  if (!impl_->belos.isParameter("Convergence Tolerance"))
+    impl_->belos.set("Convergence Tolerance", 1e-12);
+  if (!impl_->belos.isParameter("Maximum Iterations")) impl_->belos.set("Maximum Iterations", 2000);
+}
+
+LinearSolver::~LinearSolver() = default;
+
+namespace {
+
+// Direct solve on rank 0: gather K, b to a map owned by rank 0, copy them onto a 1-rank
+// communicator (KLU2 is only trusted there), solve, scatter x back.
+int solve_direct(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x) {
+  const auto comm = K->getRowMap()->getComm();
+  const auto& row_map = *K->getRowMap();
+  const GO n = GO(row_map.getGlobalNumElements());
+  const bool root = comm->getRank() == 0;
+  const auto gathered_map = Teuchos::rcp(new Map(n, root ? n : 0, 0, comm));
+  const Export to_root(K->getRowMap(), gathered_map);
+  Matrix K_root(gathered_map, 0);
+  K_root.doExport(*K, to_root, Tpetra::INSERT);
+  K_root.fillComplete(gathered_map, gathered_map);
+  Vector b_root(gathered_map), x_root(gathered_map);
+  b_root.doExport(b, to_root, Tpetra::INSERT);
+
+  const auto self = comm->split(root ? 0 : 1, comm->getRank());
+  if (root) {
+    const auto map = Teuchos::rcp(new Map(n, n, 0, self));
+    const auto& col_map = *K_root.getColMap();
+    const auto local = K_root.getLocalMatrixHost();
+    Kokkos::View<std::size_t*> rows("grout::direct_rows", n + 1);
+    Kokkos::View<LO*> cols("grout::direct_cols", local.nnz());
+    Kokkos::View<double*> vals("grout::direct_vals", local.nnz());
+    for (GO i = 0; i <= n; ++i) rows(i) = local.graph.row_map(i);
+    for (std::size_t p = 0; p < local.nnz(); ++p) {
+      cols(p) = LO(col_map.getGlobalElement(local.graph.entries(p)));
+      vals(p) = local.values(p);
+    }
+    auto K_self = Teuchos::rcp(new Matrix(map, map, rows, cols, vals));
+    K_self->fillComplete(map, map);
+    auto b_self = Teuchos::rcp(new MultiVector(map, 1));
+    auto x_self = Teuchos::rcp(new MultiVector(map, 1));
+    {
+      auto bs = b_self->getLocalViewHost(Tpetra::Access::OverwriteAll);
+      auto br = b_root.getLocalViewHost(Tpetra::Access::ReadOnly);
+      for (GO i = 0; i < n; ++i) bs(i, 0) = br(i, 0);
+    }
+    auto solver = Amesos2::create<Matrix, MultiVector>("KLU2", K_self, x_self, b_self);
+    solver->symbolicFactorization().numericFactorization().solve();
+    auto xs = x_self->getLocalViewHost(Tpetra::Access::ReadOnly);
+    auto xr = x_root.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (GO i = 0; i < n; ++i) xr(i, 0) = xs(i, 0);
+  }
+  x.doImport(x_root, to_root, Tpetra::INSERT);
+  return 1;
+}
+
+}  // namespace
+
+int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x) {
+  if (impl_->type == "amesos2") return solve_direct(K, b, x);
+
+  // Belos + MueLu.
+  Teuchos::ParameterList muelu = impl_->muelu;
+  if (K->getRowMap()->getComm()->getSize() > 1 && !muelu.isParameter("coarse: type"))
+    muelu.set("coarse: type", "RELAXATION");  // never KLU2 on a multi-rank communicator
+  Teuchos::RCP<Operator> K_op = Teuchos::rcp_const_cast<Matrix>(K);
+  auto preconditioner = MueLu::CreateTpetraPreconditioner(K_op, muelu);
+  auto x_rcp = Teuchos::rcpFromRef(x);
+  auto b_rcp = Teuchos::rcpFromRef(b);
+  x.putScalar(0.0);
+  auto problem = Teuchos::rcp(new Belos::LinearProblem<double, MultiVector, Operator>(
+      K_op, Teuchos::rcp_implicit_cast<MultiVector>(x_rcp),
+      Teuchos::rcp_implicit_cast<const MultiVector>(b_rcp)));
+  problem->setRightPrec(preconditioner);
+  problem->setProblem();
+  Belos::SolverFactory<double, MultiVector, Operator> factory;
+  auto params = Teuchos::rcp(new Teuchos::ParameterList(impl_->belos));
+  auto solver = factory.create(impl_->belos_type, params);
+  solver->setProblem(problem);
+  if (solver->solve() != Belos::Converged) {
+    throw std::runtime_error("linear solver " + impl_->belos_type + " did not converge in " +
+                             std::to_string(solver->getNumIters()) + " iterations");
+  }
+  return solver->getNumIters();
+}
+
+}  // namespace grout

@@ -1,0 +1,15 @@
+#include <gtest/gtest.h>
+
+#include <Teuchos_DefaultComm.hpp>
+#include <Tpetra_Core.hpp>
+
+// Initialises MPI and Kokkos; only rank 0 prints gtest's report.
+int main(int argc, char** argv) {
+  Tpetra::ScopeGuard tpetra(&argc, &argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  if (Tpetra::getDefaultComm()->getRank() != 0) {
+    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
+    delete listeners.Release(listeners.default_result_printer());
+  }
+  return RUN_ALL_TESTS();
+}
