@@ -1,0 +1,29 @@
+#pragma once
+// A nonlinear system F(x) = 0 as the Newton solver (NOX) sees it.
+
+#include <Teuchos_RCP.hpp>
+
+#include "assembly/tpetra_types.hpp"
+
+namespace grout {
+
+/// F(x) = 0 on a fixed map. The Jacobian's graph may change between calls (contact pairs
+/// and the active set change from one Newton iterate to the next), so jacobian() may hand
+/// back a new matrix. Prescribed dofs are the problem's business: it keeps them at their
+/// values (F = 0 there, J rows/columns eliminated with a positive diagonal).
+class NonlinearProblem {
+ public:
+  virtual ~NonlinearProblem() = default;
+  virtual Teuchos::RCP<const Map> map() const = 0;
+  /// F(x). Returns false when F cannot be evaluated at x (inverted element, NaN), so that
+  /// the line search or the load stepping can back off.
+  virtual bool residual(const Vector& x, Vector& F) = 0;
+  /// J(x) = dF/dx at the x of the last residual() call.
+  virtual bool jacobian(const Vector& x, Teuchos::RCP<Matrix>& J) = 0;
+  /// Size of the contact active set at the last residual() call, and how many nodes
+  /// changed status (open/stick/slip) since the call before. 0 without contact.
+  virtual int active_set_size() const { return 0; }
+  virtual int active_set_changes() const { return 0; }
+};
+
+}  // namespace grout
