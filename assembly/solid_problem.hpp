@@ -50,7 +50,7 @@ class SolidProblem {
   const Teuchos::RCP<const Map>& owned_map() const { return owned_map_; }
   /// Dofs of every node of the local elements, owned first (column map).
   const Teuchos::RCP<const Map>& column_map() const { return column_map_; }
-  const Teuchos::RCP<const Graph>& graph() const { return graph_; }
+  Teuchos::RCP<const Graph> graph() const { return graph_; }
   Teuchos::RCP<Matrix> create_matrix() const;
   Teuchos::RCP<Vector> create_vector() const;
   /// u on the column map (owned values plus ghosts).

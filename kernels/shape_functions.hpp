@@ -159,7 +159,8 @@ template <class Scalar>
 KOKKOS_INLINE_FUNCTION int side_area_vector(Topology side, int dim, const Scalar* X,
                                             const double* xi, double* N, Scalar* a) {
   if (dim < 2 || dim > 3 || topology_dimension(side) != dim - 1) return 0;
-  double dN[max_side_nodes * 2];
+  // Sized for any topology: the compiler cannot see that `side` is never a solid.
+  double dN[max_element_nodes * 3];
   const int n = shape_functions(side, xi, N, dN);
   const int tdim = dim - 1;
   Scalar T[2][3];

@@ -40,7 +40,7 @@ KOKKOS_INLINE_FUNCTION ElementStatus surface_load(Topology side_topology, int di
   const int num_points = quadrature_num_points(side_topology, degree);
   for (int q = 0; q < num_points; ++q) {
     const QuadraturePoint point = quadrature_point(side_topology, degree, q);
-    double N[max_side_nodes], a[3] = {0.0, 0.0, 0.0};
+    double N[max_element_nodes] = {}, a[3] = {0.0, 0.0, 0.0};
     side_area_vector(side_topology, dim, X, point.xi, N, a);
     const double area = Kokkos::Experimental::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
 

@@ -1,0 +1,353 @@
+#pragma once
+// Coarse contact search: candidate (slave, master) face pairs whose enlarged bounding boxes
+// overlap (DESIGN.md §3 "Coarse search"), in 2D and 3D.
+//
+//   box(e) = [min_k x_k − δ_e, max_k x_k + δ_e],  δ_e = factor · max_d (max_k x_kd − min_k x_kd)
+//
+// Master boxes are binned in a uniform grid of cell size h = mean enlarged master box extent,
+// stored as a hashed CSR (cell → bucket: 4^dim-cell blocks hashed, cells of a block
+// consecutive, mod 2^p ≥ 2 n_master):
+// count → exclusive prefix sum → fill, with Kokkos::atomic_fetch_add so any execution space
+// works. Each slave box visits only the cells it overlaps (O(1) per query for meshes of
+// comparable size, O(n) overall); hash collisions only add box tests. Output per slave face:
+// at most max_pair_candidates master ids, sorted ascending, −1 after the last (a fixed-capacity
+// CSR: row s starts at s · max_pair_candidates), and their count. A brute-force O(n_s n_m)
+// reference with the same contract is provided for tests.
+
+#include <Kokkos_Core.hpp>
+#include <cmath>
+#include <cstdint>
+
+#include "kernels/mortar_types.hpp"
+#include "kernels/surface_normals.hpp"
+
+namespace grout {
+
+/// \brief Enlarged bounding box of one face (see file comment). Unused dimensions stay 0.
+KOKKOS_INLINE_FUNCTION void face_bounding_box(int dim, int n_nodes,
+                                              const double x[max_face_nodes][3], double factor,
+                                              double lo[3], double hi[3]) {
+  double extent = 0.0;
+  for (int d = 0; d < 3; ++d) {
+    lo[d] = hi[d] = x[0][d];
+    for (int k = 1; k < n_nodes; ++k) {
+      lo[d] = x[k][d] < lo[d] ? x[k][d] : lo[d];
+      hi[d] = x[k][d] > hi[d] ? x[k][d] : hi[d];
+    }
+    if (d < dim) extent = hi[d] - lo[d] > extent ? hi[d] - lo[d] : extent;
+  }
+  for (int d = 0; d < dim; ++d) {
+    lo[d] -= factor * extent;
+    hi[d] += factor * extent;
+  }
+}
+
+/// \brief Closed boxes a and b (rows: lo[0..2], hi[0..2]) intersect in the first dim axes.
+template <class BoxA, class BoxB>
+KOKKOS_INLINE_FUNCTION bool boxes_overlap(int dim, const BoxA& a, int i, const BoxB& b, int j) {
+  for (int d = 0; d < dim; ++d)
+    if (a(i, d) > b(j, 3 + d) || b(j, d) > a(i, 3 + d)) return false;
+  return true;
+}
+
+/// \brief Inserts id into the ascending list row[0..count) of capacity max_pair_candidates,
+/// ignoring duplicates; when full the largest id is dropped (so the kept set is the smallest
+/// ids, independent of the visiting order). \return false if an id was dropped.
+KOKKOS_INLINE_FUNCTION bool insert_candidate(int row[max_pair_candidates], int& count, int id) {
+  int pos = 0;
+  while (pos < count && row[pos] < id) ++pos;
+  if (pos < count && row[pos] == id) return true;
+  if (pos == max_pair_candidates) return false;
+  const bool dropped = count == max_pair_candidates;
+  if (!dropped) ++count;
+  for (int k = count - 1; k > pos; --k) row[k] = row[k - 1];
+  row[pos] = id;
+  return !dropped;
+}
+
+/// Enlarged boxes (n_faces, 6) of a face table, launch "grout::coarse_search_boxes".
+template <class ExecSpace>
+Kokkos::View<double**, typename ExecSpace::memory_space> compute_face_boxes(
+    const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> faces,
+    Kokkos::View<const double**, typename ExecSpace::memory_space> coords, double factor) {
+  Kokkos::View<double**, typename ExecSpace::memory_space> boxes("grout::face_boxes",
+                                                                 faces.extent(0), 6);
+  const int dim = static_cast<int>(coords.extent(1));
+  Kokkos::parallel_for(
+      "grout::coarse_search_boxes", Kokkos::RangePolicy<ExecSpace>(space, 0, faces.extent(0)),
+      KOKKOS_LAMBDA(const int f) {
+        double x[max_face_nodes][3], lo[3], hi[3];
+        const int n = gather_face_coordinates(faces, f, coords, x);
+        face_bounding_box(dim, n, x, factor, lo, hi);
+        for (int d = 0; d < 3; ++d) {
+          boxes(f, d) = lo[d];
+          boxes(f, 3 + d) = hi[d];
+        }
+      });
+  return boxes;
+}
+
+/// Uniform grid over the master boxes: origin, cell size, cells per axis, bucket mask.
+struct SearchGrid {
+  double origin[3] = {0.0, 0.0, 0.0};
+  double h = 1.0;
+  std::int64_t n_cells[3] = {1, 1, 1};
+  std::uint64_t mask = 0;  ///< n_buckets − 1 (n_buckets a power of two)
+
+  /// Cell range [c_lo, c_hi] (clamped to the grid) of a box; false if it misses the grid.
+  template <class Boxes>
+  KOKKOS_INLINE_FUNCTION bool cell_range(const Boxes& boxes, int f, int dim, std::int64_t c_lo[3],
+                                         std::int64_t c_hi[3]) const {
+    for (int d = 0; d < 3; ++d) c_lo[d] = c_hi[d] = 0;
+    for (int d = 0; d < dim; ++d) {
+      const double a = Kokkos::Experimental::floor((boxes(f, d) - origin[d]) / h);
+      const double b = Kokkos::Experimental::floor((boxes(f, 3 + d) - origin[d]) / h);
+      if (b < 0.0 || a > static_cast<double>(n_cells[d] - 1)) return false;
+      c_lo[d] = a < 0.0 ? 0 : static_cast<std::int64_t>(a);
+      c_hi[d] =
+          b > static_cast<double>(n_cells[d] - 1) ? n_cells[d] - 1 : static_cast<std::int64_t>(b);
+    }
+    return true;
+  }
+  /// Bucket of cell (i, j, k): cells are grouped in blocks of 4×4(×4); a block's cells get
+  /// consecutive buckets (locality for neighbouring queries), blocks are spread by the
+  /// splitmix64 finaliser of the linear block index.
+  KOKKOS_INLINE_FUNCTION std::uint64_t bucket(std::int64_t i, std::int64_t j,
+                                              std::int64_t k) const {
+    const std::int64_t nb0 = (n_cells[0] >> 2) + 1, nb1 = (n_cells[1] >> 2) + 1;
+    std::uint64_t z = static_cast<std::uint64_t>((i >> 2) + nb0 * ((j >> 2) + nb1 * (k >> 2)));
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    z ^= z >> 31;
+    const std::uint64_t local = static_cast<std::uint64_t>((i & 3) + 4 * (j & 3) + 16 * (k & 3));
+    return ((z << block_bits) + local) & mask;
+  }
+  int block_bits = 6;  ///< log2(cells per block): 4 in 2D, 6 in 3D
+};
+
+/// Reduction of the master boxes: bounds and total extent (for the grid).
+struct BoxStats {
+  double lo[3], hi[3], extent;
+};
+
+template <class ExecSpace>
+struct BoxStatsReduce {
+  using value_type = BoxStats;
+  Kokkos::View<const double**, typename ExecSpace::memory_space> boxes;
+  int dim;
+  KOKKOS_INLINE_FUNCTION void init(value_type& v) const {
+    for (int d = 0; d < 3; ++d) {
+      v.lo[d] = Kokkos::Experimental::infinity<double>::value;
+      v.hi[d] = -Kokkos::Experimental::infinity<double>::value;
+    }
+    v.extent = 0.0;
+  }
+  KOKKOS_INLINE_FUNCTION void join(volatile value_type& a, const volatile value_type& b) const {
+    for (int d = 0; d < 3; ++d) {
+      a.lo[d] = b.lo[d] < a.lo[d] ? b.lo[d] : a.lo[d];
+      a.hi[d] = b.hi[d] > a.hi[d] ? b.hi[d] : a.hi[d];
+    }
+    a.extent += b.extent;
+  }
+  KOKKOS_INLINE_FUNCTION void operator()(const int f, value_type& v) const {
+    double e = 0.0;
+    for (int d = 0; d < dim; ++d) {
+      v.lo[d] = boxes(f, d) < v.lo[d] ? boxes(f, d) : v.lo[d];
+      v.hi[d] = boxes(f, 3 + d) > v.hi[d] ? boxes(f, 3 + d) : v.hi[d];
+      e = boxes(f, 3 + d) - boxes(f, d) > e ? boxes(f, 3 + d) - boxes(f, d) : e;
+    }
+    v.extent += e;
+  }
+};
+
+/// \brief Builds the hashed grid of the master boxes: counts per bucket (atomic), exclusive
+/// prefix sum into offsets (n_buckets + 1), fill of entries (master ids). Launches
+/// "grout::coarse_search_bounds", "..._count", "..._offsets", "..._fill".
+template <class ExecSpace>
+SearchGrid bin_master_boxes(const ExecSpace& space,
+                            Kokkos::View<const double**, typename ExecSpace::memory_space> boxes,
+                            int dim, Kokkos::View<int*, typename ExecSpace::memory_space>& offsets,
+                            Kokkos::View<int*, typename ExecSpace::memory_space>& entries) {
+  using Mem = typename ExecSpace::memory_space;
+  const int n_m = static_cast<int>(boxes.extent(0));
+  BoxStats stats;
+  Kokkos::parallel_reduce("grout::coarse_search_bounds",
+                          Kokkos::RangePolicy<ExecSpace>(space, 0, n_m),
+                          BoxStatsReduce<ExecSpace>{boxes, dim}, stats);
+  SearchGrid grid;
+  std::uint64_t n_buckets = 1;
+  while (n_buckets < 2 * static_cast<std::uint64_t>(n_m)) n_buckets *= 2;
+  grid.mask = n_buckets - 1;
+  grid.block_bits = dim == 2 ? 4 : 6;
+  if (n_m > 0) {
+    double span = 0.0;
+    for (int d = 0; d < dim; ++d)
+      span = stats.hi[d] - stats.lo[d] > span ? stats.hi[d] - stats.lo[d] : span;
+    grid.h = stats.extent / n_m;
+    if (!(grid.h > 1e-12 * span)) grid.h = span > 0.0 ? span : 1.0;  // point-like masters
+    for (int d = 0; d < dim; ++d) {
+      grid.origin[d] = stats.lo[d];
+      grid.n_cells[d] =
+          static_cast<std::int64_t>(std::floor((stats.hi[d] - stats.lo[d]) / grid.h)) + 1;
+    }
+  }
+  offsets = Kokkos::View<int*, Mem>("grout::search_offsets", n_buckets + 1);
+  Kokkos::View<int*, Mem> cursor("grout::search_cursor", n_buckets);
+  Kokkos::parallel_for(
+      "grout::coarse_search_count", Kokkos::RangePolicy<ExecSpace>(space, 0, n_m),
+      KOKKOS_LAMBDA(const int m) {
+        std::int64_t a[3], b[3];
+        if (!grid.cell_range(boxes, m, dim, a, b)) return;
+        for (std::int64_t k = a[2]; k <= b[2]; ++k)
+          for (std::int64_t j = a[1]; j <= b[1]; ++j)
+            for (std::int64_t i = a[0]; i <= b[0]; ++i)
+              Kokkos::atomic_fetch_add(&cursor(grid.bucket(i, j, k)), 1);
+      });
+  int total = 0;
+  Kokkos::parallel_scan(
+      "grout::coarse_search_offsets", Kokkos::RangePolicy<ExecSpace>(space, 0, n_buckets),
+      KOKKOS_LAMBDA(const int b, int& partial, const bool final) {
+        if (final) offsets(b) = partial;
+        partial += cursor(b);
+        if (final && b + 1 == static_cast<int>(n_buckets)) offsets(b + 1) = partial;
+      },
+      total);
+  entries = Kokkos::View<int*, Mem>("grout::search_entries", total);
+  Kokkos::deep_copy(space, cursor, 0);
+  Kokkos::parallel_for(
+      "grout::coarse_search_fill", Kokkos::RangePolicy<ExecSpace>(space, 0, n_m),
+      KOKKOS_LAMBDA(const int m) {
+        std::int64_t a[3], b[3];
+        if (!grid.cell_range(boxes, m, dim, a, b)) return;
+        for (std::int64_t k = a[2]; k <= b[2]; ++k)
+          for (std::int64_t j = a[1]; j <= b[1]; ++j)
+            for (std::int64_t i = a[0]; i <= b[0]; ++i) {
+              const std::uint64_t bk = grid.bucket(i, j, k);
+              entries(offsets(bk) + Kokkos::atomic_fetch_add(&cursor(bk), 1)) = m;
+            }
+      });
+  return grid;
+}
+
+/// \brief Candidate master faces of every slave face (binned search, see file comment).
+/// \pre faces: (n, ≤ max_face_nodes) node ids, −1 padding; coords (n_nodes, dim), dim ∈ {2, 3};
+/// n_candidates (n_slave); candidates (n_slave, max_pair_candidates).
+/// \return capacity_exceeded if some slave face had more than max_pair_candidates candidates
+/// (the smallest ids are kept), degenerate for bad sizes, ok otherwise.
+template <class ExecSpace>
+MortarStatus coarse_search(const ExecSpace& space,
+                           Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
+                           Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
+                           Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
+                           double factor,
+                           Kokkos::View<int*, typename ExecSpace::memory_space> n_candidates,
+                           Kokkos::View<int**, typename ExecSpace::memory_space> candidates) {
+  using Mem = typename ExecSpace::memory_space;
+  const int dim = static_cast<int>(coords.extent(1));
+  if ((dim != 2 && dim != 3) || n_candidates.extent(0) != slave_faces.extent(0) ||
+      candidates.extent(0) != slave_faces.extent(0) ||
+      static_cast<int>(candidates.extent(1)) != max_pair_candidates)
+    return MortarStatus::degenerate;
+  const auto s_boxes = compute_face_boxes(space, slave_faces, coords, factor);
+  const auto m_boxes = compute_face_boxes(space, master_faces, coords, factor);
+  Kokkos::View<int*, Mem> offsets, entries;
+  const SearchGrid grid = bin_master_boxes<ExecSpace>(space, m_boxes, dim, offsets, entries);
+  int status = 0;
+  Kokkos::parallel_reduce(
+      "grout::coarse_search_query", Kokkos::RangePolicy<ExecSpace>(space, 0, slave_faces.extent(0)),
+      KOKKOS_LAMBDA(const int s, int& worst) {
+        int row[max_pair_candidates];
+        int count = 0;
+        bool complete = true;
+        std::int64_t a[3], b[3];
+        if (grid.cell_range(s_boxes, s, dim, a, b)) {
+          for (std::int64_t k = a[2]; k <= b[2]; ++k)
+            for (std::int64_t j = a[1]; j <= b[1]; ++j)
+              for (std::int64_t i = a[0]; i <= b[0]; ++i) {
+                const std::uint64_t bk = grid.bucket(i, j, k);
+                for (int e = offsets(bk); e < offsets(bk + 1); ++e) {
+                  const int m = entries(e);
+                  if (boxes_overlap(dim, s_boxes, s, m_boxes, m))
+                    complete = insert_candidate(row, count, m) && complete;
+                }
+              }
+        }
+        for (int c = 0; c < max_pair_candidates; ++c) candidates(s, c) = c < count ? row[c] : -1;
+        n_candidates(s) = count;
+        if (!complete) worst = static_cast<int>(MortarStatus::capacity_exceeded);
+      },
+      Kokkos::Max<int>(status));
+  status = status > 0 ? status : 0;  // Max starts from INT_MIN (empty range)
+  return static_cast<MortarStatus>(status);
+}
+
+/// Default-execution-space overload of coarse_search.
+inline MortarStatus coarse_search(Kokkos::View<const int**> slave_faces,
+                                  Kokkos::View<const int**> master_faces,
+                                  Kokkos::View<const double**> coords, double factor,
+                                  Kokkos::View<int*> n_candidates, Kokkos::View<int**> candidates) {
+  return coarse_search(Kokkos::DefaultExecutionSpace(), slave_faces, master_faces, coords, factor,
+                       n_candidates, candidates);
+}
+
+/// \brief Exclusive prefix sum of the candidate counts: pair_offsets(s) is the index of the
+/// first pair of slave face s in a compact pair array, pair_offsets(n_slave) the number of
+/// pairs (returned), launch "grout::candidate_offsets". \pre pair_offsets: (n_slave + 1).
+template <class ExecSpace>
+int candidate_offsets(const ExecSpace& space,
+                      Kokkos::View<const int*, typename ExecSpace::memory_space> n_candidates,
+                      Kokkos::View<int*, typename ExecSpace::memory_space> pair_offsets) {
+  const int n = static_cast<int>(n_candidates.extent(0));
+  int total = 0;
+  Kokkos::parallel_scan(
+      "grout::candidate_offsets", Kokkos::RangePolicy<ExecSpace>(space, 0, n),
+      KOKKOS_LAMBDA(const int s, int& partial, const bool final) {
+        if (final) pair_offsets(s) = partial;
+        partial += n_candidates(s);
+        if (final && s + 1 == n) pair_offsets(n) = partial;
+      },
+      total);
+  if (n == 0) Kokkos::deep_copy(space, pair_offsets, 0);
+  return total;
+}
+
+/// Default-execution-space overload of candidate_offsets.
+inline int candidate_offsets(Kokkos::View<const int*> n_candidates,
+                             Kokkos::View<int*> pair_offsets) {
+  return candidate_offsets(Kokkos::DefaultExecutionSpace(), n_candidates, pair_offsets);
+}
+
+/// \brief Brute-force reference of coarse_search (every slave box against every master box,
+/// O(n_s n_m)), same outputs and status; launch "grout::coarse_search_brute_force". Tests only.
+template <class ExecSpace>
+MortarStatus coarse_search_brute_force(
+    const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
+    Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
+    Kokkos::View<const double**, typename ExecSpace::memory_space> coords, double factor,
+    Kokkos::View<int*, typename ExecSpace::memory_space> n_candidates,
+    Kokkos::View<int**, typename ExecSpace::memory_space> candidates) {
+  const int dim = static_cast<int>(coords.extent(1));
+  const auto s_boxes = compute_face_boxes(space, slave_faces, coords, factor);
+  const auto m_boxes = compute_face_boxes(space, master_faces, coords, factor);
+  const int n_m = static_cast<int>(master_faces.extent(0));
+  int status = 0;
+  Kokkos::parallel_reduce(
+      "grout::coarse_search_brute_force",
+      Kokkos::RangePolicy<ExecSpace>(space, 0, slave_faces.extent(0)),
+      KOKKOS_LAMBDA(const int s, int& worst) {
+        int row[max_pair_candidates];
+        int count = 0;
+        bool complete = true;
+        for (int m = 0; m < n_m; ++m)
+          if (boxes_overlap(dim, s_boxes, s, m_boxes, m))
+            complete = insert_candidate(row, count, m) && complete;
+        for (int c = 0; c < max_pair_candidates; ++c) candidates(s, c) = c < count ? row[c] : -1;
+        n_candidates(s) = count;
+        if (!complete) worst = static_cast<int>(MortarStatus::capacity_exceeded);
+      },
+      Kokkos::Max<int>(status));
+  status = status > 0 ? status : 0;  // Max starts from INT_MIN (empty range)
+  return static_cast<MortarStatus>(status);
+}
+
+}  // namespace grout

@@ -1,0 +1,252 @@
+#pragma once
+// Segment-based mortar integration of one (slave LINE2, master LINE2) pair in 2D
+// (DESIGN.md §3; Yang, Laursen, Meng, IJNME 62 (2005) §3; Popp et al., IJNME 79 (2009) §3.1).
+//
+// Slave:  x¹(ξ) = N₁(ξ) x¹₁ + N₂(ξ) x¹₂,  interpolated normal n¹(ξ) = N₁ n₁ + N₂ n₂, ξ ∈ [−1, 1].
+// Master: x²(η) = N₁(η) x²₁ + N₂(η) x²₂.
+// 1. Each master node y is projected onto the slave along the interpolated slave normal:
+//    (x¹(ξ) − y) × n¹(ξ) = 0, a quadratic in ξ (closed form below).
+// 2. The overlap is [ξ_a, ξ_b] = [−1, 1] ∩ [min ξ(y_l), max ξ(y_l)]; an end point that is ±1 is a
+//    slave node, whose projection along its nodal normal n_j lands inside the master
+//    (project_along_normal_to_master_2d gives that master parameter).
+// 3. Gauss points on [ξ_a, ξ_b]; each is mapped to the master by projection along n¹(ξ_g):
+//    (x²(η) − x¹(ξ_g)) × n¹(ξ_g) = 0, linear in η.
+// 4. D_jj = ∫ Φ_j dA (row sum of D_jk = ∫ Φ_j N_k, diagonal by biorthogonality on a fully
+//    covered element), M_jl = ∫ Φ_j N²_l(η(ξ)) dA, with the LINE2 dual basis Φ (dual_basis.hpp).
+// Every output is fully written (zeros when the pair does not overlap), so degenerate pairs
+// never produce NaN. Templated on the scalar: double or Sacado::Fad::SFad.
+
+#include <Kokkos_Core.hpp>
+#include <cmath>
+
+#include "kernels/dual_basis.hpp"
+#include "kernels/gauss_line.hpp"
+#include "kernels/mortar_types.hpp"
+
+namespace grout {
+
+constexpr int mortar_2d_gauss_points = 5;        ///< default Gauss points on a 2D overlap segment
+constexpr double mortar_2d_overlap_tol = 1e-12;  ///< overlaps shorter than this (in ξ) are empty
+
+/// 2D cross product u × v = u_x v_y − u_y v_x.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION Scalar cross_2d(const Scalar u[2], const Scalar v[2]) {
+  return u[0] * v[1] - u[1] * v[0];
+}
+
+/// \brief Slave point x¹(ξ) and (non-normalised) interpolated normal n¹(ξ) = Σ N_j n_j.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION void slave_point_2d(const Scalar xs[2][2], const Scalar ns[2][2],
+                                           const Scalar& xi, Scalar x[2], Scalar n[2]) {
+  Scalar N[2];
+  line2_shape(xi, N);
+  for (int d = 0; d < 2; ++d) {
+    x[d] = N[0] * xs[0][d] + N[1] * xs[1][d];
+    n[d] = N[0] * ns[0][d] + N[1] * ns[1][d];
+  }
+}
+
+/// \brief Slave parameter ξ of the point y projected along the interpolated slave normal:
+/// (a − y + ξ b) × (c + ξ d) = 0 with a, b the mid point and half edge, c, d the mean and half
+/// difference of the nodal normals, i.e. A ξ² + B ξ + C = 0, A = b×d, B = (a−y)×d + b×c,
+/// C = (a−y)×c. Stable roots q/A, C/q with q = −(B + sgn(B)√(B² − 4AC))/2; the root nearest the
+/// element (smallest |ξ|) is returned. ξ may lie outside [−1, 1].
+/// \return projection_failed if no real root exists.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION MortarStatus project_to_slave_2d(const Scalar xs[2][2],
+                                                        const Scalar ns[2][2], const Scalar y[2],
+                                                        Scalar& xi) {
+  using std::abs;
+  using std::sqrt;
+  Scalar am[2], b[2], c[2], d[2];
+  for (int k = 0; k < 2; ++k) {
+    am[k] = 0.5 * (xs[0][k] + xs[1][k]) - y[k];
+    b[k] = 0.5 * (xs[1][k] - xs[0][k]);
+    c[k] = 0.5 * (ns[0][k] + ns[1][k]);
+    d[k] = 0.5 * (ns[1][k] - ns[0][k]);
+  }
+  const Scalar A = cross_2d(b, d);
+  const Scalar B = cross_2d(am, d) + cross_2d(b, c);
+  const Scalar C = cross_2d(am, c);
+  xi = 0.0;
+  if (abs(A) <= 1e-14 * abs(B)) {  // parallel nodal normals: linear equation
+    if (!(abs(B) > 0.0)) return MortarStatus::projection_failed;
+    xi = -C / B;
+    return MortarStatus::ok;
+  }
+  const Scalar disc = B * B - 4.0 * A * C;
+  if (disc < 0.0) return MortarStatus::projection_failed;
+  const Scalar q = B >= 0.0 ? Scalar(-0.5 * (B + sqrt(disc))) : Scalar(-0.5 * (B - sqrt(disc)));
+  if (!(abs(q) > 0.0)) return MortarStatus::ok;  // B = C = 0: double root ξ = 0
+  const Scalar r1 = q / A, r2 = C / q;
+  xi = abs(r1) < abs(r2) ? r1 : r2;
+  return MortarStatus::ok;
+}
+
+/// \brief Master parameter η of the point x projected along the direction n onto the master
+/// line: (x²(η) − x) × n = 0 ⇒ η = −((x̄² − x) × n) / (b² × n), x̄², b² the master mid point and
+/// half edge. η may lie outside [−1, 1]. Used for Gauss points (n = n¹(ξ_g)) and for slave nodes
+/// (n = n_j). \return projection_failed if n is parallel to the master edge.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION MortarStatus project_along_normal_to_master_2d(const Scalar xm[2][2],
+                                                                      const Scalar x[2],
+                                                                      const Scalar n[2],
+                                                                      Scalar& eta) {
+  using std::abs;
+  using std::sqrt;
+  Scalar am[2], b[2];
+  for (int k = 0; k < 2; ++k) {
+    am[k] = 0.5 * (xm[0][k] + xm[1][k]) - x[k];
+    b[k] = 0.5 * (xm[1][k] - xm[0][k]);
+  }
+  const Scalar den = cross_2d(b, n);
+  eta = 0.0;
+  const Scalar scale = sqrt((b[0] * b[0] + b[1] * b[1]) * (n[0] * n[0] + n[1] * n[1]));
+  if (!(abs(den) > 1e-14 * scale)) return MortarStatus::projection_failed;
+  eta = -cross_2d(am, n) / den;
+  return MortarStatus::ok;
+}
+
+/// \brief Overlap [ξ_a, ξ_b] ⊂ [−1, 1] of the slave segment with the master segment projected
+/// along the interpolated slave normal (step 2 above).
+/// \return no_overlap if ξ_b − ξ_a ≤ mortar_2d_overlap_tol, projection_failed if a master node
+/// has no projection, ok otherwise.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION MortarStatus mortar_overlap_2d(const Scalar xs[2][2], const Scalar ns[2][2],
+                                                      const Scalar xm[2][2], Scalar& xi_a,
+                                                      Scalar& xi_b) {
+  xi_a = 0.0;
+  xi_b = 0.0;
+  Scalar xi_m[2];
+  for (int l = 0; l < 2; ++l) {
+    const MortarStatus s = project_to_slave_2d(xs, ns, xm[l], xi_m[l]);
+    if (s != MortarStatus::ok) return s;
+  }
+  const Scalar lo = xi_m[0] < xi_m[1] ? xi_m[0] : xi_m[1];
+  const Scalar hi = xi_m[0] < xi_m[1] ? xi_m[1] : xi_m[0];
+  xi_a = lo > -1.0 ? lo : Scalar(-1.0);  // end point: master node projection or slave node 1
+  xi_b = hi < 1.0 ? hi : Scalar(1.0);    // end point: master node projection or slave node 2
+  if (!(xi_b - xi_a > mortar_2d_overlap_tol)) {
+    xi_a = xi_b = 0.0;
+    return MortarStatus::no_overlap;
+  }
+  return MortarStatus::ok;
+}
+
+/// \brief Gauss points of an n_gauss-point rule on the overlap: slave parameters ξ_g, master
+/// parameters η_g (by projection along n¹(ξ_g)) and physical weights w_g = ŵ_g (ξ_b − ξ_a)/2 · L/2
+/// (Σ w_g = overlap length). \pre 1 ≤ n_gauss ≤ max_gauss_line_points.
+/// \return the overlap status; capacity_exceeded for an unsupported n_gauss.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION MortarStatus
+mortar_integration_points_2d(const Scalar xs[2][2], const Scalar ns[2][2], const Scalar xm[2][2],
+                             int n_gauss, Scalar xi_s[max_gauss_line_points],
+                             Scalar eta_m[max_gauss_line_points], Scalar w[max_gauss_line_points]) {
+  using std::sqrt;
+  for (int g = 0; g < max_gauss_line_points; ++g) xi_s[g] = eta_m[g] = w[g] = 0.0;
+  if (n_gauss < 1 || n_gauss > max_gauss_line_points) return MortarStatus::capacity_exceeded;
+  const Scalar dx = xs[1][0] - xs[0][0], dy = xs[1][1] - xs[0][1];
+  const Scalar ll = dx * dx + dy * dy;
+  if (!(ll > 0.0)) return MortarStatus::degenerate;
+  Scalar xi_a, xi_b;
+  const MortarStatus s = mortar_overlap_2d(xs, ns, xm, xi_a, xi_b);
+  if (s != MortarStatus::ok) return s;
+  const Scalar half = 0.5 * (xi_b - xi_a), mid = 0.5 * (xi_a + xi_b);
+  const Scalar det_j = 0.5 * sqrt(ll);
+  for (int g = 0; g < n_gauss; ++g) {
+    double t, wr;
+    gauss_line_point(n_gauss, g, t, wr);
+    xi_s[g] = mid + half * t;
+    w[g] = wr * half * det_j;
+    Scalar x[2], n[2];
+    slave_point_2d(xs, ns, xi_s[g], x, n);
+    const MortarStatus sp = project_along_normal_to_master_2d(xm, x, n, eta_m[g]);
+    if (sp != MortarStatus::ok) return sp;
+  }
+  return MortarStatus::ok;
+}
+
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION void zero_pair_result_2d(MortarPairResult<Scalar>& out) {
+  out.n_slave = 2;
+  out.n_master = 2;
+  out.overlap = 0.0;
+  for (int j = 0; j < max_face_nodes; ++j) {
+    out.D[j] = 0.0;
+    for (int l = 0; l < max_face_nodes; ++l) out.M[j][l] = 0.0;
+  }
+}
+
+/// Adds one integration point (slave ξ, master η, weight w) to D_jj += w Φ_j, M_jl += w Φ_j N²_l.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION void add_mortar_point_2d(const Scalar& xi, const Scalar& eta,
+                                                const Scalar& w, MortarPairResult<Scalar>& out) {
+  Scalar Phi[2], Nm[2];
+  line2_dual_shape(xi, Phi);
+  line2_shape(eta, Nm);
+  out.overlap += w;
+  for (int j = 0; j < 2; ++j) {
+    out.D[j] += w * Phi[j];
+    for (int l = 0; l < 2; ++l) out.M[j][l] += w * Phi[j] * Nm[l];
+  }
+}
+
+/// \brief Exact (segment-based) D_jj and M_jl of one LINE2/LINE2 pair with an n_gauss-point rule
+/// on the overlap (steps 1-4 above). \pre ns: unit (or at least non-zero) slave nodal normals.
+/// \return ok, no_overlap (out zero), degenerate, projection_failed or capacity_exceeded.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION MortarStatus integrate_mortar_2d(const Scalar xs[2][2],
+                                                        const Scalar ns[2][2],
+                                                        const Scalar xm[2][2], int n_gauss,
+                                                        MortarPairResult<Scalar>& out) {
+  zero_pair_result_2d(out);
+  Scalar xi[max_gauss_line_points], eta[max_gauss_line_points], w[max_gauss_line_points];
+  const MortarStatus s = mortar_integration_points_2d(xs, ns, xm, n_gauss, xi, eta, w);
+  if (s != MortarStatus::ok) return s;
+  for (int g = 0; g < n_gauss; ++g) add_mortar_point_2d(xi[g], eta[g], w[g], out);
+  return MortarStatus::ok;
+}
+
+/// \brief integrate_mortar_2d with mortar_2d_gauss_points points: the 2D pair kernel. The 3D pair
+/// kernel (mortar_3d.hpp) has the signature
+/// `integrate_mortar_3d(int n_slave, const Scalar xs[4][3], const Scalar ns[4][3], int n_master,
+///  const Scalar xm[4][3], MortarPairResult<Scalar>& out)`.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION MortarStatus integrate_mortar_2d(const Scalar xs[2][2],
+                                                        const Scalar ns[2][2],
+                                                        const Scalar xm[2][2],
+                                                        MortarPairResult<Scalar>& out) {
+  return integrate_mortar_2d(xs, ns, xm, mortar_2d_gauss_points, out);
+}
+
+/// \brief Collocation (element-based) variant: n_points uniformly spread slave points
+/// ξ_i = −1 + (2i + 1)/n_points with weights (2/n_points)·L/2 (mid-point rule); a point whose
+/// projection along n¹(ξ_i) misses the master (|η| > 1) is dropped (Farah, Popp, Wall 2015).
+/// \return no_overlap if every point was dropped.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION MortarStatus integrate_mortar_2d_collocation(const Scalar xs[2][2],
+                                                                    const Scalar ns[2][2],
+                                                                    const Scalar xm[2][2],
+                                                                    int n_points,
+                                                                    MortarPairResult<Scalar>& out) {
+  using std::sqrt;
+  zero_pair_result_2d(out);
+  if (n_points < 1) return MortarStatus::capacity_exceeded;
+  const Scalar dx = xs[1][0] - xs[0][0], dy = xs[1][1] - xs[0][1];
+  const Scalar ll = dx * dx + dy * dy;
+  if (!(ll > 0.0)) return MortarStatus::degenerate;
+  const Scalar w = (1.0 / n_points) * sqrt(ll);  // (2/N) · L/2
+  bool any = false;
+  for (int i = 0; i < n_points; ++i) {
+    const Scalar xi = -1.0 + (2.0 * i + 1.0) / n_points;
+    Scalar x[2], n[2], eta;
+    slave_point_2d(xs, ns, xi, x, n);
+    if (project_along_normal_to_master_2d(xm, x, n, eta) != MortarStatus::ok) continue;
+    if (eta < -1.0 || eta > 1.0) continue;
+    add_mortar_point_2d(xi, eta, w, out);
+    any = true;
+  }
+  return any ? MortarStatus::ok : MortarStatus::no_overlap;
+}
+
+}  // namespace grout
