@@ -17,8 +17,8 @@ const MaterialInput& material_of(const Input& input, const ElementBlock& block) 
   for (const auto& m : input.materials) {
     if (m.block == block.name || m.block == "id_" + std::to_string(block.id)) return m;
   }
-  throw InputError(input.file + ": grout/materials: no material for element block '" +
-                   block.name + "'");
+  throw InputError(input.file + ": grout/materials: no material for element block '" + block.name +
+                   "'");
 }
 
 // A rank assembles the elements that touch one of its nodes (for its rows) and computes
@@ -26,7 +26,8 @@ const MaterialInput& material_of(const Input& input, const ElementBlock& block) 
 bool is_local_element(const Partition& partition, int rank, GlobalIndex element,
                       const GlobalIndex* conn, int npe) {
   return partition.element_part[element] == rank ||
-         std::any_of(conn, conn + npe, [&](GlobalIndex n) { return partition.node_part[n] == rank; });
+         std::any_of(conn, conn + npe,
+                     [&](GlobalIndex n) { return partition.node_part[n] == rank; });
 }
 
 }  // namespace
@@ -85,8 +86,8 @@ void SolidProblem::build_maps(const Partition& partition) {
                                      column.data(), column.size(), 0, comm_));
   importer_ = Teuchos::rcp(new Import(owned_map_, column_map_));
 
-  column_coordinates_ = Kokkos::View<double**>("grout::column_coordinates", column_nodes_.size(),
-                                               dim_);
+  column_coordinates_ =
+      Kokkos::View<double**>("grout::column_coordinates", column_nodes_.size(), dim_);
   for (std::size_t k = 0; k < column_nodes_.size(); ++k)
     for (int d = 0; d < dim_; ++d)
       column_coordinates_(k, d) = mesh_.coordinates[column_nodes_[k] * dim_ + d];
@@ -111,15 +112,16 @@ void SolidProblem::build_blocks(const Partition& partition) {
     lb.name = block.name;
     lb.topology = block.topology;
     lb.nodes_per_element = npe;
-    lb.constants = elastic_constants(material.youngs_modulus, material.poissons_ratio, dim_,
-                                     plane_stress);
+    lb.constants =
+        elastic_constants(material.youngs_modulus, material.poissons_ratio, dim_, plane_stress);
     lb.poissons_ratio = material.poissons_ratio;
     lb.nodes = Kokkos::View<int**>("grout::block_nodes", local.size(), npe);
     lb.global = Kokkos::View<GlobalIndex*>("grout::block_elements", local.size());
     lb.owned = Kokkos::View<bool*>("grout::block_owned", local.size());
     for (std::size_t i = 0; i < local.size(); ++i) {
       const GlobalIndex e = local[i];
-      for (int a = 0; a < npe; ++a) lb.nodes(i, a) = column_index.at(block.connectivity[e * npe + a]);
+      for (int a = 0; a < npe; ++a)
+        lb.nodes(i, a) = column_index.at(block.connectivity[e * npe + a]);
       lb.global(i) = block.first_element + e;
       lb.owned(i) = partition.element_part[block.first_element + e] == rank;
     }
@@ -197,9 +199,13 @@ void SolidProblem::build_loads() {
   }
 }
 
-Teuchos::RCP<Matrix> SolidProblem::create_matrix() const { return Teuchos::rcp(new Matrix(graph_)); }
+Teuchos::RCP<Matrix> SolidProblem::create_matrix() const {
+  return Teuchos::rcp(new Matrix(graph_));
+}
 
-Teuchos::RCP<Vector> SolidProblem::create_vector() const { return Teuchos::rcp(new Vector(owned_map_)); }
+Teuchos::RCP<Vector> SolidProblem::create_vector() const {
+  return Teuchos::rcp(new Vector(owned_map_));
+}
 
 void SolidProblem::import_to_column(const Vector& u, Vector& u_column) const {
   u_column.doImport(u, *importer_, Tpetra::INSERT);
@@ -208,9 +214,11 @@ void SolidProblem::import_to_column(const Vector& u, Vector& u_column) const {
 void SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
   Vector u_column(column_map_);
   u_column.doImport(u, *importer_, Tpetra::INSERT);
-  const auto u_view = Kokkos::subview(u_column.getLocalViewHost(Tpetra::Access::ReadOnly), Kokkos::ALL(), 0);
+  const auto u_view =
+      Kokkos::subview(u_column.getLocalViewHost(Tpetra::Access::ReadOnly), Kokkos::ALL(), 0);
   f_int.putScalar(0.0);
-  auto f_view = Kokkos::subview(f_int.getLocalViewHost(Tpetra::Access::ReadWrite), Kokkos::ALL(), 0);
+  auto f_view =
+      Kokkos::subview(f_int.getLocalViewHost(Tpetra::Access::ReadWrite), Kokkos::ALL(), 0);
   if (K) {
     K->resumeFill();
     K->setAllToScalar(0.0);
@@ -229,7 +237,8 @@ void SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
     const ElasticConstants constants = block.constants;
     GlobalIndex first_inverted = std::numeric_limits<GlobalIndex>::max();
     Kokkos::parallel_reduce(
-        "grout::assemble_solid", Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, nodes.extent(0)),
+        "grout::assemble_solid",
+        Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, nodes.extent(0)),
         KOKKOS_LAMBDA(const int e, GlobalIndex& bad) {
           double X[max_element_dofs], ue[max_element_dofs], fe[max_element_dofs];
           double Ke[max_element_dofs * max_element_dofs];
@@ -254,7 +263,8 @@ void SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
             for (int d = 0; d < dim; ++d) {
               const int i = a * dim + d;
               Kokkos::atomic_add(&f_view(cols[i]), fe[i]);
-              if (with_tangent) local_matrix.sumIntoValues(cols[i], cols, n, &Ke[i * n], false, true);
+              if (with_tangent)
+                local_matrix.sumIntoValues(cols[i], cols, n, &Ke[i * n], false, true);
             }
           }
         },
@@ -313,7 +323,8 @@ void SolidProblem::element_stresses(const Vector& u,
                                     std::vector<std::vector<double>>& stress) const {
   Vector u_column(column_map_);
   u_column.doImport(u, *importer_, Tpetra::INSERT);
-  const auto u_view = Kokkos::subview(u_column.getLocalViewHost(Tpetra::Access::ReadOnly), Kokkos::ALL(), 0);
+  const auto u_view =
+      Kokkos::subview(u_column.getLocalViewHost(Tpetra::Access::ReadOnly), Kokkos::ALL(), 0);
   const bool plane_strain = input_.model.plane == PlaneKind::strain;
   const int n_components = dim_ == 2 ? 4 : 6;
   for (const auto& block : blocks_) {

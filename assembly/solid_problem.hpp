@@ -27,9 +27,9 @@ struct LocalBlock {
   int nodes_per_element = 0;
   ElasticConstants constants{};
   double poissons_ratio = 0.0;
-  Kokkos::View<int**> nodes;            ///< [element][a] column-map node index
-  Kokkos::View<GlobalIndex*> global;    ///< global element index
-  Kokkos::View<bool*> owned;            ///< element belongs to this rank's partition
+  Kokkos::View<int**> nodes;          ///< [element][a] column-map node index
+  Kokkos::View<GlobalIndex*> global;  ///< global element index
+  Kokkos::View<bool*> owned;          ///< element belongs to this rank's partition
 };
 
 /// A loaded element side whose nodes include an owned node.

@@ -16,7 +16,8 @@ using LO = int;
 using GO = long long;
 using Node = Tpetra::Map<>::node_type;
 using Map = Tpetra::Map<LO, GO, Node>;
-static_assert(std::is_same_v<Tpetra::Map<>::global_ordinal_type, GO>, "grout: Tpetra must be instantiated with GO = long long");
+static_assert(std::is_same_v<Tpetra::Map<>::global_ordinal_type, GO>,
+              "grout: Tpetra must be instantiated with GO = long long");
 using Graph = Tpetra::CrsGraph<LO, GO, Node>;
 using Matrix = Tpetra::CrsMatrix<double, LO, GO, Node>;
 using Vector = Tpetra::Vector<double, LO, GO, Node>;

@@ -10,8 +10,8 @@
 
 #include <Tpetra_Core.hpp>
 #include <chrono>
-#include <filesystem>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "assembly/distribute_mesh.hpp"
@@ -21,7 +21,9 @@
 #include "io/exodus.hpp"
 #include "io/input.hpp"
 #include "nonlinear/linear_solver.hpp"
-#include "nonlinear/static_solver.hpp"
+#include "nonlinear/load_stepping.hpp"
+#include "nonlinear/mechanics_problem.hpp"
+#include "nonlinear/newton.hpp"
 
 namespace {
 
@@ -32,17 +34,6 @@ void print_usage() {
                "usage: grout <input.yaml> [--output-dir DIR]\n"
                "  Solves the contact/solid problem described by the YAML input and writes the\n"
                "  Exodus results and the CSV summary it names (see docs/input.md).\n");
-}
-
-NewtonSettings newton_settings(const Input& input) {
-  NewtonSettings s;
-  if (input.solver->isSublist("Newton")) {
-    Teuchos::ParameterList p = input.solver->sublist("Newton");
-    s.max_iterations = p.get<int>("max_iterations", s.max_iterations);
-    s.relative_tolerance = p.get<double>("relative_tolerance", s.relative_tolerance);
-    s.absolute_tolerance = p.get<double>("absolute_tolerance", s.absolute_tolerance);
-  }
-  return s;
 }
 
 // Outputs go to `dir` under the file names the input gives them.
@@ -69,25 +60,30 @@ int run(const std::string& input_path, const std::string& output_dir,
                 mesh.num_nodes(), mesh.num_elements(), comm->getSize());
   }
 
-  // Build: partition, maps, graph; the linear solver from the `solver` sublist.
-  const SolidProblem problem(mesh, input, comm);
+  // Build: partition, maps, graph, contact interfaces; solvers from the `solver` sublist.
+  const SolidProblem solid(mesh, input, comm);
+  MechanicsProblem problem(solid, mesh, input);
+  const NewtonOptions newton = newton_options_from(*input.solver);
   const Teuchos::ParameterList linear_params = input.solver->isSublist("Linear Solver")
                                                    ? input.solver->sublist("Linear Solver")
                                                    : Teuchos::ParameterList();
   LinearSolver linear(linear_params, input.file + ": grout/solver/Linear Solver");
-  ResultsOutput output(mesh, input, problem);
+  ResultsOutput output(mesh, input, solid, problem);
+  SteppingOptions stepping;
+  stepping.end_time = input.time.end;
+  stepping.steps = input.time.steps;
 
   // Solve, writing and flushing every converged step at once.
-  solve_static(problem, linear, newton_settings(input), input.time.end, input.time.steps,
-               [&](const StepResult& step) {
-                 output.write(step);
-                 if (root) {
-                   std::printf("step %d/%d  t = %g  newton %d  linear %d  |r| = %.3e\n", step.step,
-                               input.time.steps, step.time, step.newton_iterations,
-                               step.linear_iterations, step.residual);
-                   std::fflush(stdout);
-                 }
-               });
+  solve_load_steps(problem, linear, newton, stepping, [&](const ConvergedStep& step) {
+    output.write(step);
+    if (root) {
+      std::printf(
+          "step %d  t = %g  newton %d  linear %d  |F| = %.3e\n", step.step, step.time,
+          step.newton->iterations, step.newton->linear_iterations,
+          step.newton->residual_history.empty() ? 0.0 : step.newton->residual_history.back());
+      std::fflush(stdout);
+    }
+  });
   if (root) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -129,7 +125,8 @@ int main(int argc, char** argv) {
     if (root) std::fprintf(stderr, "grout: error: %s\n", e.what());
     return 2;
   } catch (const grout::ConvergenceError& e) {
-    if (root) std::fprintf(stderr, "grout: error: %s (converged steps are in the output)\n", e.what());
+    if (root)
+      std::fprintf(stderr, "grout: error: %s (converged steps are in the output)\n", e.what());
     return 3;
   } catch (const std::exception& e) {
     if (root) std::fprintf(stderr, "grout: error: %s\n", e.what());

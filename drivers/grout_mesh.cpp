@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "io/contact_meshes.hpp"
 #include "io/errors.hpp"
 #include "io/exodus.hpp"
 #include "io/mesh_generators.hpp"
@@ -32,6 +33,34 @@ kinds and their options (defaults in brackets):
                    --triangles        blocks lower [0,1]^2, upper [0,1]x[1+gap,2+gap]
   two_blocks_3d    --nx-lower [4] --ny-lower [4] --nz-lower [4] --nx-upper [5]
                    --ny-upper [5] --nz-upper [5] --gap [0] --tetrahedra
+  stacked_2d       --nx-lower [4] --ny-lower [4] --nx-upper [5] --ny-upper [5] --width [1]
+                   --height-lower [1] --height-upper [1] --gap [0] --triangles-lower
+                   --triangles-upper --distortion [0] --seed [1]
+                   blocks lower, upper; sets lower_/upper_ bottom right top left
+  stacked_3d       --nx-lower [4] --ny-lower [4] --nz-lower [4] --nx-upper [5] --ny-upper [5]
+                   --nz-upper [5] --width [1] --height-lower [1] --height-upper [1] --gap [0]
+                   --tetrahedra-lower --tetrahedra-upper --distortion [0] --seed [1]
+                   sets lower_/upper_ xmin xmax ymin ymax bottom top
+  sloped_blocks_2d --nx-lower [4] --ny-lower [3] --nx-upper [5] --ny-upper [3] --width [1]
+                   --y-left [0.9] --y-right [1.1] --height [2] --triangles-lower
+                   --triangles-upper   interface from (0,y-left) to (width,y-right)
+                   sets lower_/upper_ bottom right top left (lower_top = upper_bottom line)
+  taylor_patch_2d  --nx-block [8] --ny-block [4] --nx-die [3] --ny-die [2] --die-stretch [0]
+                   --triangles-block --triangles-die   block [0,8]x[0,5], die [4,6]x[5,7]
+                   sets block_/die_ bottom right top left, block_top_free; node sets
+                   block_origin die_anchor
+  taylor_patch_3d  --nx-block [8] --ny-block [8] --nz-block [4] --nx-die [3] --ny-die [3]
+                   --nz-die [2] --tetrahedra-block --tetrahedra-die
+                   block [0,8]^2x[0,4], die [4,6]^2x[4,6]; sets block_/die_ xmin xmax ymin
+                   ymax bottom top, block_top_free; node sets block_origin block_x_end
+                   die_anchor die_x_end
+  hertz_cylinders  --level [1] --radius [8] --gap [0] --contact-width [2.5]
+                   half discs upper (centre (0,R+gap)) and lower (centre (0,-R)); sets
+                   upper_contact lower_contact upper_top lower_bottom
+  cylinder_on_plane --level [1] --radius [6.1237] --contact-width [2.5]
+                   half disc cylinder (centre (0,R)) on plane [-2R,2R]x[-2R,0]; sets
+                   cylinder_contact cylinder_top plane_top plane_bottom plane_left
+                   plane_right; node set plane (all plane nodes)
 common: -o|--output <file> (required), -h|--help
 distortion (< 0.4) moves nodes randomly by up to distortion x cell size; boundary nodes
 stay on their boundary line/plane.
@@ -168,6 +197,94 @@ grout::Mesh generate(const std::string& kind, int argc, char** argv, std::string
         int(o.integer("--nz-lower", 4)), int(o.integer("--nx-upper", 5)),
         int(o.integer("--ny-upper", 5)), int(o.integer("--nz-upper", 5)), o.flag("--tetrahedra"),
         o.real("--gap", 0));
+  }
+  if (kind == "stacked_2d" || kind == "stacked_3d") {
+    const bool three = kind == "stacked_3d";
+    const std::string simplex = three ? "--tetrahedra" : "--triangles";
+    std::set<std::string> valued = {
+        "--nx-lower",     "--ny-lower",     "--nx-upper", "--ny-upper",   "--width",
+        "--height-lower", "--height-upper", "--gap",      "--distortion", "--seed"};
+    if (three) valued.insert({"--nz-lower", "--nz-upper"});
+    const Options o(argc, argv, valued, {simplex + "-lower", simplex + "-upper"});
+    output = o.text("--output", "");
+    grout::StackedBlocks s;
+    s.nx_lower = int(o.integer("--nx-lower", 4));
+    s.ny_lower = int(o.integer("--ny-lower", 4));
+    s.nz_lower = int(o.integer("--nz-lower", 4));
+    s.nx_upper = int(o.integer("--nx-upper", 5));
+    s.ny_upper = int(o.integer("--ny-upper", 5));
+    s.nz_upper = int(o.integer("--nz-upper", 5));
+    s.width = o.real("--width", 1);
+    s.height_lower = o.real("--height-lower", 1);
+    s.height_upper = o.real("--height-upper", 1);
+    s.gap = o.real("--gap", 0);
+    s.simplex_lower = o.flag(simplex + "-lower");
+    s.simplex_upper = o.flag(simplex + "-upper");
+    s.distortion = o.real("--distortion", 0);
+    s.seed = o.integer("--seed", 1, 0);
+    return three ? grout::stacked_blocks_3d(s) : grout::stacked_blocks_2d(s);
+  }
+  if (kind == "sloped_blocks_2d") {
+    const Options o(argc, argv,
+                    {"--nx-lower", "--ny-lower", "--nx-upper", "--ny-upper", "--width", "--y-left",
+                     "--y-right", "--height"},
+                    {"--triangles-lower", "--triangles-upper"});
+    output = o.text("--output", "");
+    grout::SlopedBlocks s;
+    s.nx_lower = int(o.integer("--nx-lower", 4));
+    s.ny_lower = int(o.integer("--ny-lower", 3));
+    s.nx_upper = int(o.integer("--nx-upper", 5));
+    s.ny_upper = int(o.integer("--ny-upper", 3));
+    s.width = o.real("--width", 1);
+    s.y_left = o.real("--y-left", 0.9);
+    s.y_right = o.real("--y-right", 1.1);
+    s.height = o.real("--height", 2);
+    s.triangles_lower = o.flag("--triangles-lower");
+    s.triangles_upper = o.flag("--triangles-upper");
+    return grout::sloped_blocks_2d(s);
+  }
+  if (kind == "taylor_patch_2d") {
+    const Options o(argc, argv,
+                    {"--nx-block", "--ny-block", "--nx-die", "--ny-die", "--die-stretch"},
+                    {"--triangles-block", "--triangles-die"});
+    output = o.text("--output", "");
+    grout::TaylorPatch s;
+    s.nx_block = int(o.integer("--nx-block", 8));
+    s.ny_block = int(o.integer("--ny-block", 4));
+    s.nx_die = int(o.integer("--nx-die", 3));
+    s.ny_die = int(o.integer("--ny-die", 2));
+    s.die_stretch = o.real("--die-stretch", 0);
+    s.simplex_block = o.flag("--triangles-block");
+    s.simplex_die = o.flag("--triangles-die");
+    return grout::taylor_patch_2d(s);
+  }
+  if (kind == "taylor_patch_3d") {
+    const Options o(argc, argv,
+                    {"--nx-block", "--ny-block", "--nz-block", "--nx-die", "--ny-die", "--nz-die"},
+                    {"--tetrahedra-block", "--tetrahedra-die"});
+    output = o.text("--output", "");
+    grout::TaylorPatch s;
+    s.nx_block = int(o.integer("--nx-block", 8));
+    s.ny_block = int(o.integer("--ny-block", 8));
+    s.nz_block = int(o.integer("--nz-block", 4));
+    s.nx_die = int(o.integer("--nx-die", 3));
+    s.ny_die = int(o.integer("--ny-die", 3));
+    s.nz_die = int(o.integer("--nz-die", 2));
+    s.simplex_block = o.flag("--tetrahedra-block");
+    s.simplex_die = o.flag("--tetrahedra-die");
+    return grout::taylor_patch_3d(s);
+  }
+  if (kind == "hertz_cylinders") {
+    const Options o(argc, argv, {"--level", "--radius", "--gap", "--contact-width"}, {});
+    output = o.text("--output", "");
+    return grout::hertz_cylinders_mesh(int(o.integer("--level", 1)), o.real("--radius", 8),
+                                       o.real("--gap", 0), o.real("--contact-width", 2.5));
+  }
+  if (kind == "cylinder_on_plane") {
+    const Options o(argc, argv, {"--level", "--radius", "--contact-width"}, {});
+    output = o.text("--output", "");
+    return grout::cylinder_on_plane_mesh(int(o.integer("--level", 1)), o.real("--radius", 6.1237),
+                                         o.real("--contact-width", 2.5));
   }
   throw UsageError("unknown mesh kind '" + kind + "'");
 }

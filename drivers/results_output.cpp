@@ -9,22 +9,35 @@ namespace grout {
 
 namespace {
 const char* const axis[3] = {"x", "y", "z"};
-}
+constexpr int first_reaction = 4;  ///< index of the first reaction sum in the globals
+}  // namespace
 
-ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidProblem& problem)
-    : mesh_(mesh), input_(input), problem_(problem), root_(problem.comm()->getRank() == 0) {
+ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidProblem& solid,
+                             const MechanicsProblem& problem)
+    : mesh_(mesh),
+      input_(input),
+      solid_(solid),
+      problem_(problem),
+      root_(solid.comm()->getRank() == 0) {
   const int dim = mesh.dimension;
   std::vector<std::string> nodal;
   for (int d = 0; d < dim; ++d) nodal.push_back(std::string("displ_") + axis[d]);
   for (int d = 0; d < dim; ++d) nodal.push_back(std::string("reaction_") + axis[d]);
-  global_names_ = {"newton_iterations", "linear_iterations", "residual"};
+  if (problem.has_contact()) {
+    for (const char* name : {"contact_pressure", "normal_gap", "contact_status"})
+      nodal.push_back(name);
+    for (int d = 0; d < dim; ++d) nodal.push_back(std::string("lm_") + axis[d]);
+  }
+  global_names_ = {"newton_iterations", "linear_iterations", "residual", "active_nodes"};
   for (const auto& bc : input.dirichlet)
-    for (int d = 0; d < dim; ++d) global_names_.push_back("reaction_" + bc.node_set + "_" + axis[d]);
+    for (int d = 0; d < dim; ++d)
+      global_names_.push_back("reaction_" + bc.node_set + "_" + axis[d]);
   // One column per node set, even when several conditions share it.
-  std::sort(global_names_.begin() + 3, global_names_.end());
-  global_names_.erase(std::unique(global_names_.begin() + 3, global_names_.end()), global_names_.end());
+  std::sort(global_names_.begin() + first_reaction, global_names_.end());
+  global_names_.erase(std::unique(global_names_.begin() + first_reaction, global_names_.end()),
+                      global_names_.end());
   if (!root_) return;
-  exodus_ = std::make_unique<ExodusWriter>(input.output.file, mesh, nodal, problem.stress_names(),
+  exodus_ = std::make_unique<ExodusWriter>(input.output.file, mesh, nodal, solid.stress_names(),
                                            global_names_);
   if (!input.output.summary.empty()) {
     summary_.open(input.output.summary);
@@ -36,13 +49,13 @@ ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidPr
 }
 
 std::vector<std::vector<double>> ResultsOutput::gather_nodal(const Vector& v) const {
-  const int dim = problem_.dimension();
-  const GlobalIndex n = problem_.num_global_nodes();
+  const int dim = solid_.dimension();
+  const GlobalIndex n = solid_.num_global_nodes();
   std::vector<double> local(n * dim, 0.0), global(n * dim, 0.0);
   const auto& map = *v.getMap();
   const auto view = v.getLocalViewHost(Tpetra::Access::ReadOnly);
   for (LO i = 0; i < LO(map.getNodeNumElements()); ++i) local[map.getGlobalElement(i)] = view(i, 0);
-  Teuchos::reduceAll(*problem_.comm(), Teuchos::REDUCE_SUM, int(local.size()), local.data(),
+  Teuchos::reduceAll(*solid_.comm(), Teuchos::REDUCE_SUM, int(local.size()), local.data(),
                      global.data());
   std::vector<std::vector<double>> out(dim, std::vector<double>(n));
   for (GlobalIndex k = 0; k < n; ++k)
@@ -50,25 +63,31 @@ std::vector<std::vector<double>> ResultsOutput::gather_nodal(const Vector& v) co
   return out;
 }
 
-void ResultsOutput::write(const StepResult& step) {
-  const int dim = problem_.dimension();
-  auto nodal = gather_nodal(*step.displacement);
-  auto reaction = gather_nodal(*step.reaction);
+void ResultsOutput::write(const ConvergedStep& step) {
+  const int dim = solid_.dimension();
+  Vector u(solid_.owned_map());
+  problem_.displacement(*step.state, u);
+  auto nodal = gather_nodal(u);
+  auto reaction = gather_nodal(problem_.reactions());
 
-  const auto names = problem_.stress_names();
+  const auto names = solid_.stress_names();
   const GlobalIndex n_elements = mesh_.num_elements();
   std::vector<std::vector<double>> stress(names.size(), std::vector<double>(n_elements, 0.0));
-  problem_.element_stresses(*step.displacement, stress);
+  solid_.element_stresses(u, stress);
   for (auto& s : stress) {
     std::vector<double> sum(s.size(), 0.0);
-    Teuchos::reduceAll(*problem_.comm(), Teuchos::REDUCE_SUM, int(s.size()), s.data(), sum.data());
+    Teuchos::reduceAll(*solid_.comm(), Teuchos::REDUCE_SUM, int(s.size()), s.data(), sum.data());
     s.swap(sum);
   }
+  const ContactFields contact = problem_.contact_fields();
 
   // Reaction sums per node set of the Dirichlet conditions (each node counted once).
-  std::vector<double> globals = {double(step.newton_iterations), double(step.linear_iterations),
-                                 step.residual};
-  for (std::size_t g = 3; g < global_names_.size(); ++g) {
+  const NewtonReport& newton = *step.newton;
+  std::vector<double> globals = {
+      double(newton.iterations), double(newton.linear_iterations),
+      newton.residual_history.empty() ? 0.0 : newton.residual_history.back(),
+      double(contact.active_nodes)};
+  for (std::size_t g = first_reaction; g < global_names_.size(); ++g) {
     const std::string& name = global_names_[g];
     const std::string set_name = name.substr(9, name.size() - 11);  // reaction_<set>_<axis>
     const int d = name.back() - 'x';
@@ -78,6 +97,12 @@ void ResultsOutput::write(const StepResult& step) {
   }
   if (!root_) return;
   for (int d = 0; d < dim; ++d) nodal.push_back(std::move(reaction[d]));
+  if (problem_.has_contact()) {
+    nodal.push_back(contact.pressure);
+    nodal.push_back(contact.gap);
+    nodal.push_back(contact.status);
+    for (int d = 0; d < dim; ++d) nodal.push_back(contact.lm[d]);
+  }
   exodus_->write_step(step.time, nodal, stress, globals);
   if (summary_.is_open()) {
     summary_ << step.step << "," << std::setprecision(17) << step.time;

@@ -9,14 +9,15 @@
 
 #include "assembly/solid_problem.hpp"
 #include "io/exodus.hpp"
-#include "nonlinear/static_solver.hpp"
+#include "nonlinear/load_stepping.hpp"
 
 namespace grout {
 
 class ResultsOutput {
  public:
-  ResultsOutput(const Mesh& mesh, const Input& input, const SolidProblem& problem);
-  void write(const StepResult& step);
+  ResultsOutput(const Mesh& mesh, const Input& input, const SolidProblem& solid,
+                const MechanicsProblem& problem);
+  void write(const ConvergedStep& step);
 
  private:
   /// Nodal values [component][node] of an owned dof vector, on every rank.
@@ -24,7 +25,8 @@ class ResultsOutput {
 
   const Mesh& mesh_;
   const Input& input_;
-  const SolidProblem& problem_;
+  const SolidProblem& solid_;
+  const MechanicsProblem& problem_;
   bool root_ = false;
   std::vector<std::string> global_names_;
   std::unique_ptr<ExodusWriter> exodus_;

@@ -237,7 +237,8 @@ std::vector<ContactInput> read_contact(const Section& grout) {
       Key::number("c_n").above(0),
       Key::number("c_t").above(0),
       Key::choice("integration", {"exact", "collocation"}, "integration").defaults("exact"),
-      Key::integer("collocation_points").at_least(1)};
+      Key::integer("collocation_points").at_least(1),
+      Key::choice("geometry", {"reference", "current"}, "contact geometry")};
   std::vector<ContactInput> pairs;
   for (const Section& s : grout.named_sections("contact", keys)) {
     ContactInput c;
@@ -263,6 +264,10 @@ std::vector<ContactInput> read_contact(const Section& grout) {
       s.fail("collocation_points", "only for integration: collocation");
     }
     c.collocation_points = s.integer("collocation_points");
+    if (s.has("geometry")) {
+      c.geometry = s.string("geometry") == "current" ? ContactGeometry::current
+                                                     : ContactGeometry::reference;
+    }
     pairs.push_back(std::move(c));
   }
   return pairs;

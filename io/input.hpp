@@ -53,6 +53,8 @@ struct LoadInput {
 enum class ContactKind { frictionless, frictional, tied };
 enum class ContactIntegration { exact, collocation };
 
+enum class ContactGeometry { automatic, reference, current };
+
 struct ContactInput {
   std::string name;
   std::string slave;   ///< side set
@@ -64,6 +66,10 @@ struct ContactInput {
   double c_n = 0.0;
   double c_t = 0.0;
   ContactIntegration integration = ContactIntegration::exact;  ///< of the mortar integrals
+  /// Where normals, D and M are evaluated: reference (linearised kinematics, consistent
+  /// with small strain) or current (large sliding, with the full linearisation); automatic =
+  /// reference for strain: small, current for strain: finite.
+  ContactGeometry geometry = ContactGeometry::automatic;
   int collocation_points = 0;  ///< per segment, for collocation; 0 = integrator default
 };
 

@@ -13,10 +13,16 @@
 // at most max_pair_candidates master ids, sorted ascending, −1 after the last (a fixed-capacity
 // CSR: row s starts at s · max_pair_candidates), and their count. A brute-force O(n_s n_m)
 // reference with the same contract is provided for tests.
+//
+// Repeated searches (every Newton iterate, or a benchmark) pass a CoarseSearchWorkspace: its
+// work arrays (boxes, bucket offsets and cursors, entries) grow to the largest size seen and are
+// reused, so a search of an unchanged or smaller problem allocates nothing. The overloads
+// without a workspace use a temporary one.
 
 #include <Kokkos_Core.hpp>
 #include <cmath>
 #include <cstdint>
+#include <string>
 
 #include "kernels/mortar_types.hpp"
 #include "kernels/surface_normals.hpp"
@@ -65,13 +71,36 @@ KOKKOS_INLINE_FUNCTION bool insert_candidate(int row[max_pair_candidates], int& 
   return !dropped;
 }
 
-/// Enlarged boxes (n_faces, 6) of a face table, launch "grout::coarse_search_boxes".
+/// \brief Work arrays of coarse_search, reused across calls: each grows (without
+/// initialisation) to the largest size requested and is never shrunk.
+template <class MemorySpace>
+struct CoarseSearchWorkspace {
+  Kokkos::View<double**, MemorySpace> slave_boxes, master_boxes;  ///< (≥ n_faces, 6)
+  Kokkos::View<int*, MemorySpace> offsets;  ///< (≥ n_buckets + 1) bucket → first entry
+  Kokkos::View<int*, MemorySpace> cursor;   ///< (≥ n_buckets) counts, then fill cursors
+  Kokkos::View<int*, MemorySpace> entries;  ///< (≥ Σ cells per master box) master ids
+};
+
+namespace detail {
+/// Grows v to at least n rows (contents undefined after a growth).
+template <class View>
+void ensure_rows(View& v, const char* label, size_t n) {
+  if (v.extent(0) >= n && v.data() != nullptr) return;
+  if constexpr (View::rank == 1)
+    v = View(Kokkos::view_alloc(Kokkos::WithoutInitializing, std::string(label)), n);
+  else
+    v = View(Kokkos::view_alloc(Kokkos::WithoutInitializing, std::string(label)), n, 6);
+}
+}  // namespace detail
+
+/// Writes the enlarged boxes of a face table into rows [0, n_faces) of boxes (≥ n_faces, 6),
+/// launch "grout::coarse_search_boxes".
 template <class ExecSpace>
-Kokkos::View<double**, typename ExecSpace::memory_space> compute_face_boxes(
-    const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> faces,
-    Kokkos::View<const double**, typename ExecSpace::memory_space> coords, double factor) {
-  Kokkos::View<double**, typename ExecSpace::memory_space> boxes("grout::face_boxes",
-                                                                 faces.extent(0), 6);
+void fill_face_boxes(const ExecSpace& space,
+                     Kokkos::View<const int**, typename ExecSpace::memory_space> faces,
+                     Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
+                     double factor,
+                     Kokkos::View<double**, typename ExecSpace::memory_space> boxes) {
   const int dim = static_cast<int>(coords.extent(1));
   Kokkos::parallel_for(
       "grout::coarse_search_boxes", Kokkos::RangePolicy<ExecSpace>(space, 0, faces.extent(0)),
@@ -84,6 +113,16 @@ Kokkos::View<double**, typename ExecSpace::memory_space> compute_face_boxes(
           boxes(f, 3 + d) = hi[d];
         }
       });
+}
+
+/// Enlarged boxes (n_faces, 6) of a face table, launch "grout::coarse_search_boxes".
+template <class ExecSpace>
+Kokkos::View<double**, typename ExecSpace::memory_space> compute_face_boxes(
+    const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> faces,
+    Kokkos::View<const double**, typename ExecSpace::memory_space> coords, double factor) {
+  Kokkos::View<double**, typename ExecSpace::memory_space> boxes("grout::face_boxes",
+                                                                 faces.extent(0), 6);
+  fill_face_boxes(space, faces, coords, factor, boxes);
   return boxes;
 }
 
@@ -160,16 +199,15 @@ struct BoxStatsReduce {
   }
 };
 
-/// \brief Builds the hashed grid of the master boxes: counts per bucket (atomic), exclusive
-/// prefix sum into offsets (n_buckets + 1), fill of entries (master ids). Launches
-/// "grout::coarse_search_bounds", "..._count", "..._offsets", "..._fill".
+/// \brief Builds the hashed grid of the n_m master boxes (rows of `boxes`): counts per bucket
+/// (atomic), exclusive prefix sum into ws.offsets (n_buckets + 1), fill of ws.entries (master
+/// ids), all in the workspace. Launches "grout::coarse_search_bounds", "..._count",
+/// "..._offsets", "..._fill".
 template <class ExecSpace>
 SearchGrid bin_master_boxes(const ExecSpace& space,
                             Kokkos::View<const double**, typename ExecSpace::memory_space> boxes,
-                            int dim, Kokkos::View<int*, typename ExecSpace::memory_space>& offsets,
-                            Kokkos::View<int*, typename ExecSpace::memory_space>& entries) {
-  using Mem = typename ExecSpace::memory_space;
-  const int n_m = static_cast<int>(boxes.extent(0));
+                            int n_m, int dim,
+                            CoarseSearchWorkspace<typename ExecSpace::memory_space>& ws) {
   BoxStats stats;
   Kokkos::parallel_reduce("grout::coarse_search_bounds",
                           Kokkos::RangePolicy<ExecSpace>(space, 0, n_m),
@@ -191,8 +229,12 @@ SearchGrid bin_master_boxes(const ExecSpace& space,
           static_cast<std::int64_t>(std::floor((stats.hi[d] - stats.lo[d]) / grid.h)) + 1;
     }
   }
-  offsets = Kokkos::View<int*, Mem>("grout::search_offsets", n_buckets + 1);
-  Kokkos::View<int*, Mem> cursor("grout::search_cursor", n_buckets);
+  detail::ensure_rows(ws.offsets, "grout::search_offsets", n_buckets + 1);
+  detail::ensure_rows(ws.cursor, "grout::search_cursor", n_buckets);
+  const auto offsets = ws.offsets;
+  const auto cursor = ws.cursor;
+  Kokkos::deep_copy(space, Kokkos::subview(cursor, Kokkos::make_pair(size_t(0), size_t(n_buckets))),
+                    0);
   Kokkos::parallel_for(
       "grout::coarse_search_count", Kokkos::RangePolicy<ExecSpace>(space, 0, n_m),
       KOKKOS_LAMBDA(const int m) {
@@ -212,8 +254,10 @@ SearchGrid bin_master_boxes(const ExecSpace& space,
         if (final && b + 1 == static_cast<int>(n_buckets)) offsets(b + 1) = partial;
       },
       total);
-  entries = Kokkos::View<int*, Mem>("grout::search_entries", total);
-  Kokkos::deep_copy(space, cursor, 0);
+  detail::ensure_rows(ws.entries, "grout::search_entries", static_cast<size_t>(total));
+  const auto entries = ws.entries;
+  Kokkos::deep_copy(space, Kokkos::subview(cursor, Kokkos::make_pair(size_t(0), size_t(n_buckets))),
+                    0);
   Kokkos::parallel_for(
       "grout::coarse_search_fill", Kokkos::RangePolicy<ExecSpace>(space, 0, n_m),
       KOKKOS_LAMBDA(const int m) {
@@ -229,29 +273,50 @@ SearchGrid bin_master_boxes(const ExecSpace& space,
   return grid;
 }
 
+/// bin_master_boxes into fresh offsets (n_buckets + 1) and entries arrays.
+template <class ExecSpace>
+SearchGrid bin_master_boxes(const ExecSpace& space,
+                            Kokkos::View<const double**, typename ExecSpace::memory_space> boxes,
+                            int dim, Kokkos::View<int*, typename ExecSpace::memory_space>& offsets,
+                            Kokkos::View<int*, typename ExecSpace::memory_space>& entries) {
+  CoarseSearchWorkspace<typename ExecSpace::memory_space> ws;
+  const SearchGrid grid =
+      bin_master_boxes(space, boxes, static_cast<int>(boxes.extent(0)), dim, ws);
+  offsets = ws.offsets;
+  entries = ws.entries;
+  return grid;
+}
+
 /// \brief Candidate master faces of every slave face (binned search, see file comment).
 /// \pre faces: (n, ≤ max_face_nodes) node ids, −1 padding; coords (n_nodes, dim), dim ∈ {2, 3};
 /// n_candidates (n_slave); candidates (n_slave, max_pair_candidates).
 /// \return capacity_exceeded if some slave face had more than max_pair_candidates candidates
 /// (the smallest ids are kept), degenerate for bad sizes, ok otherwise.
+/// The work arrays come from (and stay in) `workspace`: no allocation once it is large enough.
 template <class ExecSpace>
 MortarStatus coarse_search(const ExecSpace& space,
+                           CoarseSearchWorkspace<typename ExecSpace::memory_space>& workspace,
                            Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
                            Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
                            Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
                            double factor,
                            Kokkos::View<int*, typename ExecSpace::memory_space> n_candidates,
                            Kokkos::View<int**, typename ExecSpace::memory_space> candidates) {
-  using Mem = typename ExecSpace::memory_space;
   const int dim = static_cast<int>(coords.extent(1));
   if ((dim != 2 && dim != 3) || n_candidates.extent(0) != slave_faces.extent(0) ||
       candidates.extent(0) != slave_faces.extent(0) ||
       static_cast<int>(candidates.extent(1)) != max_pair_candidates)
     return MortarStatus::degenerate;
-  const auto s_boxes = compute_face_boxes(space, slave_faces, coords, factor);
-  const auto m_boxes = compute_face_boxes(space, master_faces, coords, factor);
-  Kokkos::View<int*, Mem> offsets, entries;
-  const SearchGrid grid = bin_master_boxes<ExecSpace>(space, m_boxes, dim, offsets, entries);
+  detail::ensure_rows(workspace.slave_boxes, "grout::slave_boxes", slave_faces.extent(0));
+  detail::ensure_rows(workspace.master_boxes, "grout::master_boxes", master_faces.extent(0));
+  const auto s_boxes = workspace.slave_boxes;
+  const auto m_boxes = workspace.master_boxes;
+  fill_face_boxes(space, slave_faces, coords, factor, s_boxes);
+  fill_face_boxes(space, master_faces, coords, factor, m_boxes);
+  const SearchGrid grid = bin_master_boxes<ExecSpace>(
+      space, m_boxes, static_cast<int>(master_faces.extent(0)), dim, workspace);
+  const auto offsets = workspace.offsets;
+  const auto entries = workspace.entries;
   int status = 0;
   Kokkos::parallel_reduce(
       "grout::coarse_search_query", Kokkos::RangePolicy<ExecSpace>(space, 0, slave_faces.extent(0)),
@@ -281,6 +346,20 @@ MortarStatus coarse_search(const ExecSpace& space,
   return static_cast<MortarStatus>(status);
 }
 
+/// coarse_search with a temporary workspace (allocates its work arrays on every call).
+template <class ExecSpace>
+MortarStatus coarse_search(const ExecSpace& space,
+                           Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
+                           Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
+                           Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
+                           double factor,
+                           Kokkos::View<int*, typename ExecSpace::memory_space> n_candidates,
+                           Kokkos::View<int**, typename ExecSpace::memory_space> candidates) {
+  CoarseSearchWorkspace<typename ExecSpace::memory_space> workspace;
+  return coarse_search(space, workspace, slave_faces, master_faces, coords, factor, n_candidates,
+                       candidates);
+}
+
 /// Default-execution-space overload of coarse_search.
 inline MortarStatus coarse_search(Kokkos::View<const int**> slave_faces,
                                   Kokkos::View<const int**> master_faces,
@@ -288,6 +367,16 @@ inline MortarStatus coarse_search(Kokkos::View<const int**> slave_faces,
                                   Kokkos::View<int*> n_candidates, Kokkos::View<int**> candidates) {
   return coarse_search(Kokkos::DefaultExecutionSpace(), slave_faces, master_faces, coords, factor,
                        n_candidates, candidates);
+}
+
+/// Default-execution-space overload of coarse_search with a workspace.
+inline MortarStatus coarse_search(
+    CoarseSearchWorkspace<Kokkos::DefaultExecutionSpace::memory_space>& workspace,
+    Kokkos::View<const int**> slave_faces, Kokkos::View<const int**> master_faces,
+    Kokkos::View<const double**> coords, double factor, Kokkos::View<int*> n_candidates,
+    Kokkos::View<int**> candidates) {
+  return coarse_search(Kokkos::DefaultExecutionSpace(), workspace, slave_faces, master_faces,
+                       coords, factor, n_candidates, candidates);
 }
 
 /// \brief Exclusive prefix sum of the candidate counts: pair_offsets(s) is the index of the

@@ -27,6 +27,7 @@
 
 #include <Kokkos_Core.hpp>
 #include <cmath>
+#include <type_traits>
 
 #include "kernels/dual_basis_3d.hpp"
 #include "kernels/face_geometry_3d.hpp"
@@ -82,6 +83,72 @@ KOKKOS_INLINE_FUNCTION Scalar slave_area_ratio(int n_slave, const Scalar xs[max_
   return sqrt(detail3d::dot(c, c)) / detail3d::dot(c, n0);
 }
 
+namespace detail3d {
+
+/// \brief True if the plane map y(ξ) = Σ N_i(ξ) p_i of a face is affine, so that ξ(y) is affine
+/// too: always for TRI3; for a QUAD4 whose plane image is a parallelogram
+/// (|p₁ − p₂ + p₃ − p₄| ≤ 1e-13 |diagonals|), only with Scalar = double — for a Fad scalar the
+/// derivative of ξ(y) with respect to the nodes is not affine in y even then.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION bool affine_in_plane(int n, const Scalar p[max_face_nodes][2]) {
+  using std::abs;
+  if (n == 3) return true;
+  if (!std::is_same<Scalar, double>::value || n != 4) return false;
+  const Scalar dx = p[0][0] - p[1][0] + p[2][0] - p[3][0];
+  const Scalar dy = p[0][1] - p[1][1] + p[2][1] - p[3][1];
+  const Scalar diag = abs(p[2][0] - p[0][0]) + abs(p[2][1] - p[0][1]) + abs(p[3][0] - p[1][0]) +
+                      abs(p[3][1] - p[1][1]);
+  return abs(dx) + abs(dy) <= 1e-13 * diag;
+}
+
+}  // namespace detail3d
+
+namespace detail3d {
+
+/// Cell loop of for_each_mortar_point_3d with a GaussTriangle<Degree> rule per cell.
+template <int Degree, class Scalar, class PointFunctor>
+KOKKOS_INLINE_FUNCTION MortarStatus integrate_cells(
+    int n_slave, const Scalar xs[max_face_nodes][3], int n_master,
+    const AuxiliaryPlane<Scalar>& plane, const Scalar pm[max_face_nodes][2], int nv,
+    const Scalar poly[max_clip_vertices][2], const Scalar yc[2], bool slave_affine,
+    bool master_affine, const Scalar xi_vs[max_clip_vertices + 1][2],
+    const Scalar xi_vm[max_clip_vertices + 1][2], const Scalar& slave_ratio, PointFunctor& f) {
+  for (int i = 0; i < nv; ++i) {
+    const int i2 = i + 1 == nv ? 0 : i + 1;
+    const Scalar* v1 = poly[i];
+    const Scalar* v2 = poly[i2];
+    const Scalar cell_area =
+        0.5 * ((v1[0] - yc[0]) * (v2[1] - yc[1]) - (v2[0] - yc[0]) * (v1[1] - yc[1]));
+    for (int g = 0; g < GaussTriangle<Degree>::num_points; ++g) {
+      double a, b, wg;
+      GaussTriangle<Degree>::point(g, a, b, wg);
+      const double c = 1.0 - a - b;
+      const Scalar y[2] = {c * yc[0] + a * v1[0] + b * v2[0], c * yc[1] + a * v1[1] + b * v2[1]};
+      Scalar xi_s[2], xi_m[2];
+      if (slave_affine) {
+        for (int k = 0; k < 2; ++k) xi_s[k] = c * xi_vs[nv][k] + a * xi_vs[i][k] + b * xi_vs[i2][k];
+      } else if (face_inverse_map_2d(n_slave, plane.ps, y, xi_s) != MortarStatus::ok) {
+        return MortarStatus::projection_failed;
+      }
+      if (master_affine) {
+        for (int k = 0; k < 2; ++k) xi_m[k] = c * xi_vm[nv][k] + a * xi_vm[i][k] + b * xi_vm[i2][k];
+      } else if (face_inverse_map_2d(n_master, pm, y, xi_m) != MortarStatus::ok) {
+        return MortarStatus::projection_failed;
+      }
+      Scalar ratio = slave_ratio;
+      if (!slave_affine) {
+        ratio = slave_area_ratio(n_slave, xs, plane.n0, xi_s);
+        if (!(ratio > 0.0)) return MortarStatus::degenerate;
+      }
+      const Scalar w = wg * cell_area * ratio;
+      f(xi_s, xi_m, w);
+    }
+  }
+  return MortarStatus::ok;
+}
+
+}  // namespace detail3d
+
 /// \brief Exact segmentation of a pair: calls f(ξ¹, ξ², w) for every integration point, with
 /// ξ¹/ξ² the slave/master parameters and w the slave-surface weight (Σ w = overlap area).
 /// \return ok; no_overlap (nothing called); degenerate (slave face);
@@ -107,27 +174,33 @@ KOKKOS_INLINE_FUNCTION MortarStatus for_each_mortar_point_3d(int n_slave,
 
   Scalar yc[2] = {0.0, 0.0};
   for (int i = 0; i < nv; ++i) yc[0] += poly[i][0] / nv, yc[1] += poly[i][1] / nv;
-  for (int i = 0; i < nv; ++i) {
-    const Scalar* v1 = poly[i];
-    const Scalar* v2 = poly[i + 1 == nv ? 0 : i + 1];
-    const Scalar cell_area =
-        0.5 * ((v1[0] - yc[0]) * (v2[1] - yc[1]) - (v2[0] - yc[0]) * (v1[1] - yc[1]));
-    for (int g = 0; g < GaussTriangle<Degree>::num_points; ++g) {
-      double a, b, wg;
-      GaussTriangle<Degree>::point(g, a, b, wg);
-      const Scalar y[2] = {(1.0 - a - b) * yc[0] + a * v1[0] + b * v2[0],
-                           (1.0 - a - b) * yc[1] + a * v1[1] + b * v2[1]};
-      Scalar xi_s[2], xi_m[2];
-      if (face_inverse_map_2d(n_slave, plane.ps, y, xi_s) != MortarStatus::ok ||
-          face_inverse_map_2d(n_master, pm, y, xi_m) != MortarStatus::ok)
-        return MortarStatus::projection_failed;
-      const Scalar ratio = slave_area_ratio(n_slave, xs, plane.n0, xi_s);
-      if (!(ratio > 0.0)) return MortarStatus::degenerate;
-      const Scalar w = wg * cell_area * ratio;
-      f(xi_s, xi_m, w);
-    }
+
+  // An affine side (detail3d::affine_in_plane) has parameters affine in y: those of a Gauss
+  // point are the barycentric combination of those of its cell's vertices (mapped once per
+  // polygon vertex, not per point), and for an affine slave the area ratio is constant.
+  const bool slave_affine = detail3d::affine_in_plane(n_slave, plane.ps);
+  const bool master_affine = detail3d::affine_in_plane(n_master, pm);
+  Scalar xi_vs[max_clip_vertices + 1][2] = {}, xi_vm[max_clip_vertices + 1][2] = {};  // [nv]: centroid
+  for (int i = 0; i <= nv; ++i) {
+    const Scalar* y = i < nv ? poly[i] : yc;
+    if ((slave_affine && face_inverse_map_2d(n_slave, plane.ps, y, xi_vs[i]) != MortarStatus::ok) ||
+        (master_affine && face_inverse_map_2d(n_master, pm, y, xi_vm[i]) != MortarStatus::ok))
+      return MortarStatus::projection_failed;
   }
-  return MortarStatus::ok;
+  Scalar slave_ratio = 1.0;
+  if (slave_affine) {
+    slave_ratio = slave_area_ratio(n_slave, xs, plane.n0, xi_vs[nv]);
+    if (!(slave_ratio > 0.0)) return MortarStatus::degenerate;
+  }
+
+  // Both sides affine: Φ_j N²_l is a polynomial of degree ≤ 4 on each cell (file comment), so
+  // the degree-4 rule is exact and replaces a higher requested degree.
+  if (slave_affine && master_affine && Degree > 4)
+    return detail3d::integrate_cells<4>(n_slave, xs, n_master, plane, pm, nv, poly, yc,
+                                        slave_affine, master_affine, xi_vs, xi_vm, slave_ratio, f);
+  return detail3d::integrate_cells<Degree>(n_slave, xs, n_master, plane, pm, nv, poly, yc,
+                                           slave_affine, master_affine, xi_vs, xi_vm, slave_ratio,
+                                           f);
 }
 
 namespace detail3d {

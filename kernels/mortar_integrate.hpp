@@ -6,23 +6,28 @@
 // "grout::mortar_integrate<3D>", whose max-reduced status is returned on the host (no_overlap is
 // not an error: such pairs are stored with zeros).
 //
-// The per-dimension pair kernel is selected by MortarPairKernel<Dim>. This header defines
-// MortarPairKernel<2> (integrate_mortar_2d / integrate_mortar_2d_collocation, mortar_2d.hpp).
-// The 3D code defines, in its own header,
-//
-//   template <> struct MortarPairKernel<3> {
-//     static constexpr const char* label = "grout::mortar_integrate<3D>";
-//     template <class Scalar> KOKKOS_INLINE_FUNCTION static MortarStatus integrate(
-//         int n_slave, const Scalar xs[max_face_nodes][3], const Scalar ns[max_face_nodes][3],
-//         int n_master, const Scalar xm[max_face_nodes][3], const MortarOptions& options,
-//         MortarPairResult<Scalar>& out);   // calls integrate_mortar_3d(n_slave, xs, ns, ...)
-//   };
-//
-// after which mortar_integrate<3>(...) below works unchanged.
+// The per-dimension pair kernel is selected by MortarPairKernel<Dim>, which provides
+//   SlaveFace                          per-slave data shared by all its candidates,
+//   prepare(n_slave, xs, ns, options, slave)            once per slave face,
+//   integrate(slave, n_master, xm, options, out)        once per candidate pair,
+//   integrate(n_slave, xs, ns, n_master, xm, options, out)   both, for a single pair.
+// MortarPairKernel<2>: integrate_mortar_2d / integrate_mortar_2d_collocation (mortar_2d.hpp);
+// a slave segment with parallel nodal normals (flat parts of an interface) has an affine
+// master map η(ξ), and n_gauss is then capped at 2, which is exact there.
+// MortarPairKernel<3>: integrate_mortar_3d_dual / integrate_mortar_3d_collocation
+// (mortar_3d.hpp); the dual coefficients A_e = D_e M_e⁻¹ (a 16-point mass matrix and a 4×4
+// inverse on QUAD4) and the auxiliary plane depend on the slave face only and are computed once
+// per slave face, and a candidate whose projection on the auxiliary plane has a bounding box
+// separated from the slave's (by more than mortar_3d_reject_tolerance · size) is rejected before
+// the clipping: the clipping would find no overlap either, so the results are unchanged.
 
 #include <Kokkos_Core.hpp>
+#include <cmath>
+#include <type_traits>
 
+#include "kernels/dual_basis_3d.hpp"
 #include "kernels/mortar_2d.hpp"
+#include "kernels/mortar_3d.hpp"
 #include "kernels/mortar_types.hpp"
 #include "kernels/surface_normals.hpp"
 
@@ -32,8 +37,12 @@ namespace grout {
 struct MortarOptions {
   MortarIntegration scheme = MortarIntegration::exact;
   int n_gauss = mortar_2d_gauss_points;  ///< Gauss points per 2D overlap segment (1..8)
-  int n_collocation = 16;                ///< points per slave element for collocation
+  int n_collocation = 16;  ///< points per slave element for collocation (3D: k × k, k = ⌊√n⌋)
 };
+
+/// Relative separation (of the plane bounding boxes, in units of the pair's size) beyond which
+/// a 3D candidate is rejected without clipping; far above the clipping tolerances (1e-12).
+constexpr double mortar_3d_reject_tolerance = 1e-8;
 
 /// Pair kernel of dimension Dim (specialised per dimension, see the file comment).
 template <int Dim>
@@ -43,22 +52,157 @@ template <>
 struct MortarPairKernel<2> {
   static constexpr const char* label = "grout::mortar_integrate<2D>";
 
+  /// LINE2 slave face in 2D arrays.
+  template <class Scalar>
+  struct SlaveFace {
+    int n_nodes;
+    bool parallel_normals;  ///< n₁ ∥ n₂: η(ξ) is affine, Φ_j N²_l quadratic (2 points exact)
+    Scalar xs[2][2], ns[2][2];
+  };
+
+  /// Copies the padded (max_face_nodes × 3) slave arrays; degenerate unless LINE2.
+  template <class Scalar>
+  KOKKOS_INLINE_FUNCTION static MortarStatus prepare(int n_slave,
+                                                     const Scalar xs[max_face_nodes][3],
+                                                     const Scalar ns[max_face_nodes][3],
+                                                     const MortarOptions&,
+                                                     SlaveFace<Scalar>& slave) {
+    slave.n_nodes = n_slave;
+    for (int k = 0; k < 2; ++k)
+      for (int d = 0; d < 2; ++d) slave.xs[k][d] = xs[k][d], slave.ns[k][d] = ns[k][d];
+    // Exactly parallel (double only: for a Fad scalar the derivatives of η(ξ) are not affine).
+    slave.parallel_normals = std::is_same<Scalar, double>::value &&
+                             ns[0][0] * ns[1][1] - ns[0][1] * ns[1][0] == 0.0 &&
+                             ns[0][0] * ns[1][0] + ns[0][1] * ns[1][1] > 0.0;
+    return n_slave == 2 ? MortarStatus::ok : MortarStatus::degenerate;
+  }
+
+  /// LINE2/LINE2 pair; only xm[0..1][0..1] are read.
+  template <class Scalar>
+  KOKKOS_INLINE_FUNCTION static MortarStatus integrate(const SlaveFace<Scalar>& slave, int n_master,
+                                                       const Scalar xm[max_face_nodes][3],
+                                                       const MortarOptions& options,
+                                                       MortarPairResult<Scalar>& out) {
+    if (slave.n_nodes != 2 || n_master != 2) {
+      zero_pair_result_2d(out);
+      return MortarStatus::degenerate;
+    }
+    const Scalar xm2[2][2] = {{xm[0][0], xm[0][1]}, {xm[1][0], xm[1][1]}};
+    if (options.scheme == MortarIntegration::collocation)
+      return integrate_mortar_2d_collocation(slave.xs, slave.ns, xm2, options.n_collocation, out);
+    // With parallel slave normals the 2-point rule is exact (Φ_j N²_l quadratic in ξ).
+    const int n_gauss = slave.parallel_normals && options.n_gauss > 2 ? 2 : options.n_gauss;
+    return integrate_mortar_2d(slave.xs, slave.ns, xm2, n_gauss, out);
+  }
+
   /// LINE2/LINE2 pair from padded (max_face_nodes × 3) arrays; only [0..1][0..1] are read.
   template <class Scalar>
   KOKKOS_INLINE_FUNCTION static MortarStatus integrate(
       int n_slave, const Scalar xs[max_face_nodes][3], const Scalar ns[max_face_nodes][3],
       int n_master, const Scalar xm[max_face_nodes][3], const MortarOptions& options,
       MortarPairResult<Scalar>& out) {
-    if (n_slave != 2 || n_master != 2) {
-      zero_pair_result_2d(out);
-      return MortarStatus::degenerate;
+    SlaveFace<Scalar> slave;
+    prepare(n_slave, xs, ns, options, slave);
+    return integrate(slave, n_master, xm, options, out);
+  }
+};
+
+template <>
+struct MortarPairKernel<3> {
+  static constexpr const char* label = "grout::mortar_integrate<3D>";
+
+  /// TRI3/QUAD4 slave face with its dual coefficients, auxiliary plane and plane bounding box.
+  template <class Scalar>
+  struct SlaveFace {
+    int n_nodes;
+    MortarStatus status;  ///< ok, or degenerate (every pair then returns degenerate)
+    Scalar xs[max_face_nodes][3], ns[max_face_nodes][3];
+    Scalar A[max_face_nodes][max_face_nodes];
+    AuxiliaryPlane<Scalar> plane;
+    Scalar lo[2], hi[2];  ///< bounding box of plane.ps
+  };
+
+  /// Dual coefficients, auxiliary plane and its bounding box of one slave face.
+  template <class Scalar>
+  KOKKOS_INLINE_FUNCTION static MortarStatus prepare(int n_slave,
+                                                     const Scalar xs[max_face_nodes][3],
+                                                     const Scalar ns[max_face_nodes][3],
+                                                     const MortarOptions&,
+                                                     SlaveFace<Scalar>& slave) {
+    slave.n_nodes = n_slave;
+    for (int k = 0; k < max_face_nodes; ++k)
+      for (int d = 0; d < 3; ++d) slave.xs[k][d] = xs[k][d], slave.ns[k][d] = ns[k][d];
+    slave.status = MortarStatus::degenerate;
+    if (n_slave != 3 && n_slave != 4) return slave.status;
+    if (dual_basis_coefficients_3d(n_slave, slave.xs, slave.A) != MortarStatus::ok ||
+        auxiliary_plane(n_slave, slave.xs, slave.plane) != MortarStatus::ok)
+      return slave.status;
+    for (int a = 0; a < 2; ++a) {
+      slave.lo[a] = slave.hi[a] = slave.plane.ps[0][a];
+      for (int k = 1; k < n_slave; ++k) {
+        if (slave.plane.ps[k][a] < slave.lo[a]) slave.lo[a] = slave.plane.ps[k][a];
+        if (slave.plane.ps[k][a] > slave.hi[a]) slave.hi[a] = slave.plane.ps[k][a];
+      }
     }
-    const Scalar xs2[2][2] = {{xs[0][0], xs[0][1]}, {xs[1][0], xs[1][1]}};
-    const Scalar ns2[2][2] = {{ns[0][0], ns[0][1]}, {ns[1][0], ns[1][1]}};
-    const Scalar xm2[2][2] = {{xm[0][0], xm[0][1]}, {xm[1][0], xm[1][1]}};
-    if (options.scheme == MortarIntegration::collocation)
-      return integrate_mortar_2d_collocation(xs2, ns2, xm2, options.n_collocation, out);
-    return integrate_mortar_2d(xs2, ns2, xm2, options.n_gauss, out);
+    slave.status = MortarStatus::ok;
+    return slave.status;
+  }
+
+  /// \brief True if the master face, projected on the slave's auxiliary plane, has a bounding
+  /// box separated from the slave's by more than mortar_3d_reject_tolerance · (pair size).
+  template <class Scalar>
+  KOKKOS_INLINE_FUNCTION static bool separated(const SlaveFace<Scalar>& slave, int n_master,
+                                               const Scalar xm[max_face_nodes][3]) {
+    Scalar lo[2], hi[2];
+    for (int l = 0; l < n_master; ++l) {
+      Scalar y[2];
+      project_on_plane(slave.plane, xm[l], y);
+      for (int a = 0; a < 2; ++a) {
+        if (l == 0 || y[a] < lo[a]) lo[a] = y[a];
+        if (l == 0 || y[a] > hi[a]) hi[a] = y[a];
+      }
+    }
+    Scalar size = 0.0;
+    for (int a = 0; a < 2; ++a) {
+      const Scalar ext =
+          (hi[a] > slave.hi[a] ? hi[a] : slave.hi[a]) - (lo[a] < slave.lo[a] ? lo[a] : slave.lo[a]);
+      size = ext > size ? ext : size;
+    }
+    const Scalar gap = mortar_3d_reject_tolerance * size;
+    for (int a = 0; a < 2; ++a)
+      if (lo[a] > slave.hi[a] + gap || hi[a] < slave.lo[a] - gap) return true;
+    return false;
+  }
+
+  /// TRI3/QUAD4 × TRI3/QUAD4 pair, exact (integrate_mortar_3d_dual) or collocation with
+  /// k = ⌊√n_collocation⌋ points per direction (integrate_mortar_3d_collocation).
+  template <class Scalar>
+  KOKKOS_INLINE_FUNCTION static MortarStatus integrate(const SlaveFace<Scalar>& slave, int n_master,
+                                                       const Scalar xm[max_face_nodes][3],
+                                                       const MortarOptions& options,
+                                                       MortarPairResult<Scalar>& out) {
+    detail3d::reset_pair_result(slave.n_nodes, n_master, out);
+    if (slave.status != MortarStatus::ok || (n_master != 3 && n_master != 4))
+      return MortarStatus::degenerate;
+    if (separated(slave, n_master, xm)) return MortarStatus::no_overlap;
+    if (options.scheme == MortarIntegration::collocation) {
+      int k = 1;
+      while ((k + 1) * (k + 1) <= options.n_collocation) ++k;
+      return integrate_mortar_3d_collocation(slave.n_nodes, slave.xs, slave.ns, n_master, xm, k,
+                                             out);
+    }
+    return integrate_mortar_3d_dual(slave.n_nodes, slave.xs, slave.A, n_master, xm, out);
+  }
+
+  /// One pair from padded (max_face_nodes × 3) arrays (prepare + integrate).
+  template <class Scalar>
+  KOKKOS_INLINE_FUNCTION static MortarStatus integrate(
+      int n_slave, const Scalar xs[max_face_nodes][3], const Scalar ns[max_face_nodes][3],
+      int n_master, const Scalar xm[max_face_nodes][3], const MortarOptions& options,
+      MortarPairResult<Scalar>& out) {
+    SlaveFace<Scalar> slave;
+    prepare(n_slave, xs, ns, options, slave);
+    return integrate(slave, n_master, xm, options, out);
   }
 };
 
@@ -89,6 +233,7 @@ MortarStatus mortar_integrate(
   Kokkos::parallel_reduce(
       MortarPairKernel<Dim>::label, Kokkos::RangePolicy<ExecSpace>(space, 0, n_s),
       KOKKOS_LAMBDA(const int s, int& worst) {
+        using Kernel = MortarPairKernel<Dim>;
         double xs[max_face_nodes][3], ns[max_face_nodes][3], xm[max_face_nodes][3];
         const int n_slave = gather_face_coordinates(slave_faces, s, coords, xs);
         gather_face_coordinates(slave_faces, s, normals, ns);
@@ -97,10 +242,12 @@ MortarStatus mortar_integrate(
           worst = static_cast<int>(MortarStatus::capacity_exceeded);
           return;
         }
+        typename Kernel::template SlaveFace<double> slave;
+        Kernel::prepare(n_slave, xs, ns, options, slave);
         for (int c = 0; c < n_cand && c < max_pair_candidates; ++c) {
           const int n_master = gather_face_coordinates(master_faces, candidates(s, c), coords, xm);
-          const MortarStatus st = MortarPairKernel<Dim>::integrate(
-              n_slave, xs, ns, n_master, xm, options, results(pair_offsets(s) + c));
+          const MortarStatus st =
+              Kernel::integrate(slave, n_master, xm, options, results(pair_offsets(s) + c));
           const int code = st == MortarStatus::no_overlap ? 0 : static_cast<int>(st);
           worst = code > worst ? code : worst;
         }
@@ -138,6 +285,33 @@ inline MortarStatus mortar_integrate_2d(
     Kokkos::View<const int*> pair_offsets, const MortarOptions& options,
     Kokkos::View<MortarPairResult<double>*> results) {
   return mortar_integrate_2d(Kokkos::DefaultExecutionSpace(), slave_faces, master_faces, coords,
+                             normals, n_candidates, candidates, pair_offsets, options, results);
+}
+
+/// 3D launch ("grout::mortar_integrate<3D>") on an explicit execution space.
+template <class ExecSpace>
+MortarStatus mortar_integrate_3d(
+    const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
+    Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
+    Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
+    Kokkos::View<const double**, typename ExecSpace::memory_space> normals,
+    Kokkos::View<const int*, typename ExecSpace::memory_space> n_candidates,
+    Kokkos::View<const int**, typename ExecSpace::memory_space> candidates,
+    Kokkos::View<const int*, typename ExecSpace::memory_space> pair_offsets,
+    const MortarOptions& options,
+    Kokkos::View<MortarPairResult<double>*, typename ExecSpace::memory_space> results) {
+  return mortar_integrate<3>(space, slave_faces, master_faces, coords, normals, n_candidates,
+                             candidates, pair_offsets, options, results);
+}
+
+/// 3D launch on the default execution space.
+inline MortarStatus mortar_integrate_3d(
+    Kokkos::View<const int**> slave_faces, Kokkos::View<const int**> master_faces,
+    Kokkos::View<const double**> coords, Kokkos::View<const double**> normals,
+    Kokkos::View<const int*> n_candidates, Kokkos::View<const int**> candidates,
+    Kokkos::View<const int*> pair_offsets, const MortarOptions& options,
+    Kokkos::View<MortarPairResult<double>*> results) {
+  return mortar_integrate_3d(Kokkos::DefaultExecutionSpace(), slave_faces, master_faces, coords,
                              normals, n_candidates, candidates, pair_offsets, options, results);
 }
 

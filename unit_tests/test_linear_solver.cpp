@@ -24,7 +24,8 @@ Teuchos::RCP<Matrix> tridiagonal(GO n) {
     if (g > 0) cols.push_back(g - 1), vals.push_back(-1.0);
     cols.push_back(g), vals.push_back(2.5 + 0.001 * g);
     if (g + 1 < n) cols.push_back(g + 1), vals.push_back(-1.0);
-    A->insertGlobalValues(g, Teuchos::ArrayView<const GO>(cols), Teuchos::ArrayView<const double>(vals));
+    A->insertGlobalValues(g, Teuchos::ArrayView<const GO>(cols),
+                          Teuchos::ArrayView<const double>(vals));
   }
   A->fillComplete();
   return A;

@@ -1,0 +1,218 @@
+#include "assembly/contact_mortar.hpp"
+
+#include <Sacado.hpp>
+#include <algorithm>
+
+#include "io/errors.hpp"
+#include "kernels/coarse_search.hpp"
+#include "kernels/mortar_2d.hpp"
+#include "kernels/mortar_3d.hpp"
+#include "kernels/surface_normals.hpp"
+
+namespace grout {
+
+namespace {
+
+using DFad = Sacado::Fad::DFad<double>;
+constexpr int pair_vars_2d = 12;  // slave x (2x2), slave normals (2x2), master x (2x2)
+constexpr int pair_vars_3d = 24;  // slave x (4x3), master x (4x3)
+
+int position_of(const ContactSurface& s, GlobalIndex node) {
+  return int(std::lower_bound(s.nodes.begin(), s.nodes.end(), node) - s.nodes.begin());
+}
+
+// n_j = normalise(Σ_f n_f) over the slave faces f around node j, n_f the unit face normal
+// (Popp et al. 2010, §3.1), differentiated with respect to the positions of the patch nodes.
+SlaveFrame slave_frame(const ContactSurface& s, const std::vector<std::array<double, 3>>& x, int j,
+                       bool derivatives) {
+  const int dim = s.dimension;
+  std::vector<GlobalIndex> patch;
+  for (int f : s.slave_node_faces[j])
+    patch.insert(patch.end(), s.slave.nodes[f].begin(),
+                 s.slave.nodes[f].begin() + s.slave.num_nodes[f]);
+  std::sort(patch.begin(), patch.end());
+  patch.erase(std::unique(patch.begin(), patch.end()), patch.end());
+  const int n_vars = derivatives ? int(patch.size()) * dim : 0;
+
+  DFad n[3] = {0.0, 0.0, 0.0};
+  for (int f : s.slave_node_faces[j]) {
+    DFad xf[max_face_nodes][3];
+    for (int a = 0; a < s.slave.num_nodes[f]; ++a) {
+      const GlobalIndex node = s.slave.nodes[f][a];
+      const int p = int(std::lower_bound(patch.begin(), patch.end(), node) - patch.begin());
+      for (int d = 0; d < 3; ++d) {
+        xf[a][d] = x[position_of(s, node)][d];
+        if (derivatives && d < dim) xf[a][d].diff(p * dim + d, n_vars);
+      }
+    }
+    DFad nf[3];
+    face_normal(dim, s.slave.num_nodes[f], xf, nf);
+    for (int d = 0; d < 3; ++d) n[d] += nf[d];
+  }
+  DFad t[2][3];
+  if (dim == 2) {
+    normalize_vector<2>(n);
+    tangent_2d(n, t[0]);
+  } else {
+    normalize_vector<3>(n);
+    tangents_3d(n, t[0], t[1]);
+  }
+  SlaveFrame frame;
+  auto gradient = [&](const DFad& v, SparseGradient& g) {
+    for (int i = 0; i < v.size(); ++i)
+      if (v.dx(i) != 0.0) g.emplace_back(patch[i / dim] * dim + i % dim, v.dx(i));
+  };
+  for (int d = 0; d < dim; ++d) {
+    frame.n[d] = n[d].val();
+    gradient(n[d], frame.dn[d]);
+    for (int k = 0; k < dim - 1; ++k) {
+      frame.t[k][d] = t[k][d].val();
+      gradient(t[k][d], frame.dt[k][d]);
+    }
+  }
+  return frame;
+}
+
+// Adds the pair derivative of `v` (a Fad over the pair variables) to `out`, chaining the
+// slave-normal variables through the frames' dn.
+template <class Fad>
+void add_pair_gradient(const Fad& v, const std::vector<long long>& var_dof,
+                       const std::vector<std::pair<int, int>>& var_normal,
+                       const std::vector<SlaveFrame>& frames, SparseGradient& out) {
+  for (int i = 0; i < v.size(); ++i) {
+    const double d = v.dx(i);
+    if (d == 0.0) continue;
+    if (var_dof[i] >= 0) {
+      out.emplace_back(var_dof[i], d);
+    } else if (var_normal[i].first >= 0) {
+      for (const auto& [dof, dn] : frames[var_normal[i].first].dn[var_normal[i].second])
+        out.emplace_back(dof, d * dn);
+    }
+  }
+}
+
+template <class Scalar>
+MortarStatus integrate_pair(const ContactSurface& s, int dim, const Scalar xs[4][3],
+                            const Scalar ns[4][3], int n_slave, const Scalar xm[4][3], int n_master,
+                            const ContactMortarOptions& options, MortarPairResult<Scalar>& out) {
+  const bool exact = options.scheme == MortarIntegration::exact;
+  if (dim == 2) {
+    const Scalar xs2[2][2] = {{xs[0][0], xs[0][1]}, {xs[1][0], xs[1][1]}};
+    const Scalar ns2[2][2] = {{ns[0][0], ns[0][1]}, {ns[1][0], ns[1][1]}};
+    const Scalar xm2[2][2] = {{xm[0][0], xm[0][1]}, {xm[1][0], xm[1][1]}};
+    return exact ? integrate_mortar_2d(xs2, ns2, xm2, out)
+                 : integrate_mortar_2d_collocation(xs2, ns2, xm2, options.collocation_points, out);
+  }
+  (void)s;
+  return exact ? integrate_mortar_3d(n_slave, xs, ns, n_master, xm, out)
+               : integrate_mortar_3d_collocation(n_slave, xs, ns, n_master, xm,
+                                                 options.collocation_points, out);
+}
+
+// One (slave face f, master face m) pair: integrate with AD and accumulate D, M.
+template <int NVars>
+void add_pair(const ContactSurface& s, const std::vector<std::array<double, 3>>& x,
+              const ContactMortarOptions& options, int f, int m, ContactMortar& result) {
+  using Fad = Sacado::Fad::SFad<double, NVars>;
+  const int dim = s.dimension;
+  const int n_slave = s.slave.num_nodes[f], n_master = s.master.num_nodes[m];
+  std::vector<long long> var_dof(NVars, -1);
+  std::vector<std::pair<int, int>> var_normal(NVars, {-1, -1});
+  Fad xs[4][3], ns[4][3], xm[4][3];
+  int v = 0;
+  int slave_index[4];
+  for (int a = 0; a < n_slave; ++a) {
+    const GlobalIndex node = s.slave.nodes[f][a];
+    slave_index[a] = s.slave_index.at(node);
+    for (int d = 0; d < 3; ++d) {
+      xs[a][d] = x[position_of(s, node)][d];
+      ns[a][d] = result.frames[slave_index[a]].n[d];
+      if (d < dim) {
+        xs[a][d].diff(v, NVars);
+        var_dof[v++] = node * dim + d;
+      }
+    }
+  }
+  if (dim == 2) {  // the 2D projection follows the slave nodal normals
+    for (int a = 0; a < n_slave; ++a)
+      for (int d = 0; d < dim; ++d) {
+        ns[a][d].diff(v, NVars);
+        var_normal[v++] = {slave_index[a], d};
+      }
+  }
+  for (int b = 0; b < n_master; ++b) {
+    const GlobalIndex node = s.master.nodes[m][b];
+    for (int d = 0; d < 3; ++d) {
+      xm[b][d] = x[position_of(s, node)][d];
+      if (d < dim) {
+        xm[b][d].diff(v, NVars);
+        var_dof[v++] = node * dim + d;
+      }
+    }
+  }
+  MortarPairResult<Fad> pair;
+  const MortarStatus status = integrate_pair(s, dim, xs, ns, n_slave, xm, n_master, options, pair);
+  if (status != MortarStatus::ok) return;  // no overlap (or a harmless far-away candidate)
+  ++result.pairs;
+  for (int j = 0; j < n_slave; ++j) {
+    MortarValue& D = result.D[slave_index[j]];
+    D.value += pair.D[j].val();
+    if (options.derivatives)
+      add_pair_gradient(pair.D[j], var_dof, var_normal, result.frames, D.gradient);
+    for (int l = 0; l < n_master; ++l) {
+      MortarValue& M = result.M[{slave_index[j], s.master.nodes[m][l]}];
+      M.value += pair.M[j][l].val();
+      if (options.derivatives)
+        add_pair_gradient(pair.M[j][l], var_dof, var_normal, result.frames, M.gradient);
+    }
+  }
+}
+
+Kokkos::View<int**> face_view(const ContactSurface& s, const SurfaceFaces& faces) {
+  Kokkos::View<int**> v("grout::contact_faces", faces.size(), max_face_nodes);
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    for (int a = 0; a < max_face_nodes; ++a)
+      v(f, a) = a < faces.num_nodes[f] ? position_of(s, faces.nodes[f][a]) : -1;
+  return v;
+}
+
+}  // namespace
+
+ContactMortar evaluate_contact_mortar(const ContactSurface& s,
+                                      const std::vector<std::array<double, 3>>& x,
+                                      const ContactMortarOptions& options) {
+  ContactMortar result;
+  const int n_slave_nodes = int(s.slave_nodes.size());
+  result.frames.resize(n_slave_nodes);
+  result.D.resize(n_slave_nodes);
+  for (int j = 0; j < n_slave_nodes; ++j)
+    result.frames[j] = slave_frame(s, x, j, options.derivatives);
+
+  // Coarse search on the current positions.
+  const int dim = s.dimension;
+  Kokkos::View<double**> coords("grout::contact_coords", s.nodes.size(), dim);
+  for (std::size_t i = 0; i < s.nodes.size(); ++i)
+    for (int d = 0; d < dim; ++d) coords(i, d) = x[i][d];
+  const auto slave_faces = face_view(s, s.slave);
+  const auto master_faces = face_view(s, s.master);
+  Kokkos::View<int*> n_candidates("grout::n_candidates", s.slave.size());
+  Kokkos::View<int**> candidates("grout::candidates", s.slave.size(), max_pair_candidates);
+  const MortarStatus found = coarse_search(slave_faces, master_faces, coords, options.search_factor,
+                                           n_candidates, candidates);
+  if (found == MortarStatus::capacity_exceeded) {
+    throw std::runtime_error("contact '" + s.name + "': more than " +
+                             std::to_string(max_pair_candidates) +
+                             " master candidates for a slave face (search boxes too large?)");
+  }
+  for (std::size_t f = 0; f < s.slave.size(); ++f) {
+    for (int c = 0; c < n_candidates(f); ++c) {
+      if (dim == 2)
+        add_pair<pair_vars_2d>(s, x, options, int(f), candidates(f, c), result);
+      else
+        add_pair<pair_vars_3d>(s, x, options, int(f), candidates(f, c), result);
+    }
+  }
+  return result;
+}
+
+}  // namespace grout

@@ -1,0 +1,52 @@
+#pragma once
+// The mortar quantities of one contact interface at the current configuration, with their
+// exact derivatives with respect to the displacement dofs (DESIGN.md §2, "Linearisation"):
+// slave nodal normals/tangents n_j, τ_j, the dual-mortar D_jj and M_jl summed over all
+// (slave, master) pairs. The pair integrals are differentiated with Sacado forward AD
+// through the kernels (integrate_mortar_2d/3d) with respect to the pair's nodal positions
+// and, in 2D, the slave nodal normals; the normals with respect to the positions of their
+// node's surface patch; the chain rule joins the two.
+
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "assembly/contact_surface.hpp"
+
+namespace grout {
+
+/// Derivative of a scalar with respect to global dofs (node * dim + component); entries
+/// may repeat (they add up).
+using SparseGradient = std::vector<std::pair<long long, double>>;
+
+struct MortarValue {
+  double value = 0.0;
+  SparseGradient gradient;
+};
+
+struct SlaveFrame {
+  double n[3] = {0.0, 0.0, 0.0};   ///< unit averaged normal, outward from the slave body
+  double t[2][3] = {};             ///< unit tangents (one in 2D)
+  SparseGradient dn[3], dt[2][3];  ///< their derivatives
+};
+
+struct ContactMortarOptions {
+  MortarIntegration scheme = MortarIntegration::exact;
+  int collocation_points = 20;  ///< per slave element (2D) or per direction (3D)
+  double search_factor = 0.5;   ///< bounding boxes grown by this fraction of their size
+  bool derivatives = true;
+};
+
+struct ContactMortar {
+  std::vector<SlaveFrame> frames;                        ///< per slave node
+  std::vector<MortarValue> D;                            ///< D_jj per slave node
+  std::map<std::pair<int, GlobalIndex>, MortarValue> M;  ///< (slave node index, master node)
+  int pairs = 0;                                         ///< pairs with a non-empty overlap
+};
+
+/// Evaluate at positions x (x[i] = position of surface.nodes[i], 3 components).
+ContactMortar evaluate_contact_mortar(const ContactSurface& surface,
+                                      const std::vector<std::array<double, 3>>& x,
+                                      const ContactMortarOptions& options);
+
+}  // namespace grout

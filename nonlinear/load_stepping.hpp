@@ -1,0 +1,38 @@
+#pragma once
+// Quasi-static load/time stepping with automatic cut-back (DESIGN.md §4).
+
+#include <functional>
+
+#include "nonlinear/mechanics_problem.hpp"
+#include "nonlinear/newton.hpp"
+
+namespace grout {
+
+struct SteppingOptions {
+  double end_time = 1.0;
+  int steps = 1;
+  int max_cuts = 6;  ///< halvings of the step size before giving up
+};
+
+/// What a converged step hands to the output.
+struct ConvergedStep {
+  int step = 0;
+  double time = 0.0;
+  const NewtonReport* newton = nullptr;
+  const Vector* state = nullptr;  ///< (u, λ)
+};
+
+/// Thrown when a step fails after every cut-back: names the time and the reason.
+class ConvergenceError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Steps from t = 0 to end_time in `steps` equal increments. A step whose Newton solve fails
+/// is retried with half the increment, up to max_cuts times; then ConvergenceError. Every
+/// converged step goes to `on_step` at once (the caller writes and flushes it).
+void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const NewtonOptions& newton,
+                      const SteppingOptions& stepping,
+                      const std::function<void(const ConvergedStep&)>& on_step);
+
+}  // namespace grout

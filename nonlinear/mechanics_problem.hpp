@@ -1,0 +1,80 @@
+#pragma once
+// The quasi-static mechanics problem F(u, λ) = 0: the small-strain solid plus the contact
+// interfaces of the input, with slave multipliers λ as extra unknowns (DESIGN.md §2).
+//
+// Unknowns: u (node * dim + c, the solid's dofs) then, per interface, λ_j ∈ R^dim for each
+// slave node j. Residual rows:
+//   u rows:   f_int(u) − f_ext(t) + f_c,   f_c = Σ_j D_jj λ_j on slave node j,
+//                                          −Σ_j M_jl λ_j on master node l;
+//   λ rows:   frictionless: C_n = λ_n − max(0, λ_n − ĉ g_j) (active: ĉ g_j, inactive: λ_n),
+//             with g_j = g̃_j / D_jj the nodal gap, plus τ_j·λ_j = 0;
+//             tied: ĉ (D_jj u¹_j − Σ_l M_jl u²_l) / D_jj = 0 with D, M of the reference
+//             configuration.
+// ĉ = E/h (harmonic mean of the two bodies' Young's moduli over the mean slave face size)
+// unless the input sets c_n; the solution does not depend on it. Prescribed dofs keep their
+// values: F = 0 there and their rows/columns of J are eliminated.
+
+#include <memory>
+#include <vector>
+
+#include "assembly/contact_mortar.hpp"
+#include "assembly/solid_problem.hpp"
+#include "nonlinear/nonlinear_problem.hpp"
+
+namespace grout {
+
+/// Nodal contact results of the last residual evaluation (global node arrays, every rank).
+struct ContactFields {
+  std::vector<double> pressure;         ///< λ_n = n·λ, > 0 in compression
+  std::vector<double> gap;              ///< g̃_j / D_jj
+  std::vector<double> status;           ///< 0 open, 1 stick (tied), 2 slip (frictionless active)
+  std::vector<std::vector<double>> lm;  ///< λ components
+  int active_nodes = 0;
+};
+
+class MechanicsProblem : public NonlinearProblem {
+ public:
+  MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, const Input& input);
+  ~MechanicsProblem() override;
+
+  Teuchos::RCP<const Map> map() const override { return map_; }
+  bool residual(const Vector& x, Vector& F) override;
+  bool jacobian(const Vector& x, Teuchos::RCP<Matrix>& J) override;
+  int active_set_size() const override { return active_size_; }
+  int active_set_changes() const override { return active_changes_; }
+
+  /// Set the load and prescribed displacements of time t, and put the prescribed values
+  /// into x (the initial guess of the step).
+  void begin_step(double t, Vector& x);
+  /// The displacement part of x, on the solid's owned map.
+  void displacement(const Vector& x, Vector& u) const;
+  /// f_int − f_ext + f_c on the prescribed dofs at the last residual evaluation, 0 elsewhere.
+  const Vector& reactions() const { return *reaction_; }
+  /// Contact results at the last residual evaluation (empty without contact).
+  ContactFields contact_fields() const;
+  bool has_contact() const { return !interfaces_.empty(); }
+
+ private:
+  struct Interface;
+  void evaluate_interface(Interface& c, const Vector& x_gathered, Vector& F);
+  void add_entry(GO row, GO col, double value);
+
+  const SolidProblem& solid_;
+  const Mesh& mesh_;
+  const Input& input_;
+  int dim_ = 2;
+  GO num_u_ = 0;  ///< global displacement dofs
+  int num_owned_u_ = 0;
+  Teuchos::RCP<const Map> map_;
+  std::vector<std::unique_ptr<Interface>> interfaces_;
+  Teuchos::RCP<const Map> gathered_map_;  ///< every dof any interface needs, on every rank
+  Teuchos::RCP<Import> gather_;
+  Teuchos::RCP<Vector> u_, f_int_, f_ext_, reaction_;
+  Teuchos::RCP<Matrix> K_solid_;
+  std::vector<double> prescribed_;  ///< per global u dof, NaN where free
+  std::vector<GO> entry_rows_, entry_cols_;
+  std::vector<double> entry_values_;
+  int active_size_ = 0, active_changes_ = 0;
+};
+
+}  // namespace grout

@@ -1,0 +1,256 @@
+// Newton through NOX: a "Line Search Based" solver on a NoxGroup, with the status tests of
+// DESIGN.md §2 (residual tolerance AND unchanged active set, OR a failure test) and one
+// log line per iteration from a NOX::Observer.
+
+#include "nonlinear/newton.hpp"
+
+#include <NOX_Solver_Factory.H>
+#include <NOX_Solver_Generic.H>
+#include <NOX_StatusTest_Combo.H>
+#include <NOX_StatusTest_FiniteValue.H>
+#include <NOX_StatusTest_MaxIters.H>
+#include <NOX_StatusTest_NormF.H>
+#include <NOX_StatusTest_NormUpdate.H>
+#include <NOX_StatusTest_RelativeNormF.H>
+#include <NOX_Utils.H>
+#include <NOX_Observer.hpp>
+#include <cstdio>
+#include <sstream>
+
+#include "io/errors.hpp"
+#include "nonlinear/nox_group.hpp"
+
+namespace grout {
+
+// ---------------------------------------------------------------------------- options
+
+namespace {
+
+const std::string newton_key_prefix = "grout/solver/Newton/";
+
+double get_number(const Teuchos::ParameterList& list, const std::string& key) {
+  if (list.isType<double>(key)) return list.get<double>(key);
+  if (list.isType<int>(key)) return list.get<int>(key);
+  throw InputError(newton_key_prefix + key + ": expected a number");
+}
+
+double get_tolerance(const Teuchos::ParameterList& list, const std::string& key) {
+  const double value = get_number(list, key);
+  if (!(value >= 0.0)) {
+    throw InputError(newton_key_prefix + key + ": must be >= 0, got " + std::to_string(value));
+  }
+  return value;
+}
+
+}  // namespace
+
+NewtonOptions newton_options_from(const Teuchos::ParameterList& solver_sublist) {
+  NewtonOptions options;
+  if (solver_sublist.isParameter("Newton")) {
+    if (!solver_sublist.isSublist("Newton")) {
+      throw InputError("grout/solver/Newton: expected a map of Newton options");
+    }
+    const Teuchos::ParameterList& list = solver_sublist.sublist("Newton");
+    for (auto it = list.begin(); it != list.end(); ++it) {
+      const std::string& key = list.name(it);
+      if (key == "max_iterations") {
+        if (!list.isType<int>(key) || list.get<int>(key) < 0) {
+          throw InputError(newton_key_prefix + key + ": expected an integer >= 0");
+        }
+        options.max_iterations = list.get<int>(key);
+      } else if (key == "absolute_tolerance") {
+        options.absolute_tolerance = get_tolerance(list, key);
+      } else if (key == "relative_tolerance") {
+        options.relative_tolerance = get_tolerance(list, key);
+      } else if (key == "update_tolerance") {
+        options.update_tolerance = get_tolerance(list, key);
+      } else if (key == "line_search") {
+        const std::string* value = list.getPtr<std::string>(key);
+        if (!value || (*value != "Full Step" && *value != "Backtrack" && *value != "Polynomial" &&
+                       *value != "More'-Thuente")) {
+          throw InputError(newton_key_prefix + key +
+                           ": expected one of \"Full Step\", \"Backtrack\", \"Polynomial\", "
+                           "\"More'-Thuente\"");
+        }
+        options.line_search = *value;
+      } else if (key == "require_unchanged_active_set") {
+        if (!list.isType<bool>(key))
+          throw InputError(newton_key_prefix + key + ": expected a bool");
+        options.require_unchanged_active_set = list.get<bool>(key);
+      } else {
+        throw InputError("unknown key " + newton_key_prefix + key +
+                         " (known: max_iterations, absolute_tolerance, relative_tolerance, "
+                         "update_tolerance, line_search, require_unchanged_active_set)");
+      }
+    }
+  }
+  if (solver_sublist.isSublist("NOX")) options.nox = solver_sublist.sublist("NOX");
+  return options;
+}
+
+// ---------------------------------------------------------------------------- NOX pieces
+
+namespace {
+
+/// Converged iff the problem's active set did not change at the current iterate
+/// (semi-smooth Newton, DESIGN.md §2: the residual test alone is not enough).
+class ActiveSetUnchanged : public NOX::StatusTest::Generic {
+ public:
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver,
+                                          NOX::StatusTest::CheckType type) override {
+    if (type == NOX::StatusTest::None) {
+      status_ = NOX::StatusTest::Unevaluated;
+      return status_;
+    }
+    changes_ = dynamic_cast<const NoxGroup&>(solver.getSolutionGroup()).active_set_changes();
+    status_ = changes_ == 0 ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
+    return status_;
+  }
+  NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  std::ostream& print(std::ostream& stream, int indent = 0) const override {
+    stream << std::string(indent, ' ') << status_ << "Active set changes = " << changes_
+           << " (must be 0)\n";
+    return stream;
+  }
+
+ private:
+  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
+  int changes_ = -1;
+};
+
+/// Records the report's histories after every iteration and prints the log line on
+/// rank 0. Norms are collective: computed on all ranks, printed on one.
+class IterationLog : public NOX::Observer {
+ public:
+  IterationLog(NewtonReport& report, const NewtonContext& context, const std::string& prefix,
+               bool verbose, bool root)
+      : report_(report), context_(context), prefix_(prefix), print_(verbose && root) {}
+
+  void runPostIterate(const NOX::Solver::Generic& solver) override {
+    const int k = solver.getNumIterations();
+    if (report_.residual_history.empty() && k > 0) {
+      record(0, solver.getPreviousSolutionGroup(), 0.0, 0);
+    }
+    if (k < int(report_.residual_history.size())) return;  // no new iterate (failed step)
+    const auto& group = solver.getSolutionGroup();
+    double dx = 0.0;
+    if (k > 0) {
+      auto step = group.getX().clone(NOX::DeepCopy);
+      step->update(-1.0, solver.getPreviousSolutionGroup().getX(), 1.0);
+      dx = step->norm(NOX::Abstract::Vector::TwoNorm);
+    }
+    record(k, group, dx, k > 0 ? context_.last_linear_iterations : 0);
+  }
+
+  /// After a solve that NOX abandoned by throwing before any iteration ended (e.g. no
+  /// Jacobian at x0): the history still starts with iteration 0.
+  void finish(const NoxGroup& group) {
+    if (report_.residual_history.empty() && group.isF()) record(0, group, 0.0, 0);
+  }
+
+ private:
+  void record(int k, const NOX::Abstract::Group& base, double dx, int linear) {
+    const auto& group = dynamic_cast<const NoxGroup&>(base);
+    report_.residual_history.push_back(group.getNormF());
+    report_.active_set_history.push_back(group.active_set_size());
+    report_.active_change_history.push_back(group.active_set_changes());
+    if (!print_) return;
+    std::printf("%s newton %d  |F| = %.3e  |dx| = %.3e  active %d (%d changed)  linear %d\n",
+                prefix_.c_str(), k, group.getNormF(), dx, group.active_set_size(),
+                group.active_set_changes(), linear);
+    std::fflush(stdout);
+  }
+
+  NewtonReport& report_;
+  const NewtonContext& context_;
+  std::string prefix_;
+  bool print_;
+};
+
+Teuchos::RCP<Teuchos::ParameterList> nox_parameters(const NewtonOptions& options, int rank,
+                                                    const Teuchos::RCP<NOX::Observer>& observer) {
+  auto params = Teuchos::rcp(new Teuchos::ParameterList("NOX"));
+  params->set("Nonlinear Solver", "Line Search Based");
+  params->sublist("Line Search").set("Method", options.line_search);
+  auto& direction = params->sublist("Direction");
+  direction.set("Method", "Newton");
+  // A failed linear solve must stop Newton, not be "rescued" with a stale direction.
+  direction.sublist("Newton").set("Rescue Bad Newton Solve", false);
+  auto& printing = params->sublist("Printing");
+  printing.set("Output Information", static_cast<int>(NOX::Utils::Error));
+  printing.set("MyPID", rank);
+  // Evaluate every test every time, so that the report can tell which one failed.
+  params->sublist("Solver Options").set("Status Test Check Type", "Complete");
+  params->setParameters(options.nox);
+  params->sublist("Solver Options").set("Observer", observer);
+  return params;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------- solve
+
+NewtonReport solve_newton(NonlinearProblem& problem, Vector& x, LinearSolver& linear,
+                          const NewtonOptions& options, const std::string& log_prefix) {
+  using namespace NOX::StatusTest;
+  const int rank = problem.map()->getComm()->getRank();
+  NewtonReport report;
+  auto context = Teuchos::rcp(new NewtonContext(problem, linear));
+  auto group = Teuchos::rcp(new NoxGroup(context, x));
+
+  // converged = (|F| <= abs OR |F|/|F0| < rel) AND [|dx|_inf < upd] AND [active set unchanged]
+  auto residual_small = Teuchos::rcp(new Combo(Combo::OR));
+  residual_small->addStatusTest(Teuchos::rcp(
+      new NormF(options.absolute_tolerance, NOX::Abstract::Vector::TwoNorm, NormF::Unscaled)));
+  residual_small->addStatusTest(Teuchos::rcp(new RelativeNormF(options.relative_tolerance)));
+  auto converged = Teuchos::rcp(new Combo(Combo::AND));
+  converged->addStatusTest(residual_small);
+  if (options.update_tolerance > 0.0) {
+    converged->addStatusTest(Teuchos::rcp(new NormUpdate(
+        options.update_tolerance, NOX::Abstract::Vector::MaxNorm, NormUpdate::Unscaled)));
+  }
+  if (options.require_unchanged_active_set) {
+    converged->addStatusTest(Teuchos::rcp(new ActiveSetUnchanged));
+  }
+  auto finite = Teuchos::rcp(new FiniteValue);
+  auto max_iterations = Teuchos::rcp(new MaxIters(options.max_iterations));
+  auto tests = Teuchos::rcp(new Combo(Combo::OR));
+  tests->addStatusTest(converged);  // first: converging on the last iteration counts
+  tests->addStatusTest(finite);
+  tests->addStatusTest(max_iterations);
+
+  auto observer =
+      Teuchos::rcp(new IterationLog(report, *context, log_prefix, options.verbose, rank == 0));
+  auto solver = NOX::Solver::buildSolver(group, tests, nox_parameters(options, rank, observer));
+  std::string thrown;
+  StatusType status = Unconverged;
+  try {
+    status = solver->solve();
+  } catch (const std::exception& e) {
+    thrown = e.what();
+  } catch (const char* e) {  // NOX throws "NOX Error" as a string literal
+    thrown = e;
+  }
+
+  observer->finish(*group);
+  report.iterations = solver->getNumIterations();
+  report.linear_iterations = context->total_linear_iterations;
+  report.converged = thrown.empty() && status == Converged;
+  if (report.converged) {
+    report.reason = "converged";
+  } else if (finite->getStatus() == Failed) {
+    report.reason = group->residual_failed() ? "residual evaluation failed" : "non-finite residual";
+  } else if (max_iterations->getStatus() == Failed) {
+    report.reason = "max iterations (" + std::to_string(options.max_iterations) + ")";
+  } else if (!context->failure.empty()) {
+    report.reason = context->failure;
+  } else if (!thrown.empty()) {
+    report.reason = "NOX error: " + thrown;
+  } else {
+    report.reason = "line search failed";
+  }
+  Tpetra::deep_copy(x, NoxTpetraVector::tpetra(group->getX()));
+  return report;
+}
+
+}  // namespace grout

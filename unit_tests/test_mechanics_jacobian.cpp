@@ -1,0 +1,99 @@
+// The Jacobian of the mechanics problem with frictionless contact on the current geometry
+// (all linearisation terms: normals, D, M, projections) against central finite differences
+// of the residual, in 2D and 3D, on 1 and 2 ranks.
+
+#include <gtest/gtest.h>
+
+#include <Tpetra_Core.hpp>
+#include <random>
+
+#include "assembly/solid_problem.hpp"
+#include "io/mesh_generators.hpp"
+#include "nonlinear/mechanics_problem.hpp"
+
+namespace grout {
+namespace {
+
+Input contact_input(int dim) {
+  Input input;
+  input.file = "test.yaml";
+  input.model.dimension = dim;
+  for (const char* block : {"lower", "upper"}) {
+    MaterialInput m;
+    m.name = block;
+    m.block = block;
+    m.youngs_modulus = std::string(block) == "lower" ? 1000.0 : 3000.0;
+    m.poissons_ratio = 0.3;
+    input.materials.push_back(m);
+  }
+  ContactInput c;
+  c.name = "interface";
+  c.slave = "upper_bottom";
+  c.master = "lower_top";
+  c.geometry = ContactGeometry::current;
+  input.contact.push_back(c);
+  return input;
+}
+
+// Random displacements that press the upper body into the lower one (so most slave nodes
+// are active) and random multipliers.
+void random_state(const MechanicsProblem& problem, const Mesh& mesh, Vector& x, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> r(-1.0, 1.0);
+  const int dim = mesh.dimension;
+  const auto& map = *problem.map();
+  auto xv = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  const GO n_u = GO(mesh.num_nodes()) * dim;
+  for (std::size_t i = 0; i < map.getNodeNumElements(); ++i) {
+    const GO g = map.getGlobalElement(LO(i));
+    std::mt19937 local(unsigned(g) * 7919u + seed);  // same value on any rank count
+    const double v = r(local);
+    if (g < n_u) {
+      const GO node = g / dim;
+      const bool upper_axis = g % dim == dim - 1;
+      const double height = mesh.coordinates[node * dim + dim - 1];
+      xv(i, 0) = 0.01 * v - (upper_axis && height > 0.99 ? 0.01 : 0.0);
+    } else {
+      xv(i, 0) = 5.0 + v;  // compressive multipliers
+    }
+  }
+  (void)rng;
+}
+
+void check_jacobian(int dim) {
+  const auto comm = Tpetra::getDefaultComm();
+  const Mesh mesh = dim == 2 ? two_block_mesh_2d(3, 2, 4, 2) : two_block_mesh_3d(2, 2, 1, 3, 2, 1);
+  const Input input = contact_input(dim);
+  const SolidProblem solid(mesh, input, comm);
+  MechanicsProblem problem(solid, mesh, input);
+  Vector x(problem.map()), F(problem.map()), Fp(problem.map()), Fm(problem.map());
+  Vector dx(problem.map()), JdX(problem.map()), xp(problem.map()), xm(problem.map());
+  random_state(problem, mesh, x, 3);
+  ASSERT_TRUE(problem.residual(x, F));
+  const int active = problem.active_set_size();
+  EXPECT_GT(active, 0);
+  Teuchos::RCP<Matrix> J;
+  ASSERT_TRUE(problem.jacobian(x, J));
+  random_state(problem, mesh, dx, 11);
+  const double h = 1e-7;
+  xp.update(1.0, x, h, dx, 0.0);
+  xm.update(1.0, x, -h, dx, 0.0);
+  ASSERT_TRUE(problem.residual(xp, Fp));
+  ASSERT_EQ(problem.active_set_size(), active);
+  ASSERT_TRUE(problem.residual(xm, Fm));
+  ASSERT_EQ(problem.active_set_size(), active);
+  J->apply(dx, JdX);
+  Fp.update(-1.0 / (2 * h), Fm, 1.0 / (2 * h));  // central difference
+  Fp.update(-1.0, JdX, 1.0);
+  EXPECT_LT(Fp.norm2() / JdX.norm2(), 1e-6) << "|J dx - FD| / |J dx|";
+}
+
+TEST(MechanicsJacobian, MatchesFiniteDifferences2D) {
+  check_jacobian(2);
+}
+TEST(MechanicsJacobian, MatchesFiniteDifferences3D) {
+  check_jacobian(3);
+}
+
+}  // namespace
+}  // namespace grout

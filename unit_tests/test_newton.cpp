@@ -1,0 +1,328 @@
+// Newton through NOX (nonlinear/newton.hpp) on small distributed systems with known roots,
+// on 1 and 2 ranks: quadratic convergence, a Jacobian graph that changes every iteration,
+// the active-set-unchanged test, failure reasons, a line search, option parsing.
+
+#include <gtest/gtest.h>
+
+#include <Tpetra_Core.hpp>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "io/errors.hpp"
+#include "nonlinear/newton.hpp"
+
+namespace grout {
+namespace {
+
+const double nan = std::numeric_limits<double>::quiet_NaN();
+
+/// F(x) = L x + x³ − b, L = tridiag(−1, 3, −1), root x*ᵢ = 1 + ½ sin(i). Knobs make it
+/// change its Jacobian graph, report active-set changes, fail or return NaN.
+class CubicProblem : public NonlinearProblem {
+ public:
+  explicit CubicProblem(GO n = 40)
+      : map_(Teuchos::rcp(new Map(n, 0, Tpetra::getDefaultComm()))), b_(map_), x_star_(map_) {
+    auto xs = x_star_.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (LO i = 0; i < LO(xs.extent(0)); ++i) xs(i, 0) = 1.0 + 0.5 * std::sin(double(gid(i)));
+    L_ = tridiagonal(nullptr);
+    Vector x3(map_);
+    x3.elementWiseMultiply(1.0, x_star_, x_star_, 0.0);
+    Vector cube(map_);
+    cube.elementWiseMultiply(1.0, x3, x_star_, 0.0);
+    L_->apply(x_star_, b_);
+    b_.update(1.0, cube, 1.0);
+  }
+
+  Teuchos::RCP<const Map> map() const override { return map_; }
+  const Vector& root() const { return x_star_; }
+
+  bool residual(const Vector& x, Vector& F) override {
+    ++residual_calls;
+    L_->apply(x, F);
+    auto f = F.getLocalViewHost(Tpetra::Access::ReadWrite);
+    const auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+    const auto bv = b_.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (LO i = 0; i < LO(f.extent(0)); ++i) f(i, 0) += std::pow(xv(i, 0), 3) - bv(i, 0);
+    const int rank = map_->getComm()->getRank();
+    const int last = map_->getComm()->getSize() - 1;
+    if (nan_from_call > 0 && residual_calls >= nan_from_call && rank == last) f(0, 0) = nan;
+    // Fails on rank 0 only: the solver must agree on all ranks.
+    if (fail_from_call > 0 && residual_calls >= fail_from_call && rank == 0) return false;
+    return true;
+  }
+
+  bool jacobian(const Vector& x, Teuchos::RCP<Matrix>& J) override {
+    ++jacobian_calls;
+    J = tridiagonal(&x);  // a new matrix (and graph) every call (collective)
+    // Fails on rank 0 only: the solver must agree on all ranks.
+    return !(jacobian_calls == fail_jacobian_call && map_->getComm()->getRank() == 0);
+  }
+
+  int active_set_size() const override { return 7; }
+  int active_set_changes() const override { return residual_calls <= changes_until_call ? 2 : 0; }
+
+  int residual_calls = 0, jacobian_calls = 0;
+  int changes_until_call = 0;  ///< active_set_changes() = 2 up to this residual call
+  int nan_from_call = -1, fail_from_call = -1, fail_jacobian_call = -1;
+  bool changing_graph = false;  ///< add a stored zero at a column that moves every call
+
+ private:
+  GO gid(LO i) const { return map_->getGlobalElement(i); }
+
+  // L (x null) or J(x) = L + diag(3x²).
+  Teuchos::RCP<Matrix> tridiagonal(const Vector* x) const {
+    const GO n = GO(map_->getGlobalNumElements());
+    auto A = Teuchos::rcp(new Matrix(map_, 4));
+    for (LO i = 0; i < LO(map_->getNodeNumElements()); ++i) {
+      const GO g = gid(i);
+      const double xi = x ? x->getLocalViewHost(Tpetra::Access::ReadOnly)(i, 0) : 0.0;
+      std::vector<GO> cols{g};
+      std::vector<double> vals{3.0 + 3.0 * xi * xi};
+      if (g > 0) cols.push_back(g - 1), vals.push_back(-1.0);
+      if (g + 1 < n) cols.push_back(g + 1), vals.push_back(-1.0);
+      const GO extra = (g + 2 + 5 * jacobian_calls) % n;
+      if (changing_graph && std::abs(extra - g) > 1) cols.push_back(extra), vals.push_back(0.0);
+      A->insertGlobalValues(g, Teuchos::ArrayView<const GO>(cols),
+                            Teuchos::ArrayView<const double>(vals));
+    }
+    A->fillComplete();
+    return A;
+  }
+
+  Teuchos::RCP<const Map> map_;
+  Teuchos::RCP<Matrix> L_;
+  Vector b_, x_star_;
+};
+
+/// F(x)ᵢ = atan(xᵢ): full Newton from 2 overshoots and diverges; a line search converges.
+class AtanProblem : public NonlinearProblem {
+ public:
+  AtanProblem() : map_(Teuchos::rcp(new Map(6, 0, Tpetra::getDefaultComm()))) {}
+  Teuchos::RCP<const Map> map() const override { return map_; }
+  bool residual(const Vector& x, Vector& F) override {
+    auto f = F.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    const auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (LO i = 0; i < LO(f.extent(0)); ++i) f(i, 0) = std::atan(xv(i, 0));
+    return true;
+  }
+  bool jacobian(const Vector& x, Teuchos::RCP<Matrix>& J) override {
+    J = Teuchos::rcp(new Matrix(map_, 1));
+    const auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (LO i = 0; i < LO(xv.extent(0)); ++i) {
+      const GO g = map_->getGlobalElement(i);
+      J->insertGlobalValues(g, Teuchos::tuple<GO>(g),
+                            Teuchos::tuple<double>(1.0 / (1.0 + xv(i, 0) * xv(i, 0))));
+    }
+    J->fillComplete();
+    return true;
+  }
+
+ private:
+  Teuchos::RCP<const Map> map_;
+};
+
+// Quiet unless GROUT_TEST_VERBOSE is set (then every solve prints its Newton log).
+NewtonOptions quiet_options() {
+  NewtonOptions options;
+  options.verbose = std::getenv("GROUT_TEST_VERBOSE") != nullptr;
+  return options;
+}
+
+NewtonReport solve(NonlinearProblem& problem, Vector& x, const NewtonOptions& options) {
+  LinearSolver linear(Teuchos::ParameterList(), "test");
+  const NewtonReport report = solve_newton(problem, x, linear, options, "  test");
+  if (options.verbose && problem.map()->getComm()->getRank() == 0) {
+    std::printf("  -> %s after %d iterations\n", report.reason.c_str(), report.iterations);
+  }
+  return report;
+}
+
+double distance(const Vector& a, const Vector& b) {
+  Vector d(a.getMap());
+  d.update(1.0, a, -1.0, b, 0.0);
+  return d.normInf();
+}
+
+TEST(Newton, ConvergesQuadraticallyToTheRoot) {
+  CubicProblem problem;
+  Vector x(problem.map());  // x0 = 0
+  const NewtonReport report = solve(problem, x, quiet_options());
+  ASSERT_TRUE(report.converged) << report.reason;
+  EXPECT_EQ(report.reason, "converged");
+  EXPECT_LT(distance(x, problem.root()), 1e-10);
+  const auto& h = report.residual_history;
+  ASSERT_EQ(int(h.size()), report.iterations + 1);
+  EXPECT_GE(report.linear_iterations, report.iterations);
+  EXPECT_LE(h.back(), 1e-10 * h.front());
+  // |F_{k+1}| <= C |F_k|^2 wherever F_{k+1} is above round-off, and log-ratio -> 2.
+  int checked = 0;
+  for (std::size_t k = 0; k + 1 < h.size(); ++k) {
+    if (h[k] > 1e-1 || h[k + 1] < 1e-13) continue;
+    EXPECT_LE(h[k + 1], 10.0 * h[k] * h[k]) << "iteration " << k + 1;
+    EXPECT_GT(std::log(h[k + 1]) / std::log(h[k]), 1.8) << "iteration " << k + 1;
+    ++checked;
+  }
+  EXPECT_GE(checked, 1);
+}
+
+TEST(Newton, JacobianGraphMayChangeEveryIteration) {
+  CubicProblem problem;
+  problem.changing_graph = true;
+  Vector x(problem.map());
+  const NewtonReport report = solve(problem, x, quiet_options());
+  ASSERT_TRUE(report.converged) << report.reason;
+  EXPECT_GE(problem.jacobian_calls, 3);
+  EXPECT_LT(distance(x, problem.root()), 1e-10);
+}
+
+TEST(Newton, KeepsIteratingWhileTheActiveSetChanges) {
+  CubicProblem problem;
+  problem.changes_until_call = 3;
+  Vector x(problem.map());
+  Tpetra::deep_copy(x, problem.root());  // |F| tiny from the start
+  const NewtonReport report = solve(problem, x, quiet_options());
+  ASSERT_TRUE(report.converged) << report.reason;
+  EXPECT_EQ(report.iterations, 3);
+  EXPECT_EQ(report.active_change_history, (std::vector<int>{2, 2, 2, 0}));
+  EXPECT_EQ(report.active_set_history, (std::vector<int>{7, 7, 7, 7}));
+  for (double r : report.residual_history) EXPECT_LT(r, 1e-12);
+
+  CubicProblem plain;  // without the active-set test, x0 = root is converged at once
+  plain.changes_until_call = 3;
+  Tpetra::deep_copy(x, plain.root());
+  NewtonOptions options = quiet_options();
+  options.require_unchanged_active_set = false;
+  EXPECT_EQ(solve(plain, x, options).iterations, 0);
+}
+
+TEST(Newton, MaxIterationsIsAFailureWithReason) {
+  CubicProblem problem;
+  Vector x(problem.map());
+  NewtonOptions options = quiet_options();
+  options.max_iterations = 2;
+  const NewtonReport report = solve(problem, x, options);
+  EXPECT_FALSE(report.converged);
+  EXPECT_EQ(report.reason, "max iterations (2)");
+  EXPECT_EQ(report.iterations, 2);
+  EXPECT_EQ(report.residual_history.size(), 3u);
+}
+
+TEST(Newton, FailedResidualStopsOnAllRanks) {
+  CubicProblem problem;
+  problem.fail_from_call = 3;
+  Vector x(problem.map());
+  const NewtonReport report = solve(problem, x, quiet_options());
+  EXPECT_FALSE(report.converged);
+  EXPECT_EQ(report.reason, "residual evaluation failed");
+  EXPECT_EQ(report.iterations, 2);
+}
+
+TEST(Newton, NanResidualStopsOnAllRanks) {
+  CubicProblem problem;
+  problem.nan_from_call = 2;
+  Vector x(problem.map());
+  const NewtonReport report = solve(problem, x, quiet_options());
+  EXPECT_FALSE(report.converged);
+  EXPECT_EQ(report.reason, "non-finite residual");
+  EXPECT_EQ(report.iterations, 1);
+}
+
+TEST(Newton, FailedJacobianStopsOnAllRanks) {
+  for (int call : {1, 3}) {
+    CubicProblem problem;
+    problem.fail_jacobian_call = call;
+    Vector x(problem.map());
+    const NewtonReport report = solve(problem, x, quiet_options());
+    EXPECT_FALSE(report.converged);
+    EXPECT_EQ(report.reason, "jacobian evaluation failed");
+    EXPECT_EQ(report.iterations, call - 1);
+    EXPECT_EQ(int(report.residual_history.size()), call);
+  }
+}
+
+TEST(Newton, BacktrackingRescuesAnOvershootingFullStep) {
+  AtanProblem problem;
+  Vector x(problem.map());
+  NewtonOptions options = quiet_options();
+  options.max_iterations = 6;
+  x.putScalar(2.0);
+  const NewtonReport full = solve(problem, x, options);
+  EXPECT_FALSE(full.converged);
+  EXPECT_GT(full.residual_history.back(), full.residual_history.front());
+
+  for (const std::string method : {"Backtrack", "Polynomial"}) {
+    options.line_search = method;
+    options.max_iterations = 25;
+    x.putScalar(2.0);
+    const NewtonReport report = solve(problem, x, options);
+    EXPECT_TRUE(report.converged) << method << ": " << report.reason;
+    EXPECT_LT(x.normInf(), 1e-9) << method;
+  }
+}
+
+TEST(Newton, UpdateToleranceAddsAStepTest) {
+  CubicProblem problem;
+  Vector x(problem.map());
+  NewtonOptions options = quiet_options();
+  options.update_tolerance = 1e-8;
+  const NewtonReport report = solve(problem, x, options);
+  ASSERT_TRUE(report.converged) << report.reason;
+  EXPECT_LT(distance(x, problem.root()), 1e-10);
+}
+
+TEST(Newton, LogsOneLinePerIterationOnRankZero) {
+  CubicProblem problem;
+  Vector x(problem.map());
+  NewtonOptions options;  // verbose
+  LinearSolver linear(Teuchos::ParameterList(), "test");
+  testing::internal::CaptureStdout();
+  const NewtonReport report = solve_newton(problem, x, linear, options, "  test");
+  const std::string out = testing::internal::GetCapturedStdout();
+  if (problem.map()->getComm()->getRank() != 0) {
+    EXPECT_EQ(out, "");
+    return;
+  }
+  EXPECT_NE(out.find("  test newton 0  |F| = "), std::string::npos) << out;
+  EXPECT_NE(out.find("active 7 (0 changed)  linear 1"), std::string::npos) << out;
+  std::size_t lines = 0;
+  for (char c : out) lines += c == '\n';
+  EXPECT_EQ(lines, std::size_t(report.iterations + 1)) << out;
+}
+
+TEST(NewtonOptions, ReadsNewtonAndPassesNoxThrough) {
+  Teuchos::ParameterList solver;
+  auto& newton = solver.sublist("Newton");
+  newton.set("max_iterations", 7);
+  newton.set("absolute_tolerance", 1e-8);
+  newton.set("relative_tolerance", 0);  // an int where a double is expected is fine
+  newton.set("line_search", std::string("Backtrack"));
+  newton.set("require_unchanged_active_set", false);
+  solver.sublist("NOX").sublist("Line Search").sublist("Backtrack").set("Max Iters", 9);
+  const NewtonOptions options = newton_options_from(solver);
+  EXPECT_EQ(options.max_iterations, 7);
+  EXPECT_EQ(options.absolute_tolerance, 1e-8);
+  EXPECT_EQ(options.relative_tolerance, 0.0);
+  EXPECT_EQ(options.line_search, "Backtrack");
+  EXPECT_FALSE(options.require_unchanged_active_set);
+  EXPECT_EQ(options.nox.sublist("Line Search").sublist("Backtrack").get<int>("Max Iters"), 9);
+  EXPECT_EQ(newton_options_from(Teuchos::ParameterList()).max_iterations, 25);
+}
+
+TEST(NewtonOptions, UnknownKeyIsAnInputErrorNamingIt) {
+  Teuchos::ParameterList solver;
+  solver.sublist("Newton").set("max_iter", 3);
+  try {
+    newton_options_from(solver);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("grout/solver/Newton/max_iter"), std::string::npos)
+        << e.what();
+  }
+  Teuchos::ParameterList bad;
+  bad.sublist("Newton").set("line_search", std::string("Zigzag"));
+  EXPECT_THROW(newton_options_from(bad), InputError);
+}
+
+}  // namespace
+}  // namespace grout
