@@ -99,7 +99,8 @@ std::string strip_comments(const std::string& text, const std::string& path) {
       if (c >= 0x80) {
         throw InputError(path + ": line " + std::to_string(number) +
                          ": non-ASCII character outside a comment (the YAML reader accepts "
-                         "ASCII only): " + line);
+                         "ASCII only): " +
+                         line);
       }
     }
     out += line + "\n";
@@ -265,8 +266,8 @@ std::vector<ContactInput> read_contact(const Section& grout) {
     }
     c.collocation_points = s.integer("collocation_points");
     if (s.has("geometry")) {
-      c.geometry = s.string("geometry") == "current" ? ContactGeometry::current
-                                                     : ContactGeometry::reference;
+      c.geometry =
+          s.string("geometry") == "current" ? ContactGeometry::current : ContactGeometry::reference;
     }
     pairs.push_back(std::move(c));
   }

@@ -14,6 +14,7 @@ struct MechanicsProblem::Interface {
   ContactInput input;
   GO lambda_offset = 0;  ///< GID of λ_0, component 0
   double c_hat = 1.0;
+  double active_tolerance = 0.0;  ///< on λ_n − ĉ g: 1e-10 E
   ContactMortarOptions options;
   bool current_geometry = false;  ///< normals, D, M on the current configuration
   ContactMortar reference;        ///< D, M and normals of the reference configuration
@@ -85,6 +86,7 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
     const double E2 = youngs_modulus_of(mesh, input, c->surface.master, c->surface);
     c->c_hat = ci.c_n > 0.0 ? ci.c_n
                             : 2.0 / (1.0 / E1 + 1.0 / E2) / mean_face_size(mesh, c->surface.slave);
+    c->active_tolerance = 1e-10 * 2.0 / (1.0 / E1 + 1.0 / E2);
     c->options.scheme = ci.integration == ContactIntegration::collocation
                             ? MortarIntegration::collocation
                             : MortarIntegration::exact;
@@ -291,7 +293,9 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
     const double gap = g_tilde / D;
     c.gap[j] = gap;
     c.pressure[j] = lambda_n;
-    if (lambda_n - c.c_hat * gap <= 0.0) {  // inactive: λ_j = 0
+    // Active if λ_n − ĉ g > 0; a closed gap with no pressure yet (λ_n = g = 0, the usual
+    // start) counts as active, within round-off of ĉ g, so that touching bodies are supported.
+    if (lambda_n - c.c_hat * gap < -c.active_tolerance) {  // inactive: λ_j = 0
       for (int a = 0; a < dim; ++a) {
         add_F(c.lambda_gid(j, a), c.lambda[j][a]);
         add_entry(c.lambda_gid(j, a), c.lambda_gid(j, a), 1.0);
