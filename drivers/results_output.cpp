@@ -45,6 +45,13 @@ ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidPr
     summary_ << "step,time";
     for (const auto& name : global_names_) summary_ << "," << name;
     summary_ << "\n" << std::flush;
+    // <summary>_newton.csv: the residual history and active set of every Newton iteration.
+    std::string log = input.output.summary;
+    const auto dot = log.rfind('.');
+    log = (dot == std::string::npos ? log : log.substr(0, dot)) + "_newton.csv";
+    newton_log_.open(log);
+    if (!newton_log_) throw InputError(log + ": cannot write the Newton log");
+    newton_log_ << "step,time,iteration,residual,active_nodes,active_changes\n" << std::flush;
   }
 }
 
@@ -108,6 +115,17 @@ void ResultsOutput::write(const ConvergedStep& step) {
     summary_ << step.step << "," << std::setprecision(17) << step.time;
     for (double value : globals) summary_ << "," << value;
     summary_ << "\n" << std::flush;
+  }
+  if (newton_log_.is_open()) {
+    for (std::size_t k = 0; k < newton.residual_history.size(); ++k) {
+      newton_log_ << step.step << "," << std::setprecision(17) << step.time << "," << k << ","
+                  << newton.residual_history[k] << ","
+                  << (k < newton.active_set_history.size() ? newton.active_set_history[k] : 0)
+                  << ","
+                  << (k < newton.active_change_history.size() ? newton.active_change_history[k] : 0)
+                  << "\n";
+    }
+    newton_log_ << std::flush;
   }
 }
 

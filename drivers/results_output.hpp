@@ -31,6 +31,7 @@ class ResultsOutput {
   std::vector<std::string> global_names_;
   std::unique_ptr<ExodusWriter> exodus_;
   std::ofstream summary_;
+  std::ofstream newton_log_;  ///< per Newton iteration of every converged step
 };
 
 }  // namespace grout

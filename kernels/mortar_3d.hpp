@@ -180,7 +180,8 @@ KOKKOS_INLINE_FUNCTION MortarStatus for_each_mortar_point_3d(int n_slave,
   // polygon vertex, not per point), and for an affine slave the area ratio is constant.
   const bool slave_affine = detail3d::affine_in_plane(n_slave, plane.ps);
   const bool master_affine = detail3d::affine_in_plane(n_master, pm);
-  Scalar xi_vs[max_clip_vertices + 1][2] = {}, xi_vm[max_clip_vertices + 1][2] = {};  // [nv]: centroid
+  Scalar xi_vs[max_clip_vertices + 1][2] = {};  // slave parameters; [nv]: centroid
+  Scalar xi_vm[max_clip_vertices + 1][2] = {};  // master parameters; [nv]: centroid
   for (int i = 0; i <= nv; ++i) {
     const Scalar* y = i < nv ? poly[i] : yc;
     if ((slave_affine && face_inverse_map_2d(n_slave, plane.ps, y, xi_vs[i]) != MortarStatus::ok) ||

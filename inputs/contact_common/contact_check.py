@@ -304,7 +304,7 @@ def assess_convergence(levels, tol, floor=0.01, self_convergence=("b", "p_max"))
     return failures
 
 
-def plot_profiles(levels, b, p0, title, path):
+def plot_profiles(levels, b, p0, title, path, labels=None):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -314,7 +314,8 @@ def plot_profiles(levels, b, p0, title, path):
     for i, lv in enumerate(levels, start=1):
         keep = np.abs(lv["x"]) <= 1.5 * b
         ax.plot(lv["x"][keep], lv["p"][keep], "o-", ms=3, lw=0.8,
-                label="level %d (b err %.1f %%, p_max err %.1f %%)" % (i, 100 * lv["err_b"], 100 * lv["err_p"]))
+                label="%s (b err %.1f %%, p_max err %.1f %%)"
+                % (labels[i - 1] if labels else "level %d" % i, 100 * lv["err_b"], 100 * lv["err_p"]))
     ax.set_xlabel("x")
     ax.set_ylabel("contact pressure")
     ax.set_title(title)
