@@ -4,6 +4,7 @@
 #include <BelosSolverFactory.hpp>
 #include <BelosTpetraAdapter.hpp>
 #include <MueLu_CreateTpetraPreconditioner.hpp>
+#include <Teuchos_TimeMonitor.hpp>
 #include <stdexcept>
 
 #include "io/errors.hpp"
@@ -87,6 +88,7 @@ int solve_direct(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x
 }  // namespace
 
 int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x) {
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: linear solve"));
   if (impl_->type == "amesos2") return solve_direct(K, b, x);
 
   // Belos + MueLu.

@@ -1,6 +1,7 @@
 #include "nonlinear/mechanics_problem.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_TimeMonitor.hpp>
 #include <cmath>
 #include <limits>
 
@@ -164,7 +165,10 @@ void MechanicsProblem::add_entry(GO row, GO col, double value) {
 
 bool MechanicsProblem::residual(const Vector& x, Vector& F) {
   displacement(x, *u_);
-  solid_.assemble(*u_, *f_int_, K_solid_.get());
+  {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: solid assembly"));
+    solid_.assemble(*u_, *f_int_, K_solid_.get());
+  }
   {
     auto Fv = F.getLocalViewHost(Tpetra::Access::OverwriteAll);
     const auto fi = f_int_->getLocalViewHost(Tpetra::Access::ReadOnly);
@@ -174,6 +178,8 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
   }
   entry_rows_.clear(), entry_cols_.clear(), entry_values_.clear();
   if (!interfaces_.empty()) {
+    Teuchos::TimeMonitor timer(
+        *Teuchos::TimeMonitor::getNewTimer("grout: contact (search, integration, assembly)"));
     Vector x_gathered(gathered_map_);
     x_gathered.doImport(x, *gather_, Tpetra::INSERT);
     active_size_ = active_changes_ = 0;
@@ -346,6 +352,7 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
 }
 
 bool MechanicsProblem::jacobian(const Vector&, Teuchos::RCP<Matrix>& J) {
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: jacobian (u, lambda)"));
   const LO n_rows = LO(map_->getNodeNumElements());
   std::vector<std::size_t> counts(n_rows, 0);
   const auto& K_row_map = *K_solid_->getRowMap();
