@@ -14,6 +14,7 @@
 #include "io/contact_meshes.hpp"
 #include "io/errors.hpp"
 #include "io/exodus.hpp"
+#include "io/friction_meshes.hpp"
 #include "io/mesh_generators.hpp"
 
 namespace {
@@ -61,6 +62,12 @@ kinds and their options (defaults in brackets):
                    half disc cylinder (centre (0,R)) on plane [-2R,2R]x[-2R,0]; sets
                    cylinder_contact cylinder_top plane_top plane_bottom plane_left
                    plane_right; node set plane (all plane nodes)
+  dong_blocks      --nx-lower [40] --ny-lower [6] --nx-upper [8] --ny-upper [10]
+                   --width-lower [0.35] --height-lower [0.075] --width-upper [0.1]
+                   --height-upper [0.125] --x-upper [0] --gap [0] --triangles-lower
+                   --triangles-upper   friction base test (Dong 1999): block I "upper" on the
+                   longer block II "lower"; sets lower_/upper_ bottom right top left,
+                   lower_top_contact (the part of lower_top under block I)
 common: -o|--output <file> (required), -h|--help
 distortion (< 0.4) moves nodes randomly by up to distortion x cell size; boundary nodes
 stay on their boundary line/plane.
@@ -285,6 +292,27 @@ grout::Mesh generate(const std::string& kind, int argc, char** argv, std::string
     output = o.text("--output", "");
     return grout::cylinder_on_plane_mesh(int(o.integer("--level", 1)), o.real("--radius", 6.1237),
                                          o.real("--contact-width", 2.5));
+  }
+  if (kind == "dong_blocks") {
+    const Options o(argc, argv,
+                    {"--nx-lower", "--ny-lower", "--nx-upper", "--ny-upper", "--width-lower",
+                     "--height-lower", "--width-upper", "--height-upper", "--x-upper", "--gap"},
+                    {"--triangles-lower", "--triangles-upper"});
+    output = o.text("--output", "");
+    grout::DongBlocks s;
+    s.nx_lower = int(o.integer("--nx-lower", s.nx_lower));
+    s.ny_lower = int(o.integer("--ny-lower", s.ny_lower));
+    s.nx_upper = int(o.integer("--nx-upper", s.nx_upper));
+    s.ny_upper = int(o.integer("--ny-upper", s.ny_upper));
+    s.width_lower = o.real("--width-lower", s.width_lower);
+    s.height_lower = o.real("--height-lower", s.height_lower);
+    s.width_upper = o.real("--width-upper", s.width_upper);
+    s.height_upper = o.real("--height-upper", s.height_upper);
+    s.x_upper = o.real("--x-upper", s.x_upper);
+    s.gap = o.real("--gap", s.gap);
+    s.triangles_lower = o.flag("--triangles-lower");
+    s.triangles_upper = o.flag("--triangles-upper");
+    return grout::dong_blocks_2d(s);
   }
   throw UsageError("unknown mesh kind '" + kind + "'");
 }

@@ -27,6 +27,7 @@ ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidPr
     for (const char* name : {"contact_pressure", "normal_gap", "contact_status"})
       nodal.push_back(name);
     for (int d = 0; d < dim; ++d) nodal.push_back(std::string("lm_") + axis[d]);
+    for (int d = 0; d < dim; ++d) nodal.push_back(std::string("slip_") + axis[d]);
   }
   global_names_ = {"newton_iterations", "linear_iterations", "residual", "active_nodes"};
   for (const auto& bc : input.dirichlet)
@@ -109,6 +110,7 @@ void ResultsOutput::write(const ConvergedStep& step) {
     nodal.push_back(contact.gap);
     nodal.push_back(contact.status);
     for (int d = 0; d < dim; ++d) nodal.push_back(contact.lm[d]);
+    for (int d = 0; d < dim; ++d) nodal.push_back(contact.slip[d]);
   }
   exodus_->write_step(step.time, nodal, stress, globals);
   if (summary_.is_open()) {

@@ -41,6 +41,7 @@ void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const New
     t = t_next;
     ++step;
     problem.residual(x, F);  // reactions and contact results at the converged state
+    problem.commit_step();
     ConvergedStep converged;
     converged.step = step;
     converged.time = t;

@@ -15,7 +15,18 @@ struct MechanicsProblem::Interface {
   ContactInput input;
   GO lambda_offset = 0;  ///< GID of λ_0, component 0
   double c_hat = 1.0;
-  double active_tolerance = 0.0;  ///< on λ_n − ĉ g: 1e-10 E
+  double active_tolerance = 0.0;                        ///< on λ_n − ĉ g: 1e-10 E
+  double c_t_hat = 1.0;                                 ///< c_t: like ĉ unless the input sets it
+  std::vector<std::array<double, 3>> old_positions;     ///< of surface.nodes, last converged step
+  std::vector<std::array<double, 3>> positions;         ///< of surface.nodes, last evaluation
+  std::vector<std::array<double, 3>> slip_increment;    ///< per slave node, ū_k of the step
+  std::vector<std::array<double, 3>> slip_accumulated;  ///< per slave node, Σ ū_k τ_k (vector)
+  std::vector<std::array<std::array<double, 3>, 2>> tangents;  ///< τ_k per slave node
+
+  double old_position(GlobalIndex node, int d) const {
+    return old_positions[std::lower_bound(surface.nodes.begin(), surface.nodes.end(), node) -
+                         surface.nodes.begin()][d];
+  }
   ContactMortarOptions options;
   bool current_geometry = false;  ///< normals, D, M on the current configuration
   ContactMortar reference;        ///< D, M and normals of the reference configuration
@@ -117,10 +128,15 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
       reference_options.derivatives = false;
       c->reference = evaluate_contact_mortar(c->surface, X, reference_options);
     }
-    if (ci.type == ContactKind::frictional) {
-      throw InputError(input.file + ": grout/contact/" + ci.name +
-                       "/type: frictional contact is not available yet (use frictionless or tied)");
-    }
+    c->c_t_hat = ci.c_t > 0.0 ? ci.c_t : c->c_hat;
+    c->old_positions.assign(c->surface.nodes.size(), {0.0, 0.0, 0.0});
+    for (std::size_t i = 0; i < c->surface.nodes.size(); ++i)
+      for (int d = 0; d < dim_; ++d)
+        c->old_positions[i][d] = mesh.coordinates[c->surface.nodes[i] * dim_ + d];
+    c->positions = c->old_positions;
+    c->slip_increment.assign(n_slave, {0.0, 0.0, 0.0});
+    c->slip_accumulated.assign(n_slave, {0.0, 0.0, 0.0});
+    c->tangents.assign(n_slave, {});
     interfaces_.push_back(std::move(c));
   }
   const auto comm = solid.comm();
@@ -213,6 +229,10 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
   const ContactMortar mortar =
       c.current_geometry ? evaluate_contact_mortar(s, x, c.options) : ContactMortar();
   const ContactMortar& m = c.current_geometry ? mortar : c.reference;
+  c.positions = x;
+  for (std::size_t j = 0; j < m.frames.size(); ++j)
+    for (int k = 0; k < dim - 1; ++k)
+      for (int a = 0; a < 3; ++a) c.tangents[j][k][a] = m.frames[j].t[k][a];
 
   auto Fv = F.getLocalViewHost(Tpetra::Access::ReadWrite);
   const auto add_F = [&](GO row, double v) {
@@ -285,7 +305,7 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
       m_begin = m_end;
       continue;
     }
-    // Frictionless: v = D x¹_j − Σ_l M_jl x²_l, g̃ = −n·v, g = g̃ / D.
+    // Normal contact: v = D x¹_j − Σ_l M_jl x²_l, g̃ = −n·v, g = g̃ / D.
     const SlaveFrame& fr = m.frames[j];
     double v[3] = {0.0, 0.0, 0.0};
     for (int a = 0; a < dim; ++a) v[a] = D * position(node, a);
@@ -301,47 +321,138 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
     c.pressure[j] = lambda_n;
     // Active if λ_n − ĉ g > 0; a closed gap with no pressure yet (λ_n = g = 0, the usual
     // start) counts as active, within round-off of ĉ g, so that touching bodies are supported.
-    if (lambda_n - c.c_hat * gap < -c.active_tolerance) {  // inactive: λ_j = 0
+    const double augmented = lambda_n - c.c_hat * gap;
+    if (augmented < -c.active_tolerance) {  // inactive: λ_j = 0
       for (int a = 0; a < dim; ++a) {
         add_F(c.lambda_gid(j, a), c.lambda[j][a]);
         add_entry(c.lambda_gid(j, a), c.lambda_gid(j, a), 1.0);
       }
+      c.slip_increment[j] = {0.0, 0.0, 0.0};
       m_begin = m_end;
       continue;
     }
-    c.active[j] = 2;
-    // Normal row: ĉ g, with dg = (dg̃ − g dD) / D and
-    // dg̃ = −Σ_a v_a dn_a − Σ_a n_a dv_a, dv_a = x_ja dD + D e_ja − Σ_l (x_la dM_jl + M_jl e_la).
+    // dg = (dg̃ − g dD) / D,  dg̃ = −Σ_a v_a dn_a − Σ_a n_a dv_a,
+    // dv_a = x_ja dD + D e_ja − Σ_l (x_la dM_jl + M_jl e_la).
+    SparseGradient dg;
+    {
+      const double r = 1.0 / D;
+      double n_dot_x = 0.0;
+      for (int a = 0; a < dim; ++a) {
+        n_dot_x += fr.n[a] * position(node, a);
+        for (const auto& [dof, dn] : fr.dn[a]) dg.emplace_back(dof, -r * v[a] * dn);
+        dg.emplace_back(node * dim + a, -r * fr.n[a] * D);
+      }
+      for (const auto& [dof, dD] : m.D[j].gradient) dg.emplace_back(dof, -r * (n_dot_x + gap) * dD);
+      for (auto it = m_begin; it != m_end; ++it) {
+        const GlobalIndex l = it->first.second;
+        double n_dot_xl = 0.0;
+        for (int a = 0; a < dim; ++a) {
+          n_dot_xl += fr.n[a] * position(l, a);
+          dg.emplace_back(l * dim + a, r * fr.n[a] * it->second.value);
+        }
+        for (const auto& [dof, dM] : it->second.gradient) dg.emplace_back(dof, r * n_dot_xl * dM);
+      }
+    }
+    const auto emit = [&](GO row, const SparseGradient& g, double scale) {
+      for (const auto& [dof, value] : g) add_entry(row, dof, scale * value);
+    };
+    // Normal row: ĉ g = 0.
     const GO row = c.lambda_gid(j, 0);
     add_F(row, c.c_hat * gap);
-    const double s_g = c.c_hat / D;
-    for (int a = 0; a < dim; ++a) {
-      for (const auto& [dof, dn] : fr.dn[a]) add_entry(row, dof, -s_g * v[a] * dn);
-      add_entry(row, node * dim + a, -s_g * fr.n[a] * D);
-    }
-    double n_dot_x = 0.0;
-    for (int a = 0; a < dim; ++a) n_dot_x += fr.n[a] * position(node, a);
-    for (const auto& [dof, dD] : m.D[j].gradient)
-      add_entry(row, dof, -s_g * n_dot_x * dD - s_g * gap * dD);
-    for (auto it = m_begin; it != m_end; ++it) {
-      const GlobalIndex l = it->first.second;
-      double n_dot_xl = 0.0;
-      for (int a = 0; a < dim; ++a) {
-        n_dot_xl += fr.n[a] * position(l, a);
-        add_entry(row, l * dim + a, s_g * fr.n[a] * it->second.value);
-      }
-      for (const auto& [dof, dM] : it->second.gradient) add_entry(row, dof, s_g * n_dot_xl * dM);
-    }
-    // Tangential rows: τ_k·λ_j = 0.
+    emit(row, dg, c.c_hat);
+
+    // Tangential multipliers λ_τk = τ_k·λ and their gradients (λ dofs and dτ_k).
+    double lambda_t[2] = {0.0, 0.0};
+    SparseGradient dlambda_t[2];
     for (int k = 0; k < dim - 1; ++k) {
-      const GO trow = c.lambda_gid(j, k + 1);
-      double t_dot_lambda = 0.0;
       for (int a = 0; a < dim; ++a) {
-        t_dot_lambda += fr.t[k][a] * c.lambda[j][a];
-        add_entry(trow, c.lambda_gid(j, a), fr.t[k][a]);
-        for (const auto& [dof, dt] : fr.dt[k][a]) add_entry(trow, dof, c.lambda[j][a] * dt);
+        lambda_t[k] += fr.t[k][a] * c.lambda[j][a];
+        dlambda_t[k].emplace_back(c.lambda_gid(j, a), fr.t[k][a]);
+        for (const auto& [dof, dt] : fr.dt[k][a])
+          dlambda_t[k].emplace_back(dof, c.lambda[j][a] * dt);
       }
-      add_F(trow, t_dot_lambda);
+    }
+    if (c.input.type == ContactKind::frictionless) {  // τ_k·λ = 0
+      c.active[j] = 2;
+      for (int k = 0; k < dim - 1; ++k) {
+        add_F(c.lambda_gid(j, k + 1), lambda_t[k]);
+        emit(c.lambda_gid(j, k + 1), dlambda_t[k], 1.0);
+      }
+      m_begin = m_end;
+      continue;
+    }
+
+    // Coulomb friction (Hüeber, Stadler, Wohlmuth 2008; DESIGN.md §2), per unit D_jj:
+    // slip increment ū_k = τ_k·w / D, w = D Δx_j − Σ_l M_jl Δx_l (Δ since the last converged
+    // step), ξ = λ_τ + c_t ū, s = λ_n − ĉ g.
+    //   stick (|ξ| < μ s):  c_t ū = 0;
+    //   slip:               λ_τ − μ s ξ/|ξ| = 0   (the NCP divided by |ξ| > 0).
+    double w[3] = {0.0, 0.0, 0.0};
+    for (int a = 0; a < dim; ++a) w[a] = D * (position(node, a) - c.old_position(node, a));
+    for (auto it = m_begin; it != m_end; ++it)
+      for (int a = 0; a < dim; ++a)
+        w[a] -= it->second.value *
+                (position(it->first.second, a) - c.old_position(it->first.second, a));
+    double slip[2] = {0.0, 0.0}, xi[2] = {0.0, 0.0}, xi_norm = 0.0;
+    SparseGradient dslip[2];
+    for (int k = 0; k < dim - 1; ++k) {
+      const double r = 1.0 / D;
+      for (int a = 0; a < dim; ++a) {
+        slip[k] += r * fr.t[k][a] * w[a];
+        for (const auto& [dof, dt] : fr.dt[k][a]) dslip[k].emplace_back(dof, r * w[a] * dt);
+        dslip[k].emplace_back(node * dim + a, fr.t[k][a]);
+      }
+      double t_dx = 0.0;  // τ_k·Δx_j
+      for (int a = 0; a < dim; ++a)
+        t_dx += fr.t[k][a] * (position(node, a) - c.old_position(node, a));
+      for (const auto& [dof, dD] : m.D[j].gradient)
+        dslip[k].emplace_back(dof, r * (t_dx - slip[k]) * dD);
+      for (auto it = m_begin; it != m_end; ++it) {
+        const GlobalIndex l = it->first.second;
+        double t_dxl = 0.0;
+        for (int a = 0; a < dim; ++a) {
+          t_dxl += fr.t[k][a] * (position(l, a) - c.old_position(l, a));
+          dslip[k].emplace_back(l * dim + a, -r * fr.t[k][a] * it->second.value);
+        }
+        for (const auto& [dof, dM] : it->second.gradient)
+          dslip[k].emplace_back(dof, -r * t_dxl * dM);
+      }
+      xi[k] = lambda_t[k] + c.c_t_hat * slip[k];
+      xi_norm += xi[k] * xi[k];
+    }
+    xi_norm = std::sqrt(xi_norm);
+    for (int k = 0; k < dim - 1; ++k) c.slip_increment[j][k] = slip[k];
+    const double mu = c.input.friction_coefficient;
+    if (xi_norm < mu * augmented) {  // stick
+      c.active[j] = 1;
+      for (int k = 0; k < dim - 1; ++k) {
+        add_F(c.lambda_gid(j, k + 1), c.c_t_hat * slip[k]);
+        emit(c.lambda_gid(j, k + 1), dslip[k], c.c_t_hat);
+      }
+    } else {  // slip: λ_τ − μ s ξ̂, d = dλ_τ − μ ξ̂ ds − μ s (I − ξ̂ξ̂ᵀ)/|ξ| dξ
+      c.active[j] = 2;
+      SparseGradient ds = dg;  // ds = dλ_n − ĉ dg
+      for (auto& [dof, value] : ds) value *= -c.c_hat;
+      for (int a = 0; a < dim; ++a) {
+        ds.emplace_back(c.lambda_gid(j, a), fr.n[a]);
+        for (const auto& [dof, dn] : fr.dn[a]) ds.emplace_back(dof, c.lambda[j][a] * dn);
+      }
+      double xi_hat[2] = {0.0, 0.0};
+      if (xi_norm > 0.0)
+        for (int k = 0; k < dim - 1; ++k) xi_hat[k] = xi[k] / xi_norm;
+      for (int k = 0; k < dim - 1; ++k) {
+        const GO trow = c.lambda_gid(j, k + 1);
+        add_F(trow, lambda_t[k] - mu * augmented * xi_hat[k]);
+        emit(trow, dlambda_t[k], 1.0);
+        emit(trow, ds, -mu * xi_hat[k]);
+        if (xi_norm > 0.0 && dim == 3) {  // the direction's derivative (none in 2D)
+          for (int m2 = 0; m2 < dim - 1; ++m2) {
+            const double P = ((k == m2 ? 1.0 : 0.0) - xi_hat[k] * xi_hat[m2]) / xi_norm;
+            emit(trow, dlambda_t[m2], -mu * augmented * P);
+            emit(trow, dslip[m2], -mu * augmented * P * c.c_t_hat);
+          }
+        }
+      }
     }
     m_begin = m_end;
   }
@@ -397,6 +508,17 @@ bool MechanicsProblem::jacobian(const Vector&, Teuchos::RCP<Matrix>& J) {
   return true;
 }
 
+void MechanicsProblem::commit_step() {
+  for (auto& c : interfaces_) {
+    for (std::size_t j = 0; j < c->slip_accumulated.size(); ++j)
+      for (int k = 0; k < dim_ - 1; ++k)
+        for (int a = 0; a < dim_; ++a)
+          c->slip_accumulated[j][a] += c->slip_increment[j][k] * c->tangents[j][k][a];
+    for (auto& increment : c->slip_increment) increment = {0.0, 0.0, 0.0};
+    c->old_positions = c->positions;
+  }
+}
+
 ContactFields MechanicsProblem::contact_fields() const {
   ContactFields out;
   const std::size_t n = mesh_.num_nodes();
@@ -404,13 +526,19 @@ ContactFields MechanicsProblem::contact_fields() const {
   out.gap.assign(n, 0.0);
   out.status.assign(n, 0.0);
   out.lm.assign(dim_, std::vector<double>(n, 0.0));
+  out.slip.assign(dim_, std::vector<double>(n, 0.0));
   for (const auto& c : interfaces_) {
     for (std::size_t j = 0; j < c->surface.slave_nodes.size(); ++j) {
       const GlobalIndex node = c->surface.slave_nodes[j];
       out.pressure[node] = c->pressure[j];
       out.gap[node] = c->gap[j];
       out.status[node] = c->active[j];
-      for (int d = 0; d < dim_; ++d) out.lm[d][node] = c->lambda[j][d];
+      for (int d = 0; d < dim_; ++d) {
+        out.lm[d][node] = c->lambda[j][d];
+        out.slip[d][node] = c->slip_accumulated[j][d];
+        for (int k = 0; k < dim_ - 1; ++k)  // this step's increment, not yet committed
+          out.slip[d][node] += c->slip_increment[j][k] * c->tangents[j][k][d];
+      }
       out.active_nodes += c->active[j] != 0;
     }
   }

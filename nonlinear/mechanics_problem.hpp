@@ -8,6 +8,9 @@
 //                                          −Σ_j M_jl λ_j on master node l;
 //   λ rows:   frictionless: C_n = λ_n − max(0, λ_n − ĉ g_j) (active: ĉ g_j, inactive: λ_n),
 //             with g_j = g̃_j / D_jj the nodal gap, plus τ_j·λ_j = 0;
+//             frictional: the same normal row, and Coulomb's NCP on λ_τ with the weighted
+//             slip increment since the last converged step (stick: no slip; slip:
+//             λ_τ = μ (λ_n − ĉ g) ξ/|ξ|, ξ = λ_τ + c_t ū);
 //             tied: ĉ (D_jj u¹_j − Σ_l M_jl u²_l) / D_jj = 0 with D, M of the reference
 //             configuration.
 // ĉ = E/h (harmonic mean of the two bodies' Young's moduli over the mean slave face size)
@@ -25,10 +28,11 @@ namespace grout {
 
 /// Nodal contact results of the last residual evaluation (global node arrays, every rank).
 struct ContactFields {
-  std::vector<double> pressure;         ///< λ_n = n·λ, > 0 in compression
-  std::vector<double> gap;              ///< g̃_j / D_jj
-  std::vector<double> status;           ///< 0 open, 1 stick (tied), 2 slip (frictionless active)
-  std::vector<std::vector<double>> lm;  ///< λ components
+  std::vector<double> pressure;           ///< λ_n = n·λ, > 0 in compression
+  std::vector<double> gap;                ///< g̃_j / D_jj
+  std::vector<double> status;             ///< 0 open, 1 stick (tied), 2 slip (frictionless active)
+  std::vector<std::vector<double>> lm;    ///< λ components
+  std::vector<std::vector<double>> slip;  ///< accumulated weighted slip Σ ū τ (frictional)
   int active_nodes = 0;
 };
 
@@ -46,6 +50,9 @@ class MechanicsProblem : public NonlinearProblem {
   /// Set the load and prescribed displacements of time t, and put the prescribed values
   /// into x (the initial guess of the step).
   void begin_step(double t, Vector& x);
+  /// Accept the state of the last residual evaluation as converged: slip increments are
+  /// measured from it from now on (path dependence of friction).
+  void commit_step();
   /// The displacement part of x, on the solid's owned map.
   void displacement(const Vector& x, Vector& u) const;
   /// f_int − f_ext + f_c on the prescribed dofs at the last residual evaluation, 0 elsewhere.

@@ -1,6 +1,7 @@
-// The Jacobian of the mechanics problem with frictionless contact on the current geometry
-// (all linearisation terms: normals, D, M, projections) against central finite differences
-// of the residual, in 2D and 3D, on 1 and 2 ranks.
+// The Jacobian of the mechanics problem with frictionless and Coulomb frictional contact on
+// the current geometry (all linearisation terms: normals, tangents, D, M, projections, the
+// slip increment and the stick/slip NCP rows) against central finite differences of the
+// residual, in 2D and 3D, on 1 and 2 ranks.
 
 #include <gtest/gtest.h>
 
@@ -14,7 +15,7 @@
 namespace grout {
 namespace {
 
-Input contact_input(int dim) {
+Input contact_input(int dim, ContactKind type, double mu) {
   Input input;
   input.file = "test.yaml";
   input.model.dimension = dim;
@@ -31,6 +32,8 @@ Input contact_input(int dim) {
   c.slave = "upper_bottom";
   c.master = "lower_top";
   c.geometry = ContactGeometry::current;
+  c.type = type;
+  c.friction_coefficient = mu;
   input.contact.push_back(c);
   return input;
 }
@@ -60,32 +63,39 @@ void random_state(const MechanicsProblem& problem, const Mesh& mesh, Vector& x, 
   (void)rng;
 }
 
-void check_jacobian(int dim) {
+/// Checks the Jacobian; returns the number of stick (1) and slip (2) slave nodes.
+std::array<int, 3> check_jacobian(int dim, ContactKind type = ContactKind::frictionless,
+                                  double mu = 0.0) {
   const auto comm = Tpetra::getDefaultComm();
   const Mesh mesh = dim == 2 ? two_block_mesh_2d(3, 2, 4, 2) : two_block_mesh_3d(2, 2, 1, 3, 2, 1);
-  const Input input = contact_input(dim);
+  const Input input = contact_input(dim, type, mu);
   const SolidProblem solid(mesh, input, comm);
   MechanicsProblem problem(solid, mesh, input);
   Vector x(problem.map()), F(problem.map()), Fp(problem.map()), Fm(problem.map());
   Vector dx(problem.map()), JdX(problem.map()), xp(problem.map()), xm(problem.map());
   random_state(problem, mesh, x, 3);
-  ASSERT_TRUE(problem.residual(x, F));
+  EXPECT_TRUE(problem.residual(x, F));
   const int active = problem.active_set_size();
   EXPECT_GT(active, 0);
+  const ContactFields fields = problem.contact_fields();
+  std::array<int, 3> status{0, 0, 0};
+  for (double st : fields.status) ++status[int(st)];
   Teuchos::RCP<Matrix> J;
-  ASSERT_TRUE(problem.jacobian(x, J));
+  EXPECT_TRUE(problem.jacobian(x, J));
   random_state(problem, mesh, dx, 11);
   const double h = 1e-7;
   xp.update(1.0, x, h, dx, 0.0);
   xm.update(1.0, x, -h, dx, 0.0);
-  ASSERT_TRUE(problem.residual(xp, Fp));
-  ASSERT_EQ(problem.active_set_size(), active);
-  ASSERT_TRUE(problem.residual(xm, Fm));
-  ASSERT_EQ(problem.active_set_size(), active);
+  EXPECT_TRUE(problem.residual(xp, Fp));
+  EXPECT_EQ(problem.active_set_changes(), 0);
+  EXPECT_TRUE(problem.residual(xm, Fm));
+  EXPECT_EQ(problem.active_set_changes(), 0);
+  EXPECT_EQ(problem.active_set_size(), active);
   J->apply(dx, JdX);
   Fp.update(-1.0 / (2 * h), Fm, 1.0 / (2 * h));  // central difference
   Fp.update(-1.0, JdX, 1.0);
   EXPECT_LT(Fp.norm2() / JdX.norm2(), 1e-6) << "|J dx - FD| / |J dx|";
+  return status;
 }
 
 TEST(MechanicsJacobian, MatchesFiniteDifferences2D) {
@@ -93,6 +103,20 @@ TEST(MechanicsJacobian, MatchesFiniteDifferences2D) {
 }
 TEST(MechanicsJacobian, MatchesFiniteDifferences3D) {
   check_jacobian(3);
+}
+
+// μ small: active nodes slip; μ large: active nodes stick.
+TEST(MechanicsJacobian, FrictionalSlipMatchesFiniteDifferences2D) {
+  EXPECT_GT(check_jacobian(2, ContactKind::frictional, 0.3)[2], 0);
+}
+TEST(MechanicsJacobian, FrictionalStickMatchesFiniteDifferences2D) {
+  EXPECT_GT(check_jacobian(2, ContactKind::frictional, 1e3)[1], 0);
+}
+TEST(MechanicsJacobian, FrictionalSlipMatchesFiniteDifferences3D) {
+  EXPECT_GT(check_jacobian(3, ContactKind::frictional, 0.3)[2], 0);
+}
+TEST(MechanicsJacobian, FrictionalStickMatchesFiniteDifferences3D) {
+  EXPECT_GT(check_jacobian(3, ContactKind::frictional, 1e3)[1], 0);
 }
 
 }  // namespace
