@@ -1,0 +1,28 @@
+#pragma once
+// Two-body meshes for the frictional verification cases (BENCHMARKS.md row 7; rows 3 and 9
+// use stacked_2d/3d and hertz_cylinders of contact_meshes.hpp).
+
+#include "io/mesh.hpp"
+
+namespace grout {
+
+/// Friction base test (Dong 1999; Kratos pure_friction_test): a short upper block I on a
+/// longer lower block II, both QUAD4 (or TRI3), structured, non-matching along the interface
+/// when the element sizes differ.
+///   "lower" (block II) = [0, width_lower] x [0, height_lower]
+///   "upper" (block I)  = [x_upper, x_upper + width_upper] x [y1, y1 + height_upper],
+///                        y1 = height_lower + gap
+/// Defaults: the Kratos geometry 0.35 x 0.2 (lower 0.35 x 0.075 with 40 x 6 elements, upper
+/// 0.1 x 0.125 with 8 x 10 elements, 386 nodes), zero gap.
+/// Sets per body (prefix "lower_"/"upper_"): bottom right top left (side set + node set),
+/// plus "lower_top_contact": the part of the lower top face under block I (faces with both
+/// nodes in [x_upper, x_upper + width_upper]; side set + node set).
+struct DongBlocks {
+  int nx_lower = 40, ny_lower = 6, nx_upper = 8, ny_upper = 10;
+  double width_lower = 0.35, height_lower = 0.075;
+  double width_upper = 0.1, height_upper = 0.125, x_upper = 0.0, gap = 0.0;
+  bool triangles_lower = false, triangles_upper = false;
+};
+Mesh dong_blocks_2d(const DongBlocks& spec);
+
+}  // namespace grout
