@@ -68,6 +68,9 @@ kinds and their options (defaults in brackets):
                    --triangles-upper   friction base test (Dong 1999): block I "upper" on the
                    longer block II "lower"; sets lower_/upper_ bottom right top left,
                    lower_top_contact (the part of lower_top under block I)
+  hertz_cylinders_pinned --level [1] --radius [8] --gap [0] --contact-width [2.5]
+                   hertz_cylinders plus single-node node sets upper_top_centre (0,R+gap)
+                   and lower_bottom_centre (0,-R) (frictional Hertz: rollers + one pin)
 common: -o|--output <file> (required), -h|--help
 distortion (< 0.4) moves nodes randomly by up to distortion x cell size; boundary nodes
 stay on their boundary line/plane.
@@ -313,6 +316,12 @@ grout::Mesh generate(const std::string& kind, int argc, char** argv, std::string
     s.triangles_lower = o.flag("--triangles-lower");
     s.triangles_upper = o.flag("--triangles-upper");
     return grout::dong_blocks_2d(s);
+  }
+  if (kind == "hertz_cylinders_pinned") {
+    const Options o(argc, argv, {"--level", "--radius", "--gap", "--contact-width"}, {});
+    output = o.text("--output", "");
+    return grout::hertz_cylinders_pinned(int(o.integer("--level", 1)), o.real("--radius", 8),
+                                         o.real("--gap", 0), o.real("--contact-width", 2.5));
   }
   throw UsageError("unknown mesh kind '" + kind + "'");
 }

@@ -53,6 +53,20 @@ ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidPr
     newton_log_.open(log);
     if (!newton_log_) throw InputError(log + ": cannot write the Newton log");
     newton_log_ << "step,time,iteration,residual,active_nodes,active_changes\n" << std::flush;
+    // <summary>_contact.csv (2D): the contact results along the interface, every step.
+    if (problem.has_contact() && dim == 2) {
+      const std::string stem = log.substr(0, log.size() - std::string("_newton.csv").size());
+      profile_.open(stem + "_contact.csv");
+      if (!profile_) throw InputError(stem + "_contact.csv: cannot write the contact profile");
+      profile_ << "step,time,node,x,y,contact_pressure,normal_gap,contact_status,lm_x,lm_y,"
+                  "slip_x,slip_y\n"
+               << std::flush;
+      profile_nodes_ = problem.slave_nodes();
+      const auto& X = mesh.coordinates;
+      std::sort(profile_nodes_.begin(), profile_nodes_.end(), [&](GlobalIndex a, GlobalIndex b) {
+        return X[2 * a] < X[2 * b] || (X[2 * a] == X[2 * b] && X[2 * a + 1] < X[2 * b + 1]);
+      });
+    }
   }
 }
 
@@ -117,6 +131,16 @@ void ResultsOutput::write(const ConvergedStep& step) {
     summary_ << step.step << "," << std::setprecision(17) << step.time;
     for (double value : globals) summary_ << "," << value;
     summary_ << "\n" << std::flush;
+  }
+  if (profile_.is_open()) {
+    for (GlobalIndex n : profile_nodes_) {
+      profile_ << step.step << "," << std::setprecision(17) << step.time << "," << n + 1 << ","
+               << mesh_.coordinates[2 * n] << "," << mesh_.coordinates[2 * n + 1] << ","
+               << contact.pressure[n] << "," << contact.gap[n] << "," << contact.status[n] << ","
+               << contact.lm[0][n] << "," << contact.lm[1][n] << "," << contact.slip[0][n] << ","
+               << contact.slip[1][n] << "\n";
+    }
+    profile_ << std::flush;
   }
   if (newton_log_.is_open()) {
     for (std::size_t k = 0; k < newton.residual_history.size(); ++k) {

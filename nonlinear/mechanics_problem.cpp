@@ -508,6 +508,13 @@ bool MechanicsProblem::jacobian(const Vector&, Teuchos::RCP<Matrix>& J) {
   return true;
 }
 
+std::vector<GlobalIndex> MechanicsProblem::slave_nodes() const {
+  std::vector<GlobalIndex> nodes;
+  for (const auto& c : interfaces_)
+    nodes.insert(nodes.end(), c->surface.slave_nodes.begin(), c->surface.slave_nodes.end());
+  return nodes;
+}
+
 void MechanicsProblem::commit_step() {
   for (auto& c : interfaces_) {
     for (std::size_t j = 0; j < c->slip_accumulated.size(); ++j)

@@ -60,6 +60,8 @@ class MechanicsProblem : public NonlinearProblem {
   /// Contact results at the last residual evaluation (empty without contact).
   ContactFields contact_fields() const;
   bool has_contact() const { return !interfaces_.empty(); }
+  /// Slave nodes of every interface (global node indices, each interface's sorted).
+  std::vector<GlobalIndex> slave_nodes() const;
 
  private:
   struct Interface;
