@@ -2,15 +2,6 @@
 // element measure and AD consistency, against independent references.
 #include <gtest/gtest.h>
 
-// Sacado of the Debian Trilinos is configured with Teuchos support, whose headers need mpi.h
-// and libteuchoscore; a kernels test links Kokkos only, so switch the Teuchos traits off here
-// (Sacado_ConfigDefs.h is guarded, Sacado_config.h is not re-read afterwards).
-#include <Sacado_ConfigDefs.h>
-#undef HAVE_SACADO_TEUCHOSCORE
-#undef HAVE_SACADO_TEUCHOSCOMM
-#undef HAVE_SACADO_TEUCHOSNUMERICS
-#undef HAVE_SACADO_TEUCHOSKOKKOSCOMM
-#undef HAVE_SACADO_KOKKOSMPICOMM
 #include <Sacado.hpp>
 
 #include <algorithm>

@@ -3,15 +3,6 @@
 // perturbed configurations (fixed seed) and across an overlap-topology switch.
 #include <gtest/gtest.h>
 
-// Sacado of the Debian Trilinos is configured with Teuchos support (needs mpi.h and
-// libteuchoscore); a kernels test links Kokkos only, so the Teuchos traits are switched off
-// (same workaround as test_kernels_linear_elastic.cpp).
-#include <Sacado_ConfigDefs.h>
-#undef HAVE_SACADO_TEUCHOSCORE
-#undef HAVE_SACADO_TEUCHOSCOMM
-#undef HAVE_SACADO_TEUCHOSNUMERICS
-#undef HAVE_SACADO_TEUCHOSKOKKOSCOMM
-#undef HAVE_SACADO_KOKKOSMPICOMM
 #include <Sacado.hpp>
 
 #include <algorithm>
