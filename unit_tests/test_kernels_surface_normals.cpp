@@ -2,12 +2,6 @@
 // hand values, symmetry (regular polygon), axis-aligned cube faces, and finite differences.
 #include <gtest/gtest.h>
 
-#include <Sacado_ConfigDefs.h>  // Teuchos traits off: a kernels test links Kokkos only
-#undef HAVE_SACADO_TEUCHOSCORE
-#undef HAVE_SACADO_TEUCHOSCOMM
-#undef HAVE_SACADO_TEUCHOSNUMERICS
-#undef HAVE_SACADO_TEUCHOSKOKKOSCOMM
-#undef HAVE_SACADO_KOKKOSMPICOMM
 #include <Sacado.hpp>
 
 #include <array>
