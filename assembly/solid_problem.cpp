@@ -224,6 +224,9 @@ void SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
     K->setAllToScalar(0.0);
   }
   const auto local_matrix = K ? K->getLocalMatrixHost() : Matrix::local_matrix_host_type();
+  const auto row_map = local_matrix.graph.row_map;
+  const auto entries = local_matrix.graph.entries;
+  const auto values = local_matrix.values;
   const bool with_tangent = K != nullptr;
   const int dim = dim_;
   const int n_owned = num_owned_nodes_;
@@ -242,14 +245,12 @@ void SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
         KOKKOS_LAMBDA(const int e, GlobalIndex& bad) {
           double X[max_element_dofs], ue[max_element_dofs], fe[max_element_dofs];
           double Ke[max_element_dofs * max_element_dofs];
-          int cols[max_element_dofs];
           const int n = npe * dim;
           for (int a = 0; a < npe; ++a) {
             for (int d = 0; d < dim; ++d) {
               const int k = nodes(e, a);
               X[a * dim + d] = X_all(k, d);
               ue[a * dim + d] = u_view(k * dim + d);
-              cols[a * dim + d] = k * dim + d;
             }
           }
           const ElementStatus status = linear_elastic_element<double>(
@@ -258,13 +259,36 @@ void SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
             bad = global(e) < bad ? global(e) : bad;
             return;
           }
+          // Scatter. The dim rows of a node share one column pattern (build_graph: node
+          // columns m*dim .. m*dim+dim-1, sorted by m), so the offset of each element node in
+          // the node's first row is found once (binary search) and reused for its dim rows.
+          // Each entry still receives one addition per element, in element order: the sums
+          // are those of sumIntoValues, bit for bit.
           for (int a = 0; a < npe; ++a) {
-            if (nodes(e, a) >= n_owned) continue;
+            const int k = nodes(e, a);
+            if (k >= n_owned) continue;
+            for (int d = 0; d < dim; ++d) Kokkos::atomic_add(&f_view(k * dim + d), fe[a * dim + d]);
+            if (!with_tangent) continue;
+            const auto first = row_map(k * dim);
+            int offset[max_element_nodes];
+            for (int b = 0; b < npe; ++b) {
+              const int column = nodes(e, b) * dim;
+              auto lo = first, hi = row_map(k * dim + 1);
+              while (lo < hi) {
+                const auto mid = lo + (hi - lo) / 2;
+                if (entries(mid) < column)
+                  lo = mid + 1;
+                else
+                  hi = mid;
+              }
+              offset[b] = int(lo - first);
+            }
             for (int d = 0; d < dim; ++d) {
-              const int i = a * dim + d;
-              Kokkos::atomic_add(&f_view(cols[i]), fe[i]);
-              if (with_tangent)
-                local_matrix.sumIntoValues(cols[i], cols, n, &Ke[i * n], false, true);
+              const double* Ke_row = &Ke[(a * dim + d) * n];
+              const auto row_start = row_map(k * dim + d);
+              for (int b = 0; b < npe; ++b)
+                for (int c = 0; c < dim; ++c)
+                  Kokkos::atomic_add(&values(row_start + offset[b] + c), Ke_row[b * dim + c]);
             }
           }
         },

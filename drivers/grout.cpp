@@ -70,6 +70,7 @@ int run(const std::string& input_path, const std::string& output_dir,
                                                    ? input.solver->sublist("Linear Solver")
                                                    : Teuchos::ParameterList();
   LinearSolver linear(linear_params, input.file + ": grout/solver/Linear Solver");
+  linear.set_multiplier_pairing(problem.multiplier_pairing(), mesh.dimension);
   ResultsOutput output(mesh, input, solid, problem);
   SteppingOptions stepping;
   stepping.end_time = input.time.end;

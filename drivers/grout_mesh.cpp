@@ -69,8 +69,9 @@ kinds and their options (defaults in brackets):
                    longer block II "lower"; sets lower_/upper_ bottom right top left,
                    lower_top_contact (the part of lower_top under block I)
   hertz_cylinders_pinned --level [1] --radius [8] --gap [0] --contact-width [2.5]
-                   hertz_cylinders plus single-node node sets upper_top_centre (0,R+gap)
-                   and lower_bottom_centre (0,-R) (frictional Hertz: rollers + one pin)
+                   hertz_cylinders plus single-node node sets upper_top_centre (0,R+gap),
+                   upper_top_end (R,R+gap), lower_bottom_centre (0,-R), lower_bottom_end
+                   (R,-R) (frictional Hertz: both flat faces loaded, pin + roller)
 common: -o|--output <file> (required), -h|--help
 distortion (< 0.4) moves nodes randomly by up to distortion x cell size; boundary nodes
 stay on their boundary line/plane.

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "io/contact_meshes.hpp"
 #include "io/mesh_generators.hpp"
 
 namespace grout {
@@ -62,15 +63,41 @@ void add_x_subset(Mesh& mesh, const std::string& from, const std::string& name, 
   mesh.node_sets.push_back({name, int(mesh.node_sets.size() + 1), std::move(nodes)});
 }
 
+/// Add a node set `name` holding the node of block `block` nearest to (x, y).
+void add_nearest_node_set(Mesh& mesh, const std::string& block, const std::string& name, double x,
+                          double y) {
+  const ElementBlock* b = nullptr;
+  for (const auto& blk : mesh.blocks)
+    if (blk.name == block) b = &blk;
+  if (!b) throw std::logic_error("friction_meshes: no block " + block);
+  GlobalIndex best = -1;
+  double best_d = HUGE_VAL;
+  for (GlobalIndex n : b->connectivity) {
+    const double dx = mesh.coordinates[2 * n] - x, dy = mesh.coordinates[2 * n + 1] - y;
+    if (dx * dx + dy * dy < best_d) best_d = dx * dx + dy * dy, best = n;
+  }
+  mesh.node_sets.push_back({name, int(mesh.node_sets.size() + 1), {best}});
+}
+
 }  // namespace
+
+Mesh hertz_cylinders_pinned(int level, double radius, double gap, double contact_width) {
+  Mesh m = hertz_cylinders_mesh(level, radius, gap, contact_width);
+  add_nearest_node_set(m, "upper", "upper_top_centre", 0.0, radius + gap);
+  add_nearest_node_set(m, "upper", "upper_top_end", radius, radius + gap);
+  add_nearest_node_set(m, "lower", "lower_bottom_centre", 0.0, -radius);
+  add_nearest_node_set(m, "lower", "lower_bottom_end", radius, -radius);
+  return m;
+}
 
 Mesh dong_blocks_2d(const DongBlocks& s) {
   if (!(s.width_lower > 0.0 && s.height_lower > 0.0 && s.width_upper > 0.0 &&
         s.height_upper > 0.0 && s.gap >= 0.0))
     throw std::invalid_argument("dong_blocks: widths and heights must be > 0, gap >= 0");
   if (!(s.x_upper >= 0.0 && s.x_upper + s.width_upper <= s.width_lower * (1.0 + 1e-12)))
-    throw std::invalid_argument("dong_blocks: block I must lie over block II (0 <= x_upper, "
-                                "x_upper + width_upper <= width_lower)");
+    throw std::invalid_argument(
+        "dong_blocks: block I must lie over block II (0 <= x_upper, "
+        "x_upper + width_upper <= width_lower)");
   const double y1 = s.height_lower + s.gap;
   Mesh lower = rectangle_mesh(s.nx_lower, s.ny_lower, 0.0, s.width_lower, 0.0, s.height_lower,
                               s.triangles_lower, 0.0, 1, "lower");

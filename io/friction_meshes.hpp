@@ -1,6 +1,6 @@
 #pragma once
 // Two-body meshes for the frictional verification cases (BENCHMARKS.md row 7; rows 3 and 9
-// use stacked_2d/3d and hertz_cylinders of contact_meshes.hpp).
+// use stacked_2d/3d of contact_meshes.hpp).
 
 #include "io/mesh.hpp"
 
@@ -24,5 +24,15 @@ struct DongBlocks {
   bool triangles_lower = false, triangles_upper = false;
 };
 Mesh dong_blocks_2d(const DongBlocks& spec);
+
+/// Frictional Hertz (Cattaneo-Mindlin, BENCHMARKS row 9): hertz_cylinders_mesh (see
+/// contact_meshes.hpp) plus single-node node sets at the centres and the right ends of the
+/// flat faces: "upper_top_centre" (the node nearest (0, R + gap)), "upper_top_end"
+/// (R, R + gap), "lower_bottom_centre" (0, -R), "lower_bottom_end" (R, -R). Both flat faces
+/// can then be loaded alike (the two bodies deform as mirror images, and no tangential
+/// traction arises under the normal load alone for identical materials) with the rigid
+/// modes removed by a pin and a roller that carry no force.
+Mesh hertz_cylinders_pinned(int level, double radius = 8.0, double gap = 0.0,
+                            double contact_width = 2.5);
 
 }  // namespace grout

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "io/errors.hpp"
+#include "nonlinear/condensed_solve.hpp"
 
 namespace grout {
 
@@ -16,6 +17,12 @@ struct LinearSolver::Impl {
   Teuchos::ParameterList belos;
   Teuchos::ParameterList muelu;
   std::string belos_type = "CG";
+  // --- condensed multipliers ---
+  bool belos_type_given = false;
+  bool condense = false;
+  std::vector<std::pair<GO, GO>> pairing;
+  int dofs_per_node = 1;
+  // --- end condensed multipliers ---
 };
 
 LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::string& where)
@@ -27,6 +34,14 @@ LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::stri
   }
   if (params.isSublist("Belos")) impl_->belos = params.sublist("Belos");
   if (params.isSublist("MueLu")) impl_->muelu = params.sublist("MueLu");
+  // --- condensed multipliers ---
+  if (params.isParameter("condense_multipliers")) {
+    if (!params.isType<bool>("condense_multipliers"))
+      throw InputError(where + "/condense_multipliers: expected true or false");
+    impl_->condense = params.get<bool>("condense_multipliers");
+  }
+  impl_->belos_type_given = impl_->belos.isParameter("Solver Type");
+  // --- end condensed multipliers ---
   impl_->belos_type = impl_->belos.get<std::string>("Solver Type", "CG");
   impl_->belos.remove("Solver Type", false);
   if (!impl_->belos.isParameter("Convergence Tolerance"))
@@ -87,8 +102,37 @@ int solve_direct(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x
 
 }  // namespace
 
+// --- condensed multipliers ---
+void LinearSolver::set_multiplier_pairing(std::vector<std::pair<GO, GO>> lambda_to_slave_dof,
+                                          int dofs_per_node) {
+  impl_->pairing = std::move(lambda_to_slave_dof);
+  impl_->dofs_per_node = dofs_per_node;
+}
+
+bool LinearSolver::condenses_multipliers() const {
+  return impl_->condense;
+}
+
 int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: linear solve"));
+  if (!impl_->condense || impl_->pairing.empty()) return solve_system(K, b, x, impl_->belos_type);
+  MultiplierCondensation condensation(impl_->pairing, impl_->dofs_per_node);
+  condensation.condense(*K, b);
+  Vector y(condensation.matrix()->getRowMap());
+  // A reduced row with a zero diagonal (a prescribed slave dof whose node's multiplier rows
+  // do not involve that multiplier: tied or sticking) defeats relaxation smoothers: such a
+  // reduced system goes to the direct solver.
+  const int iterations = condensation.statistics().zero_diagonals > 0
+                             ? solve_direct(condensation.matrix(), condensation.rhs(), y)
+                             : solve_system(condensation.matrix(), condensation.rhs(), y,
+                                            impl_->belos_type_given ? impl_->belos_type : "GMRES");
+  condensation.expand(y, x);
+  return iterations;
+}
+// --- end condensed multipliers ---
+
+int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
+                               const std::string& belos_type) {
   if (impl_->type == "amesos2") return solve_direct(K, b, x);
 
   // Belos + MueLu.
@@ -107,10 +151,10 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   problem->setProblem();
   Belos::SolverFactory<double, MultiVector, Operator> factory;
   auto params = Teuchos::rcp(new Teuchos::ParameterList(impl_->belos));
-  auto solver = factory.create(impl_->belos_type, params);
+  auto solver = factory.create(belos_type, params);
   solver->setProblem(problem);
   if (solver->solve() != Belos::Converged) {
-    throw std::runtime_error("linear solver " + impl_->belos_type + " did not converge in " +
+    throw std::runtime_error("linear solver " + belos_type + " did not converge in " +
                              std::to_string(solver->getNumIters()) + " iterations");
   }
   return solver->getNumIters();

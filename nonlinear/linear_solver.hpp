@@ -7,9 +7,19 @@
 //   type: belos              Krylov solver `Belos/Solver Type` (CG default, or GMRES) with a
 //                            MueLu preconditioner (`MueLu` sublist passed through; on more than
 //                            one rank the coarse solve defaults to relaxation, not KLU2).
+// --- condensed multipliers (nonlinear/condensed_solve.hpp) ---
+//   condense_multipliers: true   (default false) with either type: the paired multipliers
+//                            (set_multiplier_pairing) are condensed per slave node and the
+//                            displacement-only system is solved (Belos default: GMRES, the
+//                            reduced matrix is not symmetric), then λ is recovered. A
+//                            reduced system with a zero diagonal (prescribed slave dof on a
+//                            tied/sticking node) is solved directly even with type: belos.
+// --- end condensed multipliers ---
 
 #include <Teuchos_ParameterList.hpp>
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "assembly/tpetra_types.hpp"
 
@@ -26,7 +36,18 @@ class LinearSolver {
   /// Throws std::runtime_error if the solve fails or does not converge.
   int solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x);
 
+  // --- condensed multipliers ---
+  /// The multiplier dofs and the slave dofs carrying them: (λ GID, slave u GID), the same
+  /// complete list on every rank; slave dofs s of one node share s / dofs_per_node. Used by
+  /// solve() when `condense_multipliers: true`; without pairs the system is solved as given.
+  void set_multiplier_pairing(std::vector<std::pair<GO, GO>> lambda_to_slave_dof,
+                              int dofs_per_node = 1);
+  bool condenses_multipliers() const;
+  // --- end condensed multipliers ---
+
  private:
+  int solve_system(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
+                   const std::string& belos_type);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -423,7 +423,10 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
     xi_norm = std::sqrt(xi_norm);
     for (int k = 0; k < dim - 1; ++k) c.slip_increment[j][k] = slip[k];
     const double mu = c.input.friction_coefficient;
-    if (xi_norm < mu * augmented) {  // stick
+    // Stick includes |ξ| = μ s: at the start of a step (λ = 0, no slip) every node starts
+    // stuck, the usual initial guess; starting in slip leaves a body held by friction alone
+    // without tangential stiffness (a singular Jacobian). μ = 0 always slips (frictionless).
+    if (mu > 0.0 && xi_norm <= mu * (augmented + c.active_tolerance)) {  // stick
       c.active[j] = 1;
       for (int k = 0; k < dim - 1; ++k) {
         add_F(c.lambda_gid(j, k + 1), c.c_t_hat * slip[k]);
@@ -506,6 +509,15 @@ bool MechanicsProblem::jacobian(const Vector&, Teuchos::RCP<Matrix>& J) {
   Vector rhs(map_);
   apply_dirichlet(*J, rhs, delta);
   return true;
+}
+
+std::vector<std::pair<GO, GO>> MechanicsProblem::multiplier_pairing() const {
+  std::vector<std::pair<GO, GO>> pairs;
+  for (const auto& c : interfaces_)
+    for (std::size_t j = 0; j < c->surface.slave_nodes.size(); ++j)
+      for (int d = 0; d < dim_; ++d)
+        pairs.emplace_back(c->lambda_gid(int(j), d), GO(c->surface.slave_nodes[j]) * dim_ + d);
+  return pairs;
 }
 
 std::vector<GlobalIndex> MechanicsProblem::slave_nodes() const {

@@ -60,6 +60,9 @@ class MechanicsProblem : public NonlinearProblem {
   /// Contact results at the last residual evaluation (empty without contact).
   ContactFields contact_fields() const;
   bool has_contact() const { return !interfaces_.empty(); }
+  /// (λ dof, slave displacement dof) pairs of every interface, for the condensed solve
+  /// (LinearSolver::set_multiplier_pairing).
+  std::vector<std::pair<GO, GO>> multiplier_pairing() const;
   /// Slave nodes of every interface (global node indices, each interface's sorted).
   std::vector<GlobalIndex> slave_nodes() const;
 

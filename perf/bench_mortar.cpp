@@ -9,7 +9,7 @@
 // MPI: rank r of p owns the contiguous slave range [n r/p, n (r+1)/p) and every master face;
 // the time of an iteration is the maximum over the ranks and "ns_per_slave" divides it by the
 // global number of slave elements (bench_main.hpp). Results and commands:
-// docs/performance_mortar.md.
+// docs/performance.md ("Mortar kernels").
 
 #include <chrono>
 #include <memory>

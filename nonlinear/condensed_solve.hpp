@@ -1,0 +1,69 @@
+#pragma once
+// Static condensation of the dual-mortar multipliers (Popp et al. 2009/2010, "condensed"
+// system), done generically on an assembled (u, λ) system J x = b (DESIGN.md §2 "Solve").
+//
+// Every multiplier dof t is paired with one slave displacement dof s(t), whose force row
+// holds D_t λ_t (J[s, t] = D_t ≠ 0) and no other multiplier that is not known directly.
+// Per pair, in this order of preference:
+//   A  λ-row t is an identity row (only J[t, t] ≠ 0): λ_t = b_t / J[t, t], substituted
+//      everywhere; the slave row s stays in the reduced system.
+//   B  J[s, t] ≠ 0: λ_t = (b_s − Σ_u J[s, u] x_u − Σ_A J[s, t'] λ_t') / J[s, t] is
+//      substituted into every other row with a λ_t column; row s is consumed and a λ-row of
+//      the same node takes its place in the reduced system.
+//   C  row s holds only its diagonal (a prescribed slave dof, whose λ column was eliminated):
+//      x_s = b_s / J[s, s] is known; the unknown of slot s becomes λ_t, and a λ-row of the
+//      node takes the place of row s.
+// The reduced system lives on the displacement dofs of J's row map (every GID that is not a
+// paired multiplier). Within a node (the pairs whose slave dofs share s / dofs_per_node),
+// the λ-rows are assigned to the node's B/C slots by the permutation with the largest
+// product of |diagonal| / max|row|, then each such row is scaled so that its diagonal is
+// positive and as large as |J[s, s]|: the reduced matrix keeps a stiffness-like diagonal
+// (for relaxation smoothers and MueLu); it is not symmetric. The row assignment and scaling
+// do not change the solution.
+//
+// Any other structure (a slave row with two unknown multipliers, a pair of type C whose
+// slave row has off-diagonal entries) is reported with std::runtime_error on every rank.
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "assembly/tpetra_types.hpp"
+
+namespace grout {
+
+/// (multiplier GID, slave displacement GID), one entry per multiplier dof; the same complete
+/// list on every rank.
+using MultiplierPairing = std::vector<std::pair<GO, GO>>;
+
+class MultiplierCondensation {
+ public:
+  /// Throws std::invalid_argument if a multiplier or a slave dof occurs twice, or a
+  /// multiplier is also a slave dof.
+  MultiplierCondensation(const MultiplierPairing& lambda_to_slave, int dofs_per_node = 1);
+  ~MultiplierCondensation();
+
+  /// Build the reduced system of J x = b (collective). J fill-complete with row map = range
+  /// map = domain map = b's map.
+  void condense(const Matrix& J, const Vector& b);
+  /// The reduced matrix and right-hand side, on the displacement dofs of J's row map.
+  Teuchos::RCP<const Matrix> matrix() const;
+  const Vector& rhs() const;
+  /// The solution x of J x = b (on J's row map) from the solution y of the reduced system.
+  void expand(const Vector& y, Vector& x) const;
+
+  struct Statistics {
+    int identity = 0;        ///< pairs of kind A
+    int eliminated = 0;      ///< pairs of kind B
+    int swapped = 0;         ///< pairs of kind C
+    int zero_diagonals = 0;  ///< reduced rows left with a zero diagonal (direct solver only)
+  };
+  /// Of the last condense(), global.
+  const Statistics& statistics() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace grout

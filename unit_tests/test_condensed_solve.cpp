@@ -1,0 +1,424 @@
+// Condensation of the dual-mortar multipliers (nonlinear/condensed_solve.hpp) on 1 and 2
+// ranks: the condensed solve of a (u, λ) system equals the full direct solve, with Amesos2
+// and with Belos GMRES + MueLu, on a synthetic system with every kind of multiplier row
+// (identity, active frictionless, slip-like, tied, with prescribed slave dofs) and on the
+// Jacobians of MechanicsProblem for two-block contact meshes in 2D and 3D (frictionless,
+// frictional, tied).
+
+#include <gtest/gtest.h>
+
+#include <Tpetra_Core.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <random>
+#include <set>
+
+#include "assembly/contact_surface.hpp"
+#include "assembly/solid_problem.hpp"
+#include "io/errors.hpp"
+#include "io/mesh_generators.hpp"
+#include "nonlinear/condensed_solve.hpp"
+#include "nonlinear/linear_solver.hpp"
+#include "nonlinear/mechanics_problem.hpp"
+
+namespace grout {
+namespace {
+
+struct System {
+  Teuchos::RCP<Matrix> J;
+  Teuchos::RCP<Vector> b;
+  MultiplierPairing pairing;
+  int dim = 2;
+};
+
+// ---------------------------------------------------------------------------------------
+// Synthetic (u, λ) system. 2D, 16 nodes (u GIDs node*2 + c), multipliers λ(j, c) = 32 +
+// 2j + c of the slave nodes below; nodes are split over the ranks in order and λ(j, ·) is
+// owned with its slave node.
+
+enum class Kind { inactive, frictionless, slip, tied };
+
+struct SlaveSpec {
+  int node;
+  Kind kind;
+  int prescribed = -1;  ///< a prescribed component of the slave node, or -1
+};
+
+System synthetic_system(bool zero_diagonal_case) {
+  const auto comm = Tpetra::getDefaultComm();
+  const int dim = 2, n_nodes = 16;
+  const GO n_u = GO(n_nodes) * dim;
+  std::vector<SlaveSpec> slaves = {
+      {3, Kind::frictionless},     {9, Kind::inactive},     {10, Kind::tied},   {11, Kind::slip},
+      {12, Kind::frictionless, 0}, {13, Kind::inactive, 1}, {14, Kind::slip, 1}};
+  if (zero_diagonal_case) slaves.push_back({15, Kind::tied, 0});  // needs a direct solver
+  const std::vector<int> masters = {4, 5, 6, 7, 8};
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const auto r = [&] { return unit(rng); };
+
+  std::map<std::pair<GO, GO>, double> A;
+  std::vector<double> rhs;
+  // Displacement block: a nonsymmetric, diagonally dominant stencil over nodes ±2.
+  for (int i = 0; i < n_nodes; ++i)
+    for (int k = std::max(0, i - 2); k <= std::min(n_nodes - 1, i + 2); ++k)
+      for (int a = 0; a < dim; ++a)
+        for (int c = 0; c < dim; ++c)
+          A[{GO(i) * dim + a, GO(k) * dim + c}] = (i == k && a == c) ? 12.0 + r() : r();
+  System sys;
+  sys.dim = dim;
+  const GO n_lambda = GO(slaves.size()) * dim;
+  const auto lambda = [&](int j, int c) { return n_u + GO(j) * dim + c; };
+  for (std::size_t j = 0; j < slaves.size(); ++j) {
+    const SlaveSpec& sl = slaves[j];
+    const double D = 1.0 + 0.5 * r();
+    const int m1 = masters[j % masters.size()], m2 = masters[(j + 2) % masters.size()];
+    const double M1 = 0.4 * D + 0.1 * r(), M2 = 0.6 * D + 0.1 * r();
+    for (int c = 0; c < dim; ++c) {
+      sys.pairing.emplace_back(lambda(int(j), c), GO(sl.node) * dim + c);
+      A[{GO(sl.node) * dim + c, lambda(int(j), c)}] = D;
+      A[{GO(m1) * dim + c, lambda(int(j), c)}] = -M1;
+      A[{GO(m2) * dim + c, lambda(int(j), c)}] = -M2;
+    }
+    const double theta = 3.0 * r(), c_hat = 10.0 + r();
+    const double n[2] = {std::cos(theta), std::sin(theta)}, t[2] = {-n[1], n[0]};
+    const auto gap_row = [&](GO row) {  // ĉ g: −ĉ n·(u_s − (M1 u_m1 + M2 u_m2) / D) + extras
+      for (int a = 0; a < dim; ++a) {
+        A[{row, GO(sl.node) * dim + a}] = -c_hat * n[a];
+        A[{row, GO(m1) * dim + a}] = c_hat * n[a] * M1 / D;
+        A[{row, GO(m2) * dim + a}] = c_hat * n[a] * M2 / D;
+        A[{row, GO(sl.node + 1) * dim + a}] = 0.3 * r();  // like derivatives of the normal
+      }
+    };
+    switch (sl.kind) {
+      case Kind::inactive:
+        for (int c = 0; c < dim; ++c) A[{lambda(int(j), c), lambda(int(j), c)}] = 1.0 + 0.2 * r();
+        break;
+      case Kind::frictionless:
+        gap_row(lambda(int(j), 0));
+        for (int a = 0; a < dim; ++a) A[{lambda(int(j), 1), lambda(int(j), a)}] = t[a];
+        break;
+      case Kind::slip:
+        gap_row(lambda(int(j), 0));
+        for (int a = 0; a < dim; ++a) {
+          A[{lambda(int(j), 1), lambda(int(j), a)}] = t[a] - 0.3 * n[a];
+          A[{lambda(int(j), 1), GO(sl.node) * dim + a}] = 0.3 * c_hat * n[a] + r();
+          A[{lambda(int(j), 1), GO(m1) * dim + a}] = r();
+        }
+        break;
+      case Kind::tied:
+        for (int c = 0; c < dim; ++c) {
+          A[{lambda(int(j), c), GO(sl.node) * dim + c}] = c_hat;
+          A[{lambda(int(j), c), GO(m1) * dim + c}] = -c_hat * M1 / D;
+          A[{lambda(int(j), c), GO(m2) * dim + c}] = -c_hat * M2 / D;
+        }
+        break;
+    }
+  }
+  // Prescribed slave dofs: row and column eliminated (as apply_dirichlet), diagonal kept.
+  std::set<GO> prescribed;
+  for (const SlaveSpec& sl : slaves)
+    if (sl.prescribed >= 0) prescribed.insert(GO(sl.node) * dim + sl.prescribed);
+  for (auto& [key, value] : A)
+    if ((prescribed.count(key.first) || prescribed.count(key.second)) && key.first != key.second)
+      value = 0.0;
+  rhs.resize(n_u + n_lambda);
+  for (auto& v : rhs) v = r();
+  for (GO g : prescribed) rhs[g] = 0.0;
+
+  // Map: owned nodes' dofs, then the owned multipliers.
+  const int rank = comm->getRank(), size = comm->getSize();
+  const auto owner = [&](int node) { return node * size / n_nodes; };
+  std::vector<GO> owned;
+  for (int i = 0; i < n_nodes; ++i)
+    if (owner(i) == rank)
+      for (int c = 0; c < dim; ++c) owned.push_back(GO(i) * dim + c);
+  for (std::size_t j = 0; j < slaves.size(); ++j)
+    if (owner(slaves[j].node) == rank)
+      for (int c = 0; c < dim; ++c) owned.push_back(lambda(int(j), c));
+  const auto map = Teuchos::rcp(new Map(n_u + n_lambda, owned.data(), owned.size(), 0, comm));
+  std::vector<std::size_t> counts(owned.size(), 0);
+  for (std::size_t i = 0; i < owned.size(); ++i)
+    for (auto it = A.lower_bound({owned[i], 0}); it != A.end() && it->first.first == owned[i]; ++it)
+      ++counts[i];
+  sys.J = Teuchos::rcp(new Matrix(map, Teuchos::ArrayView<const std::size_t>(counts)));
+  sys.b = Teuchos::rcp(new Vector(map));
+  auto bv = sys.b->getLocalViewHost(Tpetra::Access::OverwriteAll);
+  for (std::size_t i = 0; i < owned.size(); ++i) {
+    const GO g = owned[i];
+    bv(i, 0) = rhs[g];
+    std::vector<GO> cols;
+    std::vector<double> vals;
+    for (auto it = A.lower_bound({g, 0}); it != A.end() && it->first.first == g; ++it)
+      cols.push_back(it->first.second), vals.push_back(it->second);
+    if (!cols.empty())
+      sys.J->insertGlobalValues(g, Teuchos::ArrayView<const GO>(cols),
+                                Teuchos::ArrayView<const double>(vals));
+  }
+  sys.J->fillComplete(map, map);
+  return sys;
+}
+
+// ---------------------------------------------------------------------------------------
+// MechanicsProblem on two blocks: lower bottom fixed, upper top pressed down (and held
+// sideways), left sides on rollers (so one slave node has a prescribed dof).
+
+Input two_block_input(int dim, ContactKind type, double mu) {
+  Input input;
+  input.file = "test.yaml";
+  input.model.dimension = dim;
+  for (const char* block : {"lower", "upper"}) {
+    MaterialInput m;
+    m.name = block;
+    m.block = block;
+    m.youngs_modulus = std::string(block) == "lower" ? 1000.0 : 3000.0;
+    m.poissons_ratio = 0.3;
+    input.materials.push_back(m);
+  }
+  const auto fix = [&](const std::string& set, int component, const std::string& value) {
+    DirichletInput d;
+    d.name = set + "_" + std::to_string(component);
+    d.node_set = set;
+    d.component = component;
+    d.value = Expression(value, "test: " + d.name);
+    input.dirichlet.push_back(d);
+  };
+  for (int c = 0; c < dim; ++c) fix("lower_bottom", c, "0");
+  for (int c = 0; c < dim - 1; ++c) fix("upper_top", c, "0");
+  fix("upper_top", dim - 1, "-0.01*t");
+  fix(dim == 2 ? "lower_left" : "lower_xmin", 0, "0");
+  fix(dim == 2 ? "upper_left" : "upper_xmin", 0, "0");
+  ContactInput c;
+  c.name = "interface";
+  c.slave = "upper_bottom";
+  c.master = "lower_top";
+  c.geometry = ContactGeometry::current;
+  c.type = type;
+  c.friction_coefficient = mu;
+  input.contact.push_back(c);
+  return input;
+}
+
+struct MechanicsCase {
+  Mesh mesh;
+  Input input;
+  std::unique_ptr<SolidProblem> solid;
+  std::unique_ptr<MechanicsProblem> problem;
+  System sys;
+  int active = 0;
+};
+
+// J and −F of the mechanics problem at a perturbed state (a mix of active and inactive
+// slave nodes for contact).
+void mechanics_system(MechanicsCase& mc, int dim, ContactKind type, double mu, int refine = 1) {
+  const auto comm = Tpetra::getDefaultComm();
+  const int k = refine;
+  mc.mesh = dim == 2 ? two_block_mesh_2d(3 * k, 2 * k, 4 * k, 2 * k)
+                     : two_block_mesh_3d(2 * k, 2 * k, k, 3 * k, 2 * k, k);
+  mc.input = two_block_input(dim, type, mu);
+  mc.solid = std::make_unique<SolidProblem>(mc.mesh, mc.input, comm);
+  mc.problem = std::make_unique<MechanicsProblem>(*mc.solid, mc.mesh, mc.input);
+  MechanicsProblem& problem = *mc.problem;
+  Vector x(problem.map()), F(problem.map());
+  const GO n_u = GO(mc.mesh.num_nodes()) * dim;
+  {
+    auto xv = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    std::uniform_real_distribution<double> r(-1.0, 1.0);
+    for (std::size_t i = 0; i < problem.map()->getNodeNumElements(); ++i) {
+      const GO g = problem.map()->getGlobalElement(LO(i));
+      std::mt19937 local(unsigned(g) * 7919u + 5u);  // same value on any rank count
+      const double v = r(local);
+      // λ_n = n·λ with n = −e_dim on the upper body's bottom: λ_dim < 0 is compressive.
+      xv(i, 0) = g < n_u ? 1e-3 * v : (g - n_u) % dim == dim - 1 ? -2.0 * v - 0.5 : v;
+    }
+  }
+  problem.begin_step(1.0, x);
+  EXPECT_TRUE(problem.residual(x, F));
+  mc.active = problem.active_set_size();
+  EXPECT_TRUE(problem.jacobian(x, mc.sys.J));
+  mc.sys.b = Teuchos::rcp(new Vector(problem.map()));
+  mc.sys.b->update(-1.0, F, 0.0);
+  mc.sys.dim = dim;
+  // The pairing the lead wires into MechanicsProblem: λ(j, c) ↔ slave node j's dof c.
+  const ContactSurface s = build_contact_surface(mc.mesh, mc.input, mc.input.contact[0]);
+  for (std::size_t j = 0; j < s.slave_nodes.size(); ++j)
+    for (int c = 0; c < dim; ++c)
+      mc.sys.pairing.emplace_back(n_u + GO(j) * dim + c, GO(s.slave_nodes[j]) * dim + c);
+}
+
+// ---------------------------------------------------------------------------------------
+
+double relative_difference(const Vector& a, const Vector& b) {
+  Vector d(a.getMap());
+  d.update(1.0, a, -1.0, b, 0.0);
+  return d.norm2() / b.norm2();
+}
+
+double relative_residual(const Matrix& A, const Vector& x, const Vector& b) {
+  Vector r(b.getMap());
+  A.apply(x, r);
+  r.update(1.0, b, -1.0);
+  return r.norm2() / b.norm2();
+}
+
+Teuchos::ParameterList direct_params(bool condense) {
+  Teuchos::ParameterList p;
+  p.set("type", "amesos2");
+  p.set("condense_multipliers", condense);
+  return p;
+}
+
+Teuchos::ParameterList belos_params(int dim, int coarse_max_size = 0) {
+  Teuchos::ParameterList p;
+  p.set("type", "belos");
+  p.set("condense_multipliers", true);
+  p.sublist("MueLu").set("verbosity", "none");
+  p.sublist("MueLu").set("number of equations", dim);
+  if (coarse_max_size > 0) {
+    p.sublist("MueLu").set("coarse: max size", coarse_max_size);
+    // Near 1e-12 GMRES reports a loss of accuracy on the finer 3D reduced systems.
+    p.sublist("Belos").set("Convergence Tolerance", 1e-10);
+  }
+  if (std::getenv("GROUT_COND_VERBOSE")) {
+    p.sublist("Belos").set("Verbosity", 33);
+    p.sublist("Belos").set("Output Frequency", 10);
+  }
+  return p;
+}
+
+/// Full direct solve vs condensed solves (amesos2 and, unless skipped, Belos + MueLu).
+void compare(const System& sys, double tolerance, bool with_belos, const std::string& label,
+             int coarse_max_size = 0) {
+  const auto map = sys.J->getRowMap();
+  Vector x_full(map), x_direct(map), x_belos(map);
+  LinearSolver full(direct_params(false), "test");
+  full.set_multiplier_pairing(sys.pairing, sys.dim);  // ignored: condense_multipliers false
+  full.solve(sys.J, *sys.b, x_full);
+  EXPECT_LT(relative_residual(*sys.J, x_full, *sys.b), 1e-12) << label;
+
+  LinearSolver direct(direct_params(true), "test");
+  direct.set_multiplier_pairing(sys.pairing, sys.dim);
+  EXPECT_TRUE(direct.condenses_multipliers());
+  direct.solve(sys.J, *sys.b, x_direct);
+  EXPECT_LT(relative_difference(x_direct, x_full), tolerance) << label << " (amesos2)";
+  EXPECT_LT(relative_residual(*sys.J, x_direct, *sys.b), tolerance) << label << " (amesos2)";
+
+  if (!with_belos) return;
+  LinearSolver belos(belos_params(sys.dim, coarse_max_size), "test");
+  belos.set_multiplier_pairing(sys.pairing, sys.dim);
+  const int iterations = belos.solve(sys.J, *sys.b, x_belos);
+  // Solved to a residual of 1e-10 on the multilevel cases: x to the condition number.
+  const double belos_tolerance = coarse_max_size > 0 ? 1e-6 : tolerance;
+  EXPECT_LT(relative_difference(x_belos, x_full), belos_tolerance) << label << " (belos)";
+  EXPECT_LT(relative_residual(*sys.J, x_belos, *sys.b), coarse_max_size > 0 ? 1e-6 : tolerance)
+      << label << " (belos)";
+  MultiplierCondensation condensation(sys.pairing, sys.dim);
+  condensation.condense(*sys.J, *sys.b);
+  const bool fallback = condensation.statistics().zero_diagonals > 0;
+  if (fallback) {
+    EXPECT_EQ(iterations, 1);
+  }
+  if (map->getComm()->getRank() == 0)
+    std::printf("[condensed] %s: %lld unknowns (reduced %lld), type belos: %s %d iterations\n",
+                label.c_str(), (long long)map->getGlobalNumElements(),
+                (long long)condensation.matrix()->getGlobalNumRows(),
+                fallback ? "zero diagonal -> direct," : "GMRES + MueLu", iterations);
+}
+
+TEST(CondensedSolve, SyntheticSystemMatchesFullSolve) {
+  const System sys = synthetic_system(false);
+  MultiplierCondensation condensation(sys.pairing, sys.dim);
+  condensation.condense(*sys.J, *sys.b);
+  const auto& st = condensation.statistics();
+  EXPECT_EQ(st.identity, 4);  // nodes 9 and 13 (inactive)
+  EXPECT_EQ(st.swapped, 2);   // nodes 12 (x) and 14 (y)
+  EXPECT_EQ(st.zero_diagonals, 0);
+  EXPECT_EQ(condensation.matrix()->getGlobalNumRows(), 32u);
+  compare(sys, 1e-10, true, "synthetic");
+}
+
+TEST(CondensedSolve, SwappedTiedRowFallsBackToTheDirectSolver) {
+  const System sys = synthetic_system(true);
+  MultiplierCondensation condensation(sys.pairing, sys.dim);
+  condensation.condense(*sys.J, *sys.b);
+  EXPECT_EQ(condensation.statistics().zero_diagonals, 1);
+  compare(sys, 1e-10, true, "synthetic with a prescribed tied slave dof (direct fallback)");
+}
+
+void check_mechanics(int dim, ContactKind type, double mu, const std::string& label, int refine = 1,
+                     int coarse_max_size = 0) {
+  MechanicsCase mc;
+  mechanics_system(mc, dim, type, mu, refine);
+  EXPECT_GT(mc.active, 0) << label;
+  MultiplierCondensation condensation(mc.sys.pairing, dim);
+  condensation.condense(*mc.sys.J, *mc.sys.b);
+  const auto& st = condensation.statistics();
+  if (mc.sys.J->getRowMap()->getComm()->getRank() == 0)
+    std::printf(
+        "[condensed] %s: active %d, pairs identity %d eliminated %d swapped %d, "
+        "zero diagonals %d\n",
+        label.c_str(), mc.active, st.identity, st.eliminated, st.swapped, st.zero_diagonals);
+  compare(mc.sys, 1e-8, true, label, coarse_max_size);  // zero diagonals: direct fallback
+}
+
+TEST(CondensedSolve, MechanicsFrictionless2D) {
+  check_mechanics(2, ContactKind::frictionless, 0.0, "2D frictionless");
+}
+TEST(CondensedSolve, MechanicsFrictional2D) {
+  check_mechanics(2, ContactKind::frictional, 0.3, "2D frictional");
+}
+TEST(CondensedSolve, MechanicsTied2D) {
+  check_mechanics(2, ContactKind::tied, 0.0, "2D tied");
+}
+TEST(CondensedSolve, MechanicsFrictionless3D) {
+  check_mechanics(3, ContactKind::frictionless, 0.0, "3D frictionless");
+}
+TEST(CondensedSolve, MechanicsFrictional3D) {
+  check_mechanics(3, ContactKind::frictional, 0.3, "3D frictional");
+}
+TEST(CondensedSolve, MechanicsTied3D) {
+  check_mechanics(3, ContactKind::tied, 0.0, "3D tied");
+}
+
+// Finer meshes and a small coarse grid, so that MueLu builds several levels.
+TEST(CondensedSolve, MechanicsMultilevel2D) {
+  check_mechanics(2, ContactKind::frictionless, 0.0, "2D frictionless, refined x8", 8, 100);
+  check_mechanics(2, ContactKind::frictional, 0.3, "2D frictional, refined x8", 8, 100);
+}
+TEST(CondensedSolve, MechanicsMultilevel3D) {
+  check_mechanics(3, ContactKind::frictionless, 0.0, "3D frictionless, refined x3", 3, 100);
+  check_mechanics(3, ContactKind::frictional, 0.3, "3D frictional, refined x3", 3, 100);
+}
+
+TEST(CondensedSolve, OptionIsValidated) {
+  Teuchos::ParameterList p;
+  p.set("type", "belos");
+  p.set("condense_multipliers", std::string("yes"));
+  try {
+    LinearSolver solver(p, "case.yaml: grout/solver/Linear Solver");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("grout/solver/Linear Solver/condense_multipliers"),
+              std::string::npos)
+        << e.what();
+  }
+  LinearSolver off(Teuchos::ParameterList(), "test");
+  EXPECT_FALSE(off.condenses_multipliers());
+}
+
+TEST(CondensedSolve, InvalidPairingIsRejected) {
+  EXPECT_THROW(MultiplierCondensation({{10, 1}, {11, 1}}), std::invalid_argument);
+  EXPECT_THROW(MultiplierCondensation({{10, 1}, {10, 2}}), std::invalid_argument);
+}
+
+TEST(CondensedSolve, WithoutPairingTheSystemIsSolvedAsGiven) {
+  const System sys = synthetic_system(false);
+  Vector x_full(sys.J->getRowMap()), x(sys.J->getRowMap());
+  LinearSolver(direct_params(false), "test").solve(sys.J, *sys.b, x_full);
+  LinearSolver(direct_params(true), "test").solve(sys.J, *sys.b, x);
+  EXPECT_LT(relative_difference(x, x_full), 1e-14);
+}
+
+}  // namespace
+}  // namespace grout
