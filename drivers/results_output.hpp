@@ -31,8 +31,8 @@ class ResultsOutput {
   std::vector<std::string> global_names_;
   std::unique_ptr<ExodusWriter> exodus_;
   std::ofstream summary_;
-  std::ofstream newton_log_;  ///< per Newton iteration of every converged step
-  std::ofstream profile_;     ///< 2D: slave-node contact results along the interface
+  std::ofstream newton_log_;                ///< per Newton iteration of every converged step
+  std::ofstream profile_;                   ///< 2D: slave-node contact results along the interface
   std::vector<GlobalIndex> profile_nodes_;  ///< slave nodes sorted by x, then y
 };
 

@@ -11,16 +11,16 @@
 
 namespace grout {
 
-constexpr int max_face_nodes = 4;     ///< line2: 2, tri3: 3, quad4: 4
-constexpr int max_clip_vertices = 8;  ///< convex tri/quad x tri/quad clip polygon
+constexpr int max_face_nodes = 4;        ///< line2: 2, tri3: 3, quad4: 4
+constexpr int max_clip_vertices = 8;     ///< convex tri/quad x tri/quad clip polygon
 constexpr int max_pair_candidates = 32;  ///< master candidates per slave element (search)
 
 enum class MortarStatus : int {
   ok = 0,
-  no_overlap = 1,        ///< the pair does not overlap (contributes nothing)
-  degenerate = 2,        ///< zero-length/area slave element or normal
-  projection_failed = 3, ///< a local Newton projection did not converge
-  capacity_exceeded = 4  ///< more candidates/vertices than the fixed capacities
+  no_overlap = 1,         ///< the pair does not overlap (contributes nothing)
+  degenerate = 2,         ///< zero-length/area slave element or normal
+  projection_failed = 3,  ///< a local Newton projection did not converge
+  capacity_exceeded = 4   ///< more candidates/vertices than the fixed capacities
 };
 
 enum class MortarIntegration : int { exact = 0, collocation = 1 };
@@ -28,9 +28,9 @@ enum class MortarIntegration : int { exact = 0, collocation = 1 };
 /// Contribution of one (slave element, master element) pair.
 template <class Scalar>
 struct MortarPairResult {
-  int n_slave = 0;   ///< nodes of the slave element
-  int n_master = 0;  ///< nodes of the master element
-  Scalar overlap;    ///< measure of the integration domain (length or area)
+  int n_slave = 0;                           ///< nodes of the slave element
+  int n_master = 0;                          ///< nodes of the master element
+  Scalar overlap;                            ///< measure of the integration domain (length or area)
   Scalar D[max_face_nodes];                  ///< D_jj (dual basis: D is diagonal)
   Scalar M[max_face_nodes][max_face_nodes];  ///< M_jl, j slave node, l master node
 };

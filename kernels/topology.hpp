@@ -25,30 +25,41 @@ KOKKOS_INLINE_FUNCTION constexpr int topology_dimension(Topology t) {
 
 KOKKOS_INLINE_FUNCTION constexpr int topology_num_nodes(Topology t) {
   switch (t) {
-    case Topology::line2: return 2;
-    case Topology::tri3: return 3;
-    case Topology::quad4: return 4;
-    case Topology::tet4: return 4;
-    case Topology::hex8: return 8;
+    case Topology::line2:
+      return 2;
+    case Topology::tri3:
+      return 3;
+    case Topology::quad4:
+      return 4;
+    case Topology::tet4:
+      return 4;
+    case Topology::hex8:
+      return 8;
   }
   return 0;
 }
 
 KOKKOS_INLINE_FUNCTION constexpr int topology_num_sides(Topology t) {
   switch (t) {
-    case Topology::line2: return 2;
-    case Topology::tri3: return 3;
-    case Topology::quad4: return 4;
-    case Topology::tet4: return 4;
-    case Topology::hex8: return 6;
+    case Topology::line2:
+      return 2;
+    case Topology::tri3:
+      return 3;
+    case Topology::quad4:
+      return 4;
+    case Topology::tet4:
+      return 4;
+    case Topology::hex8:
+      return 6;
   }
   return 0;
 }
 
 /// Topology of a side of an element of topology t (tet4 -> tri3, hex8 -> quad4, 2D -> line2).
 KOKKOS_INLINE_FUNCTION constexpr Topology side_topology(Topology t) {
-  return t == Topology::tet4 ? Topology::tri3
-                             : t == Topology::hex8 ? Topology::quad4 : Topology::line2;
+  return t == Topology::tet4   ? Topology::tri3
+         : t == Topology::hex8 ? Topology::quad4
+                               : Topology::line2;
 }
 
 /// \brief 0-based local nodes of Exodus side `side` (1-based) of topology t.
@@ -62,9 +73,17 @@ KOKKOS_INLINE_FUNCTION int side_local_nodes(Topology t, int side, int nodes[max_
   if (side < 1 || side > topology_num_sides(t)) return 0;
   const int s = side - 1;
   switch (t) {
-    case Topology::line2: nodes[0] = s; return 1;
-    case Topology::tri3: nodes[0] = tri3[s][0]; nodes[1] = tri3[s][1]; return 2;
-    case Topology::quad4: nodes[0] = quad4[s][0]; nodes[1] = quad4[s][1]; return 2;
+    case Topology::line2:
+      nodes[0] = s;
+      return 1;
+    case Topology::tri3:
+      nodes[0] = tri3[s][0];
+      nodes[1] = tri3[s][1];
+      return 2;
+    case Topology::quad4:
+      nodes[0] = quad4[s][0];
+      nodes[1] = quad4[s][1];
+      return 2;
     case Topology::tet4:
       for (int i = 0; i < 3; ++i) nodes[i] = tet4[s][i];
       return 3;

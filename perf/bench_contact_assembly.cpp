@@ -49,12 +49,13 @@ struct CaseKey {
   int dim = 2;
   bool current = false;
   int n = 0;
+  bool frictional = false;  ///< Coulomb, μ = 0.3 (mixed stick and slip), else frictionless
   bool operator==(const CaseKey& o) const {
-    return dim == o.dim && current == o.current && n == o.n;
+    return dim == o.dim && current == o.current && n == o.n && frictional == o.frictional;
   }
 };
 
-Input contact_input(int dim, bool with_contact, bool current, double delta) {
+Input contact_input(int dim, bool with_contact, bool current, double delta, bool frictional) {
   Input input;
   input.file = "bench_contact_assembly";
   input.model.dimension = dim;
@@ -84,6 +85,10 @@ Input contact_input(int dim, bool with_contact, bool current, double delta) {
     c.slave = "upper_bottom";
     c.master = "lower_top";
     c.geometry = current ? ContactGeometry::current : ContactGeometry::reference;
+    if (frictional) {
+      c.type = ContactKind::frictional;
+      c.friction_coefficient = 0.3;
+    }
     input.contact.push_back(c);
   }
   return input;
@@ -138,7 +143,7 @@ void fill_state(const ContactCase& c, ProblemState& p) {
 }
 
 void build(ContactCase& c, ProblemState& p, bool with_contact) {
-  p.input = contact_input(c.mesh.dimension, with_contact, c.key.current, c.delta);
+  p.input = contact_input(c.mesh.dimension, with_contact, c.key.current, c.delta, c.key.frictional);
   p.solid = std::make_unique<SolidProblem>(c.mesh, p.input, Tpetra::getDefaultComm());
   p.problem = std::make_unique<MechanicsProblem>(*p.solid, c.mesh, p.input);
   p.x = Teuchos::rcp(new Vector(p.problem->map()));
@@ -199,8 +204,9 @@ double timed(Work&& work) {
 
 enum class What { residual, jacobian };
 
-void contact_benchmark(benchmark::State& state, int dim, bool current, What what) {
-  ContactCase& c = contact_case(CaseKey{dim, current, int(state.range(0))});
+void contact_benchmark(benchmark::State& state, int dim, bool current, What what,
+                       bool frictional = false) {
+  ContactCase& c = contact_case(CaseKey{dim, current, int(state.range(0)), frictional});
   Teuchos::Time& contact_timer =
       *Teuchos::TimeMonitor::getNewTimer("grout: contact (search, integration, assembly)");
   double with_total = 0.0, without_total = 0.0, timer_total = 0.0;
@@ -238,6 +244,12 @@ void residual_benchmark(benchmark::State& state, int dim, bool current) {
 void jacobian_benchmark(benchmark::State& state, int dim, bool current) {
   contact_benchmark(state, dim, current, What::jacobian);
 }
+void frictional_residual_benchmark(benchmark::State& state, int dim, bool current) {
+  contact_benchmark(state, dim, current, What::residual, true);
+}
+void frictional_jacobian_benchmark(benchmark::State& state, int dim, bool current) {
+  contact_benchmark(state, dim, current, What::jacobian, true);
+}
 
 void register_benchmarks() {
   using benchmark::RegisterBenchmark;
@@ -260,6 +272,19 @@ void register_benchmarks() {
             ->UseManualTime()
             ->Unit(benchmark::kMillisecond);
       }
+    }
+    // Coulomb friction (μ = 0.3) on the reference geometry: the frictional NCP rows.
+    const std::string name = std::to_string(dim) + "d_reference_frictional";
+    for (const int n :
+         dim == 2 ? std::vector<int>{100, 1000, 10000} : std::vector<int>{8, 16, 32}) {
+      RegisterBenchmark(("residual/" + name).c_str(), frictional_residual_benchmark, dim, false)
+          ->Arg(n)
+          ->UseManualTime()
+          ->Unit(benchmark::kMillisecond);
+      RegisterBenchmark(("jacobian/" + name).c_str(), frictional_jacobian_benchmark, dim, false)
+          ->Arg(n)
+          ->UseManualTime()
+          ->Unit(benchmark::kMillisecond);
     }
   }
 }

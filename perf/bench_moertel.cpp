@@ -9,8 +9,8 @@
 //   moertel_sum_D, grout_sum_D (Σ D: both must equal the slave length/area),
 //   moertel_complete_ms (Interface::Complete, untimed).
 // Moertel's Mortar_Integrate also assembles D and M into Epetra_CrsMatrix objects, which
-// Grout leaves to a later scatter: see docs/performance.md ("Mortar kernels"). Moertel's default Gauss
-// rules are set to Grout's: 5 points per 2D overlap segment, 12 per 3D integration triangle.
+// Grout leaves to a later scatter: see docs/performance.md ("Mortar kernels"). Moertel's default
+// Gauss rules are set to Grout's: 5 points per 2D overlap segment, 12 per 3D integration triangle.
 
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_Map.h>
