@@ -5,19 +5,22 @@
 //   box(e) = [min_k x_k − δ_e, max_k x_k + δ_e],  δ_e = factor · max_d (max_k x_kd − min_k x_kd)
 //
 // Master boxes are binned in a uniform grid of cell size h = mean enlarged master box extent,
-// stored as a hashed CSR (cell → bucket: 4^dim-cell blocks hashed, cells of a block
-// consecutive, mod 2^p ≥ 2 n_master):
-// count → exclusive prefix sum → fill, with Kokkos::atomic_fetch_add so any execution space
-// works. Each slave box visits only the cells it overlaps (O(1) per query for meshes of
-// comparable size, O(n) overall); hash collisions only add box tests. Output per slave face:
+// stored as a hashed CSR (cell → bucket: blocks of 64 cells in 3D (4×4×4), of 16 cells in 2D
+// (16 × 1 along the longer grid axis, 4×4 if the grid is nearly square) hashed, cells of a
+// block consecutive, mod 2^p ≥ n_master (2D) or 2 n_master (3D)): one pass computes the
+// master boxes and the grid bounds, then count → exclusive prefix sum → fill (counting the
+// counts down, no second reset), with Kokkos::atomic_fetch_add so any execution space works.
+// The query computes each slave box on the fly and visits only the cells it overlaps (O(1)
+// per query for meshes of comparable size, O(n) overall); hash collisions only add box tests.
+// The passes are compiled per dimension (coarse_search dispatches on dim). Output per slave face:
 // at most max_pair_candidates master ids, sorted ascending, −1 after the last (a fixed-capacity
 // CSR: row s starts at s · max_pair_candidates), and their count. A brute-force O(n_s n_m)
 // reference with the same contract is provided for tests.
 //
 // Repeated searches (every Newton iterate, or a benchmark) pass a CoarseSearchWorkspace: its
-// work arrays (boxes, bucket offsets and cursors, entries) grow to the largest size seen and are
-// reused, so a search of an unchanged or smaller problem allocates nothing. The overloads
-// without a workspace use a temporary one.
+// work arrays (master boxes, bucket offsets and cursors, entries) grow to the largest size seen
+// and are reused, so a search of an unchanged or smaller problem allocates nothing. The
+// overloads without a workspace use a temporary one.
 
 #include <Kokkos_Core.hpp>
 #include <cmath>
@@ -48,6 +51,34 @@ KOKKOS_INLINE_FUNCTION void face_bounding_box(int dim, int n_nodes,
   }
 }
 
+namespace detail {
+/// face_bounding_box of row f of a face table (−1 padding), read straight from coords
+/// (same values as gather_face_coordinates + face_bounding_box, without the copy).
+template <class Faces, class Coords>
+KOKKOS_INLINE_FUNCTION void face_box(const Faces& faces, int f, const Coords& coords, int dim,
+                                     double factor, double lo[3], double hi[3]) {
+  const int n_cols = static_cast<int>(faces.extent(1));
+  lo[2] = hi[2] = 0.0;
+  const int n0 = n_cols > 0 ? faces(f, 0) : -1;
+  for (int d = 0; d < dim; ++d) lo[d] = hi[d] = n0 >= 0 ? coords(n0, d) : 0.0;
+  for (int k = 1; k < n_cols && k < max_face_nodes; ++k) {
+    const int node = faces(f, k);
+    if (node < 0 || n0 < 0) break;
+    for (int d = 0; d < dim; ++d) {
+      const double x = coords(node, d);
+      lo[d] = x < lo[d] ? x : lo[d];
+      hi[d] = x > hi[d] ? x : hi[d];
+    }
+  }
+  double extent = 0.0;
+  for (int d = 0; d < dim; ++d) extent = hi[d] - lo[d] > extent ? hi[d] - lo[d] : extent;
+  for (int d = 0; d < dim; ++d) {
+    lo[d] -= factor * extent;
+    hi[d] += factor * extent;
+  }
+}
+}  // namespace detail
+
 /// \brief Closed boxes a and b (rows: lo[0..2], hi[0..2]) intersect in the first dim axes.
 template <class BoxA, class BoxB>
 KOKKOS_INLINE_FUNCTION bool boxes_overlap(int dim, const BoxA& a, int i, const BoxB& b, int j) {
@@ -75,7 +106,8 @@ KOKKOS_INLINE_FUNCTION bool insert_candidate(int row[max_pair_candidates], int& 
 /// initialisation) to the largest size requested and is never shrunk.
 template <class MemorySpace>
 struct CoarseSearchWorkspace {
-  Kokkos::View<double**, MemorySpace> slave_boxes, master_boxes;  ///< (≥ n_faces, 6)
+  /// (≥ n_faces, 6); slave_boxes is kept for compatibility, coarse_search no longer fills it
+  Kokkos::View<double**, MemorySpace> slave_boxes, master_boxes;
   Kokkos::View<int*, MemorySpace> offsets;  ///< (≥ n_buckets + 1) bucket → first entry
   Kokkos::View<int*, MemorySpace> cursor;   ///< (≥ n_buckets) counts, then fill cursors
   Kokkos::View<int*, MemorySpace> entries;  ///< (≥ Σ cells per master box) master ids
@@ -133,7 +165,22 @@ struct SearchGrid {
   std::int64_t n_cells[3] = {1, 1, 1};
   std::uint64_t mask = 0;  ///< n_buckets − 1 (n_buckets a power of two)
 
-  /// Cell range [c_lo, c_hi] (clamped to the grid) of a box; false if it misses the grid.
+  /// Cell range [c_lo, c_hi] (clamped to the grid) of the box [lo, hi]; false if it misses the
+  /// grid.
+  KOKKOS_INLINE_FUNCTION bool cell_range(const double lo[3], const double hi[3], int dim,
+                                         std::int64_t c_lo[3], std::int64_t c_hi[3]) const {
+    for (int d = 0; d < 3; ++d) c_lo[d] = c_hi[d] = 0;
+    for (int d = 0; d < dim; ++d) {
+      const double a = Kokkos::Experimental::floor((lo[d] - origin[d]) / h);
+      const double b = Kokkos::Experimental::floor((hi[d] - origin[d]) / h);
+      if (b < 0.0 || a > static_cast<double>(n_cells[d] - 1)) return false;
+      c_lo[d] = a < 0.0 ? 0 : static_cast<std::int64_t>(a);
+      c_hi[d] =
+          b > static_cast<double>(n_cells[d] - 1) ? n_cells[d] - 1 : static_cast<std::int64_t>(b);
+    }
+    return true;
+  }
+  /// cell_range of row f of boxes (rows: lo[0..2], hi[0..2]).
   template <class Boxes>
   KOKKOS_INLINE_FUNCTION bool cell_range(const Boxes& boxes, int f, int dim, std::int64_t c_lo[3],
                                          std::int64_t c_hi[3]) const {
@@ -148,20 +195,26 @@ struct SearchGrid {
     }
     return true;
   }
-  /// Bucket of cell (i, j, k): cells are grouped in blocks of 4×4(×4); a block's cells get
-  /// consecutive buckets (locality for neighbouring queries), blocks are spread by the
-  /// splitmix64 finaliser of the linear block index.
+  /// Bucket of cell (i, j, k): cells are grouped in blocks of 2^shift[0] × 2^shift[1]
+  /// (× 2^shift[2]) cells (4×4×4 in 3D; 16 × 1 or 1 × 16 along the longer axis in 2D, 4×4 if
+  /// square); a block's cells get consecutive buckets (locality for neighbouring queries),
+  /// blocks are spread by the splitmix64 finaliser of the linear block index.
   KOKKOS_INLINE_FUNCTION std::uint64_t bucket(std::int64_t i, std::int64_t j,
                                               std::int64_t k) const {
-    const std::int64_t nb0 = (n_cells[0] >> 2) + 1, nb1 = (n_cells[1] >> 2) + 1;
-    std::uint64_t z = static_cast<std::uint64_t>((i >> 2) + nb0 * ((j >> 2) + nb1 * (k >> 2)));
+    const std::int64_t nb0 = (n_cells[0] >> shift[0]) + 1, nb1 = (n_cells[1] >> shift[1]) + 1;
+    std::uint64_t z = static_cast<std::uint64_t>((i >> shift[0]) +
+                                                 nb0 * ((j >> shift[1]) + nb1 * (k >> shift[2])));
     z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
     z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
     z ^= z >> 31;
-    const std::uint64_t local = static_cast<std::uint64_t>((i & 3) + 4 * (j & 3) + 16 * (k & 3));
+    const std::uint64_t local = static_cast<std::uint64_t>(
+        (i & ((std::int64_t(1) << shift[0]) - 1)) +
+        ((j & ((std::int64_t(1) << shift[1]) - 1)) << shift[0]) +
+        ((k & ((std::int64_t(1) << shift[2]) - 1)) << (shift[0] + shift[1])));
     return ((z << block_bits) + local) & mask;
   }
-  int block_bits = 6;  ///< log2(cells per block): 4 in 2D, 6 in 3D
+  int block_bits = 6;        ///< log2(cells per block) = shift[0] + shift[1] + shift[2]
+  int shift[3] = {2, 2, 2};  ///< log2(block cells) per axis
 };
 
 /// Reduction of the master boxes: bounds and total extent (for the grid).
@@ -199,24 +252,58 @@ struct BoxStatsReduce {
   }
 };
 
-/// \brief Builds the hashed grid of the n_m master boxes (rows of `boxes`): counts per bucket
-/// (atomic), exclusive prefix sum into ws.offsets (n_buckets + 1), fill of ws.entries (master
-/// ids), all in the workspace. Launches "grout::coarse_search_bounds", "..._count",
-/// "..._offsets", "..._fill".
-template <class ExecSpace>
-SearchGrid bin_master_boxes(const ExecSpace& space,
-                            Kokkos::View<const double**, typename ExecSpace::memory_space> boxes,
-                            int n_m, int dim,
-                            CoarseSearchWorkspace<typename ExecSpace::memory_space>& ws) {
-  BoxStats stats;
-  Kokkos::parallel_reduce("grout::coarse_search_bounds",
-                          Kokkos::RangePolicy<ExecSpace>(space, 0, n_m),
-                          BoxStatsReduce<ExecSpace>{boxes, dim}, stats);
+/// Fused master pass: writes the enlarged box of every face into rows of `boxes` and reduces
+/// their BoxStats (as BoxStatsReduce over those rows).
+template <class ExecSpace, int Dim>
+struct FaceBoxesStatsReduce {
+  using value_type = BoxStats;
+  using memory_space = typename ExecSpace::memory_space;
+  Kokkos::View<const int**, memory_space> faces;
+  Kokkos::View<const double**, memory_space> coords;
+  Kokkos::View<double**, memory_space> boxes;
+  double factor;
+  static constexpr int dim = Dim;
+  KOKKOS_INLINE_FUNCTION void init(value_type& v) const {
+    BoxStatsReduce<ExecSpace>{boxes, dim}.init(v);
+  }
+  KOKKOS_INLINE_FUNCTION void join(volatile value_type& a, const volatile value_type& b) const {
+    BoxStatsReduce<ExecSpace>{boxes, dim}.join(a, b);
+  }
+  KOKKOS_INLINE_FUNCTION void operator()(const int f, value_type& v) const {
+    double lo[3], hi[3];
+    detail::face_box(faces, f, coords, dim, factor, lo, hi);
+    double e = 0.0;
+    for (int d = 0; d < 3; ++d) {
+      boxes(f, d) = lo[d];
+      boxes(f, 3 + d) = hi[d];
+    }
+    for (int d = 0; d < dim; ++d) {
+      v.lo[d] = lo[d] < v.lo[d] ? lo[d] : v.lo[d];
+      v.hi[d] = hi[d] > v.hi[d] ? hi[d] : v.hi[d];
+      e = hi[d] - lo[d] > e ? hi[d] - lo[d] : e;
+    }
+    v.extent += e;
+  }
+};
+
+namespace detail {
+/// Buckets of the hashed grid per master face (rounded up to a power of two): 1 in 2D (a curve
+/// fills its 16-cell blocks), 2 in 3D (a surface fills 16 of the 64 cells of a block).
+template <int Dim>
+constexpr std::uint64_t search_buckets_per_master = Dim == 2 ? 1 : 2;
+
+/// Hashed grid of n_m master boxes with known BoxStats (see bin_master_boxes).
+template <int Dim, class ExecSpace>
+SearchGrid bin_boxes(const ExecSpace& space,
+                     Kokkos::View<const double**, typename ExecSpace::memory_space> boxes, int n_m,
+                     const BoxStats& stats,
+                     CoarseSearchWorkspace<typename ExecSpace::memory_space>& ws) {
+  constexpr int dim = Dim;
   SearchGrid grid;
   std::uint64_t n_buckets = 1;
-  while (n_buckets < 2 * static_cast<std::uint64_t>(n_m)) n_buckets *= 2;
+  while (n_buckets < search_buckets_per_master<Dim> * static_cast<std::uint64_t>(n_m))
+    n_buckets *= 2;
   grid.mask = n_buckets - 1;
-  grid.block_bits = dim == 2 ? 4 : 6;
   if (n_m > 0) {
     double span = 0.0;
     for (int d = 0; d < dim; ++d)
@@ -229,6 +316,13 @@ SearchGrid bin_master_boxes(const ExecSpace& space,
           static_cast<std::int64_t>(std::floor((stats.hi[d] - stats.lo[d]) / grid.h)) + 1;
     }
   }
+  if (dim == 2) {  // a 2D interface is a curve: blocks of 16 cells along its longer axis
+    const std::int64_t n0 = grid.n_cells[0], n1 = grid.n_cells[1];
+    grid.shift[0] = n0 >= 4 * n1 ? 4 : (n1 >= 4 * n0 ? 0 : 2);
+    grid.shift[1] = 4 - grid.shift[0];
+    grid.shift[2] = 0;
+  }
+  grid.block_bits = grid.shift[0] + grid.shift[1] + grid.shift[2];
   detail::ensure_rows(ws.offsets, "grout::search_offsets", n_buckets + 1);
   detail::ensure_rows(ws.cursor, "grout::search_cursor", n_buckets);
   const auto offsets = ws.offsets;
@@ -256,8 +350,8 @@ SearchGrid bin_master_boxes(const ExecSpace& space,
       total);
   detail::ensure_rows(ws.entries, "grout::search_entries", static_cast<size_t>(total));
   const auto entries = ws.entries;
-  Kokkos::deep_copy(space, Kokkos::subview(cursor, Kokkos::make_pair(size_t(0), size_t(n_buckets))),
-                    0);
+  // The counts left in cursor count down to 0: a bucket is filled from its end (the order
+  // inside a bucket is irrelevant, candidates are sorted on insertion).
   Kokkos::parallel_for(
       "grout::coarse_search_fill", Kokkos::RangePolicy<ExecSpace>(space, 0, n_m),
       KOKKOS_LAMBDA(const int m) {
@@ -267,10 +361,28 @@ SearchGrid bin_master_boxes(const ExecSpace& space,
           for (std::int64_t j = a[1]; j <= b[1]; ++j)
             for (std::int64_t i = a[0]; i <= b[0]; ++i) {
               const std::uint64_t bk = grid.bucket(i, j, k);
-              entries(offsets(bk) + Kokkos::atomic_fetch_add(&cursor(bk), 1)) = m;
+              entries(offsets(bk) + Kokkos::atomic_fetch_add(&cursor(bk), -1) - 1) = m;
             }
       });
   return grid;
+}
+}  // namespace detail
+
+/// \brief Builds the hashed grid of the n_m master boxes (rows of `boxes`): counts per bucket
+/// (atomic), exclusive prefix sum into ws.offsets (n_buckets + 1), fill of ws.entries (master
+/// ids), all in the workspace. Launches "grout::coarse_search_bounds", "..._count",
+/// "..._offsets", "..._fill".
+template <class ExecSpace>
+SearchGrid bin_master_boxes(const ExecSpace& space,
+                            Kokkos::View<const double**, typename ExecSpace::memory_space> boxes,
+                            int n_m, int dim,
+                            CoarseSearchWorkspace<typename ExecSpace::memory_space>& ws) {
+  BoxStats stats;
+  Kokkos::parallel_reduce("grout::coarse_search_bounds",
+                          Kokkos::RangePolicy<ExecSpace>(space, 0, n_m),
+                          BoxStatsReduce<ExecSpace>{boxes, dim}, stats);
+  return dim == 2 ? detail::bin_boxes<2>(space, boxes, n_m, stats, ws)
+                  : detail::bin_boxes<3>(space, boxes, n_m, stats, ws);
 }
 
 /// bin_master_boxes into fresh offsets (n_buckets + 1) and entries arrays.
@@ -286,6 +398,63 @@ SearchGrid bin_master_boxes(const ExecSpace& space,
   entries = ws.entries;
   return grid;
 }
+
+namespace detail {
+/// coarse_search after the argument checks, for a fixed dimension.
+template <int Dim, class ExecSpace>
+MortarStatus coarse_search_impl(
+    const ExecSpace& space, CoarseSearchWorkspace<typename ExecSpace::memory_space>& workspace,
+    Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
+    Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
+    Kokkos::View<const double**, typename ExecSpace::memory_space> coords, double factor,
+    Kokkos::View<int*, typename ExecSpace::memory_space> n_candidates,
+    Kokkos::View<int**, typename ExecSpace::memory_space> candidates) {
+  constexpr int dim = Dim;
+  const int n_m = static_cast<int>(master_faces.extent(0));
+  detail::ensure_rows(workspace.master_boxes, "grout::master_boxes", master_faces.extent(0));
+  const auto m_boxes = workspace.master_boxes;
+  // One pass over the masters computes their boxes and the grid bounds; the slave boxes are
+  // computed inside the query (no slave box array).
+  BoxStats stats;
+  Kokkos::parallel_reduce(
+      "grout::coarse_search_bounds", Kokkos::RangePolicy<ExecSpace>(space, 0, n_m),
+      FaceBoxesStatsReduce<ExecSpace, Dim>{master_faces, coords, m_boxes, factor}, stats);
+  const SearchGrid grid = detail::bin_boxes<Dim, ExecSpace>(space, m_boxes, n_m, stats, workspace);
+  const auto offsets = workspace.offsets;
+  const auto entries = workspace.entries;
+  int status = 0;
+  Kokkos::parallel_reduce(
+      "grout::coarse_search_query", Kokkos::RangePolicy<ExecSpace>(space, 0, slave_faces.extent(0)),
+      KOKKOS_LAMBDA(const int s, int& worst) {
+        int row[max_pair_candidates];
+        int count = 0;
+        bool complete = true;
+        double lo[3], hi[3];
+        detail::face_box(slave_faces, s, coords, dim, factor, lo, hi);
+        std::int64_t a[3], b[3];
+        if (grid.cell_range(lo, hi, dim, a, b)) {
+          for (std::int64_t k = a[2]; k <= b[2]; ++k)
+            for (std::int64_t j = a[1]; j <= b[1]; ++j)
+              for (std::int64_t i = a[0]; i <= b[0]; ++i) {
+                const std::uint64_t bk = grid.bucket(i, j, k);
+                for (int e = offsets(bk); e < offsets(bk + 1); ++e) {
+                  const int m = entries(e);
+                  bool overlap = true;
+                  for (int d = 0; d < dim; ++d)
+                    overlap = overlap && !(lo[d] > m_boxes(m, 3 + d) || m_boxes(m, d) > hi[d]);
+                  if (overlap) complete = insert_candidate(row, count, m) && complete;
+                }
+              }
+        }
+        for (int c = 0; c < max_pair_candidates; ++c) candidates(s, c) = c < count ? row[c] : -1;
+        n_candidates(s) = count;
+        if (!complete) worst = static_cast<int>(MortarStatus::capacity_exceeded);
+      },
+      Kokkos::Max<int>(status));
+  status = status > 0 ? status : 0;  // Max starts from INT_MIN (empty range)
+  return static_cast<MortarStatus>(status);
+}
+}  // namespace detail
 
 /// \brief Candidate master faces of every slave face (binned search, see file comment).
 /// \pre faces: (n, ≤ max_face_nodes) node ids, −1 padding; coords (n_nodes, dim), dim ∈ {2, 3};
@@ -307,43 +476,10 @@ MortarStatus coarse_search(const ExecSpace& space,
       candidates.extent(0) != slave_faces.extent(0) ||
       static_cast<int>(candidates.extent(1)) != max_pair_candidates)
     return MortarStatus::degenerate;
-  detail::ensure_rows(workspace.slave_boxes, "grout::slave_boxes", slave_faces.extent(0));
-  detail::ensure_rows(workspace.master_boxes, "grout::master_boxes", master_faces.extent(0));
-  const auto s_boxes = workspace.slave_boxes;
-  const auto m_boxes = workspace.master_boxes;
-  fill_face_boxes(space, slave_faces, coords, factor, s_boxes);
-  fill_face_boxes(space, master_faces, coords, factor, m_boxes);
-  const SearchGrid grid = bin_master_boxes<ExecSpace>(
-      space, m_boxes, static_cast<int>(master_faces.extent(0)), dim, workspace);
-  const auto offsets = workspace.offsets;
-  const auto entries = workspace.entries;
-  int status = 0;
-  Kokkos::parallel_reduce(
-      "grout::coarse_search_query", Kokkos::RangePolicy<ExecSpace>(space, 0, slave_faces.extent(0)),
-      KOKKOS_LAMBDA(const int s, int& worst) {
-        int row[max_pair_candidates];
-        int count = 0;
-        bool complete = true;
-        std::int64_t a[3], b[3];
-        if (grid.cell_range(s_boxes, s, dim, a, b)) {
-          for (std::int64_t k = a[2]; k <= b[2]; ++k)
-            for (std::int64_t j = a[1]; j <= b[1]; ++j)
-              for (std::int64_t i = a[0]; i <= b[0]; ++i) {
-                const std::uint64_t bk = grid.bucket(i, j, k);
-                for (int e = offsets(bk); e < offsets(bk + 1); ++e) {
-                  const int m = entries(e);
-                  if (boxes_overlap(dim, s_boxes, s, m_boxes, m))
-                    complete = insert_candidate(row, count, m) && complete;
-                }
-              }
-        }
-        for (int c = 0; c < max_pair_candidates; ++c) candidates(s, c) = c < count ? row[c] : -1;
-        n_candidates(s) = count;
-        if (!complete) worst = static_cast<int>(MortarStatus::capacity_exceeded);
-      },
-      Kokkos::Max<int>(status));
-  status = status > 0 ? status : 0;  // Max starts from INT_MIN (empty range)
-  return static_cast<MortarStatus>(status);
+  return dim == 2 ? detail::coarse_search_impl<2>(space, workspace, slave_faces, master_faces,
+                                                  coords, factor, n_candidates, candidates)
+                  : detail::coarse_search_impl<3>(space, workspace, slave_faces, master_faces,
+                                                  coords, factor, n_candidates, candidates);
 }
 
 /// coarse_search with a temporary workspace (allocates its work arrays on every call).
