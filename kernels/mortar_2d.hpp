@@ -92,8 +92,6 @@ KOKKOS_INLINE_FUNCTION MortarStatus project_along_normal_to_master_2d(const Scal
                                                                       const Scalar x[2],
                                                                       const Scalar n[2],
                                                                       Scalar& eta) {
-  using std::abs;
-  using std::sqrt;
   Scalar am[2], b[2];
   for (int k = 0; k < 2; ++k) {
     am[k] = 0.5 * (xm[0][k] + xm[1][k]) - x[k];
@@ -101,8 +99,9 @@ KOKKOS_INLINE_FUNCTION MortarStatus project_along_normal_to_master_2d(const Scal
   }
   const Scalar den = cross_2d(b, n);
   eta = 0.0;
-  const Scalar scale = sqrt((b[0] * b[0] + b[1] * b[1]) * (n[0] * n[0] + n[1] * n[1]));
-  if (!(abs(den) > 1e-14 * scale)) return MortarStatus::projection_failed;
+  // |b × n| > 1e-14 |b| |n|, squared (no square root per Gauss point).
+  const Scalar scale2 = (b[0] * b[0] + b[1] * b[1]) * (n[0] * n[0] + n[1] * n[1]);
+  if (!(den * den > 1e-28 * scale2)) return MortarStatus::projection_failed;
   eta = -cross_2d(am, n) / den;
   return MortarStatus::ok;
 }
