@@ -8,13 +8,6 @@ namespace grout {
 
 namespace {
 
-const ElementBlock& block_of(const Mesh& mesh, GlobalIndex element) {
-  for (const auto& b : mesh.blocks)
-    if (element >= b.first_element && element < b.first_element + b.num_elements()) return b;
-  throw InputError("mesh '" + mesh.file + "': element " + std::to_string(element + 1) +
-                   " is in no block");
-}
-
 SurfaceFaces faces_of(const Mesh& mesh, const Input& input, const ContactInput& contact,
                       const std::string& role, const std::string& set_name) {
   const std::string key = input.file + ": grout/contact/" + contact.name + "/" + role;
@@ -23,7 +16,12 @@ SurfaceFaces faces_of(const Mesh& mesh, const Input& input, const ContactInput& 
   if (set->elements.empty()) throw InputError(key + ": side set '" + set_name + "' is empty");
   SurfaceFaces faces;
   for (std::size_t i = 0; i < set->elements.size(); ++i) {
-    const ElementBlock& block = block_of(mesh, set->elements[i]);
+    const ElementBlock* found = mesh.block_of(set->elements[i]);
+    if (!found) {
+      throw InputError(key + ": side set '" + set_name + "' names element " +
+                       std::to_string(set->elements[i] + 1) + ", which is in no block");
+    }
+    const ElementBlock& block = *found;
     int local[max_side_nodes];
     const int n = side_local_nodes(block.topology, set->sides[i], local);
     if (n < 2) {
@@ -37,6 +35,7 @@ SurfaceFaces faces_of(const Mesh& mesh, const Input& input, const ContactInput& 
       nodes[a] = block.connectivity[e * block.nodes_per_element + local[a]];
     faces.nodes.push_back(nodes);
     faces.num_nodes.push_back(n);
+    faces.blocks.push_back(&block);
   }
   return faces;
 }

@@ -16,6 +16,7 @@ namespace grout {
 struct SurfaceFaces {
   std::vector<std::array<GlobalIndex, max_face_nodes>> nodes;  ///< global nodes, outward order
   std::vector<int> num_nodes;                                  ///< 2 (line2), 3 or 4
+  std::vector<const ElementBlock*> blocks;                     ///< block of each face's element
   std::size_t size() const { return nodes.size(); }
 };
 

@@ -14,9 +14,7 @@ namespace grout {
 namespace {
 
 const MaterialInput& material_of(const Input& input, const ElementBlock& block) {
-  for (const auto& m : input.materials) {
-    if (m.block == block.name || m.block == "id_" + std::to_string(block.id)) return m;
-  }
+  if (const MaterialInput* m = find_material(input, block)) return *m;
   throw InputError(input.file + ": grout/materials: no material for element block '" + block.name +
                    "'");
 }
@@ -177,9 +175,7 @@ void SolidProblem::build_loads() {
     }
     for (std::size_t i = 0; i < set->elements.size(); ++i) {
       const GlobalIndex e = set->elements[i];
-      const ElementBlock* block = nullptr;
-      for (const auto& b : mesh_.blocks)
-        if (e >= b.first_element && e < b.first_element + b.num_elements()) block = &b;
+      const ElementBlock* block = mesh_.block_of(e);
       int local[max_side_nodes];
       const int n = side_local_nodes(block->topology, set->sides[i], local);
       LoadedFace face;

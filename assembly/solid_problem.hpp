@@ -74,9 +74,6 @@ class SolidProblem {
   std::vector<std::string> stress_names() const;
 
   GlobalIndex num_global_nodes() const { return num_nodes_; }
-  int num_owned_nodes() const { return num_owned_nodes_; }
-  /// Global node index of column-map node k.
-  GlobalIndex column_node(int k) const { return column_nodes_[k]; }
 
  private:
   void build_maps(const Partition& partition);

@@ -218,12 +218,10 @@ void read_side_sets(const ReadOnlyFile& file, const Counts& c, Mesh& mesh) {
     // Validate side numbers against the owning block's topology.
     for (std::size_t i = 0; i < sides.size(); ++i) {
       const GlobalIndex e = ss.elements[i];
-      for (const auto& b : mesh.blocks) {
-        if (e < b.first_element || e >= b.first_element + b.num_elements()) continue;
-        if (ss.sides[i] < 1 || ss.sides[i] > topology_num_sides(b.topology))
-          fail(file.path(), set + " has side " + std::to_string(ss.sides[i]) + " on element " +
-                                std::to_string(e + 1) + " of block '" + b.name + "'");
-      }
+      const ElementBlock* b = mesh.block_of(e);
+      if (b && (ss.sides[i] < 1 || ss.sides[i] > topology_num_sides(b->topology)))
+        fail(file.path(), set + " has side " + std::to_string(ss.sides[i]) + " on element " +
+                              std::to_string(e + 1) + " of block '" + b->name + "'");
     }
     mesh.side_sets.push_back(std::move(ss));
   }

@@ -97,6 +97,9 @@ struct Input {
   OutputInput output;
 };
 
+/// The material assigned to `block` (by name or id_<n>); nullptr if none.
+const MaterialInput* find_material(const Input& input, const ElementBlock& block);
+
 /// Read and validate `grout:` from a YAML file. Throws InputError naming the file and key.
 Input read_input(const std::string& path);
 

@@ -58,6 +58,12 @@ class MeshCheck {
 
 }  // namespace
 
+const MaterialInput* find_material(const Input& input, const ElementBlock& block) {
+  for (const MaterialInput& m : input.materials)
+    if (block.named(m.block)) return &m;
+  return nullptr;
+}
+
 void check_input_against_mesh(const Input& input, const Mesh& mesh) {
   const MeshCheck check(input, mesh);
   const int dim = input.model.dimension;

@@ -12,6 +12,16 @@ const Entity* find_by_name(const std::vector<Entity>& entities, std::string_view
 }
 }  // namespace
 
+bool ElementBlock::named(std::string_view key) const {
+  return name == key || "id_" + std::to_string(id) == key;
+}
+
+const ElementBlock* Mesh::block_of(GlobalIndex element) const {
+  for (const auto& b : blocks)
+    if (b.contains(element)) return &b;
+  return nullptr;
+}
+
 const ElementBlock* Mesh::find_block(std::string_view name) const {
   return find_by_name(blocks, name);
 }

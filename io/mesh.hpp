@@ -21,6 +21,11 @@ struct ElementBlock {
   GlobalIndex num_elements() const {
     return nodes_per_element ? GlobalIndex(connectivity.size()) / nodes_per_element : 0;
   }
+  bool contains(GlobalIndex element) const {
+    return element >= first_element && element < first_element + num_elements();
+  }
+  /// True if `key` refers to this block: its Exodus name or "id_<n>".
+  bool named(std::string_view key) const;
 };
 
 struct SideSet {
@@ -54,6 +59,8 @@ struct Mesh {
   const ElementBlock* find_block(std::string_view name) const;
   const SideSet* find_side_set(std::string_view name) const;
   const NodeSet* find_node_set(std::string_view name) const;
+  /// The block holding global element `element`; nullptr if out of range.
+  const ElementBlock* block_of(GlobalIndex element) const;
 };
 
 }  // namespace grout

@@ -40,19 +40,12 @@ struct MechanicsProblem::Interface {
 
 namespace {
 
-double youngs_modulus_of(const Mesh& mesh, const Input& input, const SurfaceFaces& faces,
-                         const ContactSurface& s) {
-  // The material of the block holding the surface's first node.
-  const GlobalIndex node = faces.nodes[0][0];
-  for (const auto& block : mesh.blocks) {
-    for (GlobalIndex n : block.connectivity) {
-      if (n != node) continue;
-      for (const auto& m : input.materials)
-        if (m.block == block.name || m.block == "id_" + std::to_string(block.id))
-          return m.youngs_modulus;
-    }
-  }
-  throw InputError(input.file + ": grout/contact/" + s.name + ": no material on its surfaces");
+// Young's modulus of the material of the block the surface's first face belongs to.
+double youngs_modulus_of(const Input& input, const SurfaceFaces& faces, const ContactSurface& s) {
+  if (const MaterialInput* m = find_material(input, *faces.blocks.front()))
+    return m->youngs_modulus;
+  throw InputError(input.file + ": grout/contact/" + s.name + ": no material on block '" +
+                   faces.blocks.front()->name + "'");
 }
 
 double mean_face_size(const Mesh& mesh, const SurfaceFaces& faces) {
@@ -94,8 +87,8 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
     c->lambda_offset = next_lambda;
     const int n_slave = int(c->surface.slave_nodes.size());
     next_lambda += GO(n_slave) * dim_;
-    const double E1 = youngs_modulus_of(mesh, input, c->surface.slave, c->surface);
-    const double E2 = youngs_modulus_of(mesh, input, c->surface.master, c->surface);
+    const double E1 = youngs_modulus_of(input, c->surface.slave, c->surface);
+    const double E2 = youngs_modulus_of(input, c->surface.master, c->surface);
     c->c_hat = ci.c_n > 0.0 ? ci.c_n
                             : 2.0 / (1.0 / E1 + 1.0 / E2) / mean_face_size(mesh, c->surface.slave);
     c->active_tolerance = 1e-10 * 2.0 / (1.0 / E1 + 1.0 / E2);
