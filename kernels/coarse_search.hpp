@@ -5,17 +5,18 @@
 //   box(e) = [min_k x_k − δ_e, max_k x_k + δ_e],  δ_e = factor · max_d (max_k x_kd − min_k x_kd)
 //
 // Master boxes are binned in a uniform grid of cell size h = mean enlarged master box extent,
-// stored as a hashed CSR (cell → bucket: blocks of 64 cells in 3D (4×4×4), of 16 cells in 2D
-// (16 × 1 along the longer grid axis, 4×4 if the grid is nearly square) hashed, cells of a
-// block consecutive, mod 2^p ≥ n_master (2D) or 2 n_master (3D)): one pass computes the
-// master boxes and the grid bounds, then count → exclusive prefix sum → fill (counting the
-// counts down, no second reset), with Kokkos::atomic_fetch_add so any execution space works.
-// The query computes each slave box on the fly and visits only the cells it overlaps (O(1)
-// per query for meshes of comparable size, O(n) overall); hash collisions only add box tests.
-// The passes are compiled per dimension (coarse_search dispatches on dim). Output per slave face:
-// at most max_pair_candidates master ids, sorted ascending, −1 after the last (a fixed-capacity
-// CSR: row s starts at s · max_pair_candidates), and their count. A brute-force O(n_s n_m)
-// reference with the same contract is provided for tests.
+// stored as a hashed CSR (cell → bucket: cells grouped in blocks, 4×4×4 in 3D and 64×64 in 2D;
+// bucket = (hash(block) + cell's index in its block) mod 2^p, 2^p ≥ 2 n_master, so that a
+// block's cells sit in nearby buckets and the queries along a surface touch nearby memory, while
+// distinct blocks are spread at random): one pass computes the master boxes and the grid bounds,
+// then count → exclusive prefix sum → fill (counting the counts down, no second reset), with
+// Kokkos::atomic_fetch_add so any execution space works. The query computes each slave box on the
+// fly and visits only the cells it overlaps (O(1) per query for meshes of comparable size, O(n)
+// overall); hash collisions only add box tests. The passes are compiled per dimension
+// (coarse_search dispatches on dim). Output per slave face: at most max_pair_candidates master ids,
+// sorted ascending, −1 after the last (a fixed-capacity CSR: row s starts at s ·
+// max_pair_candidates), and their count. A brute-force O(n_s n_m) reference with the same contract
+// is provided for tests.
 //
 // Repeated searches (every Newton iterate, or a benchmark) pass a CoarseSearchWorkspace: its
 // work arrays (master boxes, bucket offsets and cursors, entries) grow to the largest size seen
@@ -161,23 +162,30 @@ Kokkos::View<double**, typename ExecSpace::memory_space> compute_face_boxes(
 /// Uniform grid over the master boxes: origin, cell size, cells per axis, bucket mask.
 struct SearchGrid {
   double origin[3] = {0.0, 0.0, 0.0};
-  double h = 1.0;
+  double h = 1.0, inv_h = 1.0;  ///< cell size and its inverse
   std::int64_t n_cells[3] = {1, 1, 1};
   std::uint64_t mask = 0;  ///< n_buckets − 1 (n_buckets a power of two)
 
+  /// Cells [c_lo, c_hi] (clamped to the grid) covered along axis d by [lo, hi]; false if the
+  /// interval misses the grid (or is NaN). floor(t) for t ≥ 0 is the truncation, and
+  /// t ↦ (t − origin)·(1/h) is monotonic, so the binning and the query, which both use this
+  /// function, see overlapping boxes in overlapping cell ranges.
+  KOKKOS_INLINE_FUNCTION bool axis_cells(double lo, double hi, int d, std::int64_t& c_lo,
+                                         std::int64_t& c_hi) const {
+    const double a = (lo - origin[d]) * inv_h, b = (hi - origin[d]) * inv_h;
+    const double last = static_cast<double>(n_cells[d] - 1);
+    if (!(b >= 0.0) || !(a < last + 1.0)) return false;
+    c_lo = a < 0.0 ? 0 : static_cast<std::int64_t>(a);
+    c_hi = b >= last ? n_cells[d] - 1 : static_cast<std::int64_t>(b);
+    return true;
+  }
   /// Cell range [c_lo, c_hi] (clamped to the grid) of the box [lo, hi]; false if it misses the
   /// grid.
   KOKKOS_INLINE_FUNCTION bool cell_range(const double lo[3], const double hi[3], int dim,
                                          std::int64_t c_lo[3], std::int64_t c_hi[3]) const {
     for (int d = 0; d < 3; ++d) c_lo[d] = c_hi[d] = 0;
-    for (int d = 0; d < dim; ++d) {
-      const double a = Kokkos::Experimental::floor((lo[d] - origin[d]) / h);
-      const double b = Kokkos::Experimental::floor((hi[d] - origin[d]) / h);
-      if (b < 0.0 || a > static_cast<double>(n_cells[d] - 1)) return false;
-      c_lo[d] = a < 0.0 ? 0 : static_cast<std::int64_t>(a);
-      c_hi[d] =
-          b > static_cast<double>(n_cells[d] - 1) ? n_cells[d] - 1 : static_cast<std::int64_t>(b);
-    }
+    for (int d = 0; d < dim; ++d)
+      if (!axis_cells(lo[d], hi[d], d, c_lo[d], c_hi[d])) return false;
     return true;
   }
   /// cell_range of row f of boxes (rows: lo[0..2], hi[0..2]).
@@ -185,20 +193,16 @@ struct SearchGrid {
   KOKKOS_INLINE_FUNCTION bool cell_range(const Boxes& boxes, int f, int dim, std::int64_t c_lo[3],
                                          std::int64_t c_hi[3]) const {
     for (int d = 0; d < 3; ++d) c_lo[d] = c_hi[d] = 0;
-    for (int d = 0; d < dim; ++d) {
-      const double a = Kokkos::Experimental::floor((boxes(f, d) - origin[d]) / h);
-      const double b = Kokkos::Experimental::floor((boxes(f, 3 + d) - origin[d]) / h);
-      if (b < 0.0 || a > static_cast<double>(n_cells[d] - 1)) return false;
-      c_lo[d] = a < 0.0 ? 0 : static_cast<std::int64_t>(a);
-      c_hi[d] =
-          b > static_cast<double>(n_cells[d] - 1) ? n_cells[d] - 1 : static_cast<std::int64_t>(b);
-    }
+    for (int d = 0; d < dim; ++d)
+      if (!axis_cells(boxes(f, d), boxes(f, 3 + d), d, c_lo[d], c_hi[d])) return false;
     return true;
   }
   /// Bucket of cell (i, j, k): cells are grouped in blocks of 2^shift[0] × 2^shift[1]
-  /// (× 2^shift[2]) cells (4×4×4 in 3D; 16 × 1 or 1 × 16 along the longer axis in 2D, 4×4 if
-  /// square); a block's cells get consecutive buckets (locality for neighbouring queries),
-  /// blocks are spread by the splitmix64 finaliser of the linear block index.
+  /// (× 2^shift[2]) cells (4×4×4 in 3D, 64×64 in 2D); the bucket is the splitmix64 finaliser of
+  /// the linear block index plus the cell's linear index inside its block, mod n_buckets: a
+  /// block's cells get nearby buckets (locality for neighbouring queries), blocks land at
+  /// random offsets (not aligned to the block size, so a sparsely used block does not reserve
+  /// a whole aligned range).
   KOKKOS_INLINE_FUNCTION std::uint64_t bucket(std::int64_t i, std::int64_t j,
                                               std::int64_t k) const {
     const std::int64_t nb0 = (n_cells[0] >> shift[0]) + 1, nb1 = (n_cells[1] >> shift[1]) + 1;
@@ -211,9 +215,8 @@ struct SearchGrid {
         (i & ((std::int64_t(1) << shift[0]) - 1)) +
         ((j & ((std::int64_t(1) << shift[1]) - 1)) << shift[0]) +
         ((k & ((std::int64_t(1) << shift[2]) - 1)) << (shift[0] + shift[1])));
-    return ((z << block_bits) + local) & mask;
+    return (z + local) & mask;
   }
-  int block_bits = 6;        ///< log2(cells per block) = shift[0] + shift[1] + shift[2]
   int shift[3] = {2, 2, 2};  ///< log2(block cells) per axis
 };
 
@@ -287,10 +290,10 @@ struct FaceBoxesStatsReduce {
 };
 
 namespace detail {
-/// Buckets of the hashed grid per master face (rounded up to a power of two): 1 in 2D (a curve
-/// fills its 16-cell blocks), 2 in 3D (a surface fills 16 of the 64 cells of a block).
+/// Buckets of the hashed grid per master face (rounded up to a power of two); a master box
+/// covers 2-3 cells on average, so about one occupied cell per bucket.
 template <int Dim>
-constexpr std::uint64_t search_buckets_per_master = Dim == 2 ? 1 : 2;
+constexpr std::uint64_t search_buckets_per_master = 2;
 
 /// Hashed grid of n_m master boxes with known BoxStats (see bin_master_boxes).
 template <int Dim, class ExecSpace>
@@ -310,19 +313,16 @@ SearchGrid bin_boxes(const ExecSpace& space,
       span = stats.hi[d] - stats.lo[d] > span ? stats.hi[d] - stats.lo[d] : span;
     grid.h = stats.extent / n_m;
     if (!(grid.h > 1e-12 * span)) grid.h = span > 0.0 ? span : 1.0;  // point-like masters
+    grid.inv_h = 1.0 / grid.h;
     for (int d = 0; d < dim; ++d) {
       grid.origin[d] = stats.lo[d];
-      grid.n_cells[d] =
-          static_cast<std::int64_t>(std::floor((stats.hi[d] - stats.lo[d]) / grid.h)) + 1;
+      grid.n_cells[d] = static_cast<std::int64_t>((stats.hi[d] - stats.lo[d]) * grid.inv_h) + 1;
     }
   }
-  if (dim == 2) {  // a 2D interface is a curve: blocks of 16 cells along its longer axis
-    const std::int64_t n0 = grid.n_cells[0], n1 = grid.n_cells[1];
-    grid.shift[0] = n0 >= 4 * n1 ? 4 : (n1 >= 4 * n0 ? 0 : 2);
-    grid.shift[1] = 4 - grid.shift[0];
+  if (dim == 2) {  // 64×64 cells: a curve crossing a block stays in a 16 KiB range of offsets
+    grid.shift[0] = grid.shift[1] = 6;
     grid.shift[2] = 0;
   }
-  grid.block_bits = grid.shift[0] + grid.shift[1] + grid.shift[2];
   detail::ensure_rows(ws.offsets, "grout::search_offsets", n_buckets + 1);
   detail::ensure_rows(ws.cursor, "grout::search_cursor", n_buckets);
   const auto offsets = ws.offsets;

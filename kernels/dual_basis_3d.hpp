@@ -41,10 +41,10 @@ KOKKOS_INLINE_FUNCTION void face_mass_matrix(int n, const Scalar x[max_face_node
     return;
   }
   // 4-point Gauss–Legendre on [-1, 1]
-  constexpr double gp[4] = {-0.86113631159405257522, -0.33998104358485626480,
-                            0.33998104358485626480, 0.86113631159405257522};
-  constexpr double gw[4] = {0.34785484513745385737, 0.65214515486254614263, 0.65214515486254614263,
-                            0.34785484513745385737};
+  static constexpr double gp[4] = {-0.86113631159405257522, -0.33998104358485626480,
+                                   0.33998104358485626480, 0.86113631159405257522};
+  static constexpr double gw[4] = {0.34785484513745385737, 0.65214515486254614263,
+                                   0.65214515486254614263, 0.34785484513745385737};
   for (int a = 0; a < 4; ++a)
     for (int b = 0; b < 4; ++b) {
       const Scalar xi[2] = {Scalar(gp[a]), Scalar(gp[b])};

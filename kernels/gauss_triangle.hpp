@@ -28,7 +28,7 @@ struct GaussTriangle<1> {
   /// \brief Point i: area coordinates (a, b) (x = (1-a-b) v0 + a v1 + b v2) and weight w
   /// (fraction of the triangle area; the weights sum to 1).
   KOKKOS_INLINE_FUNCTION static void point(int i, double& a, double& b, double& w) {
-    constexpr double table[num_points][3] = {
+    static constexpr double table[num_points][3] = {
         {1.0 / 3.0, 1.0 / 3.0, 1.0},
     };
     a = table[i][0];
@@ -44,7 +44,7 @@ struct GaussTriangle<2> {
   /// \brief Point i: area coordinates (a, b) (x = (1-a-b) v0 + a v1 + b v2) and weight w
   /// (fraction of the triangle area; the weights sum to 1).
   KOKKOS_INLINE_FUNCTION static void point(int i, double& a, double& b, double& w) {
-    constexpr double table[num_points][3] = {
+    static constexpr double table[num_points][3] = {
         {1.0 / 6.0, 1.0 / 6.0, 1.0 / 3.0},
         {2.0 / 3.0, 1.0 / 6.0, 1.0 / 3.0},
         {1.0 / 6.0, 2.0 / 3.0, 1.0 / 3.0},
@@ -62,7 +62,7 @@ struct GaussTriangle<4> {
   /// \brief Point i: area coordinates (a, b) (x = (1-a-b) v0 + a v1 + b v2) and weight w
   /// (fraction of the triangle area; the weights sum to 1).
   KOKKOS_INLINE_FUNCTION static void point(int i, double& a, double& b, double& w) {
-    constexpr double table[num_points][3] = {
+    static constexpr double table[num_points][3] = {
         {0.44594849091596488632, 0.44594849091596488632, 0.2233815896780114657},
         {0.44594849091596488632, 0.10810301816807022736, 0.2233815896780114657},
         {0.10810301816807022736, 0.44594849091596488632, 0.2233815896780114657},
@@ -83,7 +83,7 @@ struct GaussTriangle<6> {
   /// \brief Point i: area coordinates (a, b) (x = (1-a-b) v0 + a v1 + b v2) and weight w
   /// (fraction of the triangle area; the weights sum to 1).
   KOKKOS_INLINE_FUNCTION static void point(int i, double& a, double& b, double& w) {
-    constexpr double table[num_points][3] = {
+    static constexpr double table[num_points][3] = {
         {0.24928674517091042129, 0.24928674517091042129, 0.11678627572637936603},
         {0.24928674517091042129, 0.50142650965817915742, 0.11678627572637936603},
         {0.50142650965817915742, 0.24928674517091042129, 0.11678627572637936603},
@@ -110,7 +110,7 @@ struct GaussTriangle<8> {
   /// \brief Point i: area coordinates (a, b) (x = (1-a-b) v0 + a v1 + b v2) and weight w
   /// (fraction of the triangle area; the weights sum to 1).
   KOKKOS_INLINE_FUNCTION static void point(int i, double& a, double& b, double& w) {
-    constexpr double table[num_points][3] = {
+    static constexpr double table[num_points][3] = {
         {0.33333333333333333333, 0.33333333333333333333, 0.14431560767778716825},
         {0.45929258829272315603, 0.45929258829272315603, 0.095091634267284624794},
         {0.45929258829272315603, 0.081414823414553687942, 0.095091634267284624794},

@@ -15,6 +15,13 @@
 //    covered element), M_jl = ∫ Φ_j N²_l(η(ξ)) dA, with the LINE2 dual basis Φ (dual_basis.hpp).
 // Every output is fully written (zeros when the pair does not overlap), so degenerate pairs
 // never produce NaN. Templated on the scalar: double or Sacado::Fad::SFad.
+//
+// Cost: what depends on the slave segment only (MortarSlave2D: x¹(ξ) = a + ξ b,
+// n¹(ξ) = c + ξ d, b × d, b × c, L/2) is computed once per slave element and shared by its
+// candidate pairs. Per pair, the master projection of step 3 is the rational function
+//   η(ξ) = −(e × n¹(ξ)) … = −(e×c + ξ (e×d − b×c) − ξ² b×d) / (b²×c + ξ b²×d),  e = x̄² − a,
+// (its four pair coefficients once, then 8 flops and a division per Gauss point), and each
+// master-node projection of step 1 takes one square root and one division.
 
 #include <Kokkos_Core.hpp>
 #include <cmath>
@@ -46,28 +53,53 @@ KOKKOS_INLINE_FUNCTION void slave_point_2d(const Scalar xs[2][2], const Scalar n
   }
 }
 
+/// \brief Slave-segment quantities shared by all pairs of one slave element: mid point a, half
+/// edge b (x¹(ξ) = a + ξ b), mean c and half difference d of the nodal normals
+/// (n¹(ξ) = c + ξ d), A = b × d, b × c, |n¹|² = nn0 + ξ (nn1 + ξ nn2), det J = L/2.
+template <class Scalar>
+struct MortarSlave2D {
+  Scalar a[2], b[2], c[2], d[2];
+  Scalar A, bxc, nn0, nn1, nn2, det_j;
+};
+
+/// \brief Fills the MortarSlave2D of the slave segment (xs, ns).
+/// \return degenerate if the segment has zero length, ok otherwise.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION MortarStatus mortar_slave_2d(const Scalar xs[2][2], const Scalar ns[2][2],
+                                                    MortarSlave2D<Scalar>& s) {
+  using std::sqrt;
+  for (int k = 0; k < 2; ++k) {
+    s.a[k] = 0.5 * (xs[0][k] + xs[1][k]);
+    s.b[k] = 0.5 * (xs[1][k] - xs[0][k]);
+    s.c[k] = 0.5 * (ns[0][k] + ns[1][k]);
+    s.d[k] = 0.5 * (ns[1][k] - ns[0][k]);
+  }
+  s.A = cross_2d(s.b, s.d);
+  s.bxc = cross_2d(s.b, s.c);
+  s.nn0 = s.c[0] * s.c[0] + s.c[1] * s.c[1];
+  s.nn1 = 2.0 * (s.c[0] * s.d[0] + s.c[1] * s.d[1]);
+  s.nn2 = s.d[0] * s.d[0] + s.d[1] * s.d[1];
+  const Scalar bb = s.b[0] * s.b[0] + s.b[1] * s.b[1];
+  s.det_j = 0.0;
+  if (!(bb > 0.0)) return MortarStatus::degenerate;
+  s.det_j = sqrt(bb);
+  return MortarStatus::ok;
+}
+
 /// \brief Slave parameter ξ of the point y projected along the interpolated slave normal:
-/// (a − y + ξ b) × (c + ξ d) = 0 with a, b the mid point and half edge, c, d the mean and half
-/// difference of the nodal normals, i.e. A ξ² + B ξ + C = 0, A = b×d, B = (a−y)×d + b×c,
+/// (a − y + ξ b) × (c + ξ d) = 0, i.e. A ξ² + B ξ + C = 0, A = b×d, B = (a−y)×d + b×c,
 /// C = (a−y)×c. Stable roots q/A, C/q with q = −(B + sgn(B)√(B² − 4AC))/2; the root nearest the
-/// element (smallest |ξ|) is returned. ξ may lie outside [−1, 1].
+/// element (smallest |ξ|: |q/A| < |C/q| ⇔ q² < |A C|) is returned. ξ may lie outside [−1, 1].
 /// \return projection_failed if no real root exists.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus project_to_slave_2d(const Scalar xs[2][2],
-                                                        const Scalar ns[2][2], const Scalar y[2],
-                                                        Scalar& xi) {
+KOKKOS_INLINE_FUNCTION MortarStatus project_to_slave_2d(const MortarSlave2D<Scalar>& s,
+                                                        const Scalar y[2], Scalar& xi) {
   using std::abs;
   using std::sqrt;
-  Scalar am[2], b[2], c[2], d[2];
-  for (int k = 0; k < 2; ++k) {
-    am[k] = 0.5 * (xs[0][k] + xs[1][k]) - y[k];
-    b[k] = 0.5 * (xs[1][k] - xs[0][k]);
-    c[k] = 0.5 * (ns[0][k] + ns[1][k]);
-    d[k] = 0.5 * (ns[1][k] - ns[0][k]);
-  }
-  const Scalar A = cross_2d(b, d);
-  const Scalar B = cross_2d(am, d) + cross_2d(b, c);
-  const Scalar C = cross_2d(am, c);
+  const Scalar am[2] = {s.a[0] - y[0], s.a[1] - y[1]};
+  const Scalar& A = s.A;
+  const Scalar B = cross_2d(am, s.d) + s.bxc;
+  const Scalar C = cross_2d(am, s.c);
   xi = 0.0;
   if (abs(A) <= 1e-14 * abs(B)) {  // parallel nodal normals: linear equation
     if (!(abs(B) > 0.0)) return MortarStatus::projection_failed;
@@ -78,9 +110,18 @@ KOKKOS_INLINE_FUNCTION MortarStatus project_to_slave_2d(const Scalar xs[2][2],
   if (disc < 0.0) return MortarStatus::projection_failed;
   const Scalar q = B >= 0.0 ? Scalar(-0.5 * (B + sqrt(disc))) : Scalar(-0.5 * (B - sqrt(disc)));
   if (!(abs(q) > 0.0)) return MortarStatus::ok;  // B = C = 0: double root ξ = 0
-  const Scalar r1 = q / A, r2 = C / q;
-  xi = abs(r1) < abs(r2) ? r1 : r2;
+  xi = q * q < abs(A * C) ? Scalar(q / A) : Scalar(C / q);
   return MortarStatus::ok;
+}
+
+/// project_to_slave_2d from the slave nodes and nodal normals.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION MortarStatus project_to_slave_2d(const Scalar xs[2][2],
+                                                        const Scalar ns[2][2], const Scalar y[2],
+                                                        Scalar& xi) {
+  MortarSlave2D<Scalar> s;
+  mortar_slave_2d(xs, ns, s);
+  return project_to_slave_2d(s, y, xi);
 }
 
 /// \brief Master parameter η of the point x projected along the direction n onto the master
@@ -111,14 +152,14 @@ KOKKOS_INLINE_FUNCTION MortarStatus project_along_normal_to_master_2d(const Scal
 /// \return no_overlap if ξ_b − ξ_a ≤ mortar_2d_overlap_tol, projection_failed if a master node
 /// has no projection, ok otherwise.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus mortar_overlap_2d(const Scalar xs[2][2], const Scalar ns[2][2],
+KOKKOS_INLINE_FUNCTION MortarStatus mortar_overlap_2d(const MortarSlave2D<Scalar>& slave,
                                                       const Scalar xm[2][2], Scalar& xi_a,
                                                       Scalar& xi_b) {
   xi_a = 0.0;
   xi_b = 0.0;
   Scalar xi_m[2];
   for (int l = 0; l < 2; ++l) {
-    const MortarStatus s = project_to_slave_2d(xs, ns, xm[l], xi_m[l]);
+    const MortarStatus s = project_to_slave_2d(slave, xm[l], xi_m[l]);
     if (s != MortarStatus::ok) return s;
   }
   const Scalar lo = xi_m[0] < xi_m[1] ? xi_m[0] : xi_m[1];
@@ -132,37 +173,71 @@ KOKKOS_INLINE_FUNCTION MortarStatus mortar_overlap_2d(const Scalar xs[2][2], con
   return MortarStatus::ok;
 }
 
+/// mortar_overlap_2d from the slave nodes and nodal normals.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION MortarStatus mortar_overlap_2d(const Scalar xs[2][2], const Scalar ns[2][2],
+                                                      const Scalar xm[2][2], Scalar& xi_a,
+                                                      Scalar& xi_b) {
+  MortarSlave2D<Scalar> s;
+  mortar_slave_2d(xs, ns, s);
+  return mortar_overlap_2d(s, xm, xi_a, xi_b);
+}
+
 /// \brief Gauss points of an n_gauss-point rule on the overlap: slave parameters ξ_g, master
-/// parameters η_g (by projection along n¹(ξ_g)) and physical weights w_g = ŵ_g (ξ_b − ξ_a)/2 · L/2
-/// (Σ w_g = overlap length). \pre 1 ≤ n_gauss ≤ max_gauss_line_points.
-/// \return the overlap status; capacity_exceeded for an unsupported n_gauss.
+/// parameters η_g (by projection along n¹(ξ_g), the rational η(ξ) of the file comment) and
+/// physical weights w_g = ŵ_g (ξ_b − ξ_a)/2 · L/2 (Σ w_g = overlap length).
+/// \pre 1 ≤ n_gauss ≤ max_gauss_line_points.
+/// \return the overlap status; capacity_exceeded for an unsupported n_gauss, projection_failed
+/// if n¹(ξ_g) is parallel to the master edge (|b² × n¹| ≤ 1e-14 |b²| |n¹|).
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION MortarStatus
+mortar_integration_points_2d(const MortarSlave2D<Scalar>& slave, const Scalar xm[2][2], int n_gauss,
+                             Scalar xi_s[max_gauss_line_points],
+                             Scalar eta_m[max_gauss_line_points], Scalar w[max_gauss_line_points]) {
+  for (int g = 0; g < max_gauss_line_points; ++g) xi_s[g] = eta_m[g] = w[g] = 0.0;
+  if (n_gauss < 1 || n_gauss > max_gauss_line_points) return MortarStatus::capacity_exceeded;
+  if (!(slave.det_j > 0.0)) return MortarStatus::degenerate;
+  Scalar xi_a, xi_b;
+  const MortarStatus s = mortar_overlap_2d(slave, xm, xi_a, xi_b);
+  if (s != MortarStatus::ok) return s;
+  // η(ξ) = −(n0 + ξ (n1 − ξ A)) / (den0 + ξ den1) (file comment).
+  Scalar e[2], bm[2];
+  for (int k = 0; k < 2; ++k) {
+    e[k] = 0.5 * (xm[0][k] + xm[1][k]) - slave.a[k];
+    bm[k] = 0.5 * (xm[1][k] - xm[0][k]);
+  }
+  const Scalar n0 = cross_2d(e, slave.c), n1 = cross_2d(e, slave.d) - slave.bxc;
+  const Scalar den0 = cross_2d(bm, slave.c), den1 = cross_2d(bm, slave.d);
+  const Scalar bb_tol = 1e-28 * (bm[0] * bm[0] + bm[1] * bm[1]);
+  const Scalar half = 0.5 * (xi_b - xi_a), mid = 0.5 * (xi_a + xi_b);
+  bool parallel = false;
+  for (int g = 0; g < n_gauss; ++g) {
+    double t, wr;
+    gauss_line_point(n_gauss, g, t, wr);
+    const Scalar xi = mid + half * t;
+    const Scalar den = den0 + xi * den1;
+    // |b² × n¹| > 1e-14 |b²| |n¹|, squared (no square root per Gauss point).
+    parallel = parallel || !(den * den > bb_tol * (slave.nn0 + xi * (slave.nn1 + xi * slave.nn2)));
+    xi_s[g] = xi;
+    w[g] = wr * half * slave.det_j;
+    eta_m[g] = -(n0 + xi * (n1 - xi * slave.A)) / den;
+  }
+  if (parallel) {
+    for (int g = 0; g < n_gauss; ++g) eta_m[g] = 0.0;
+    return MortarStatus::projection_failed;
+  }
+  return MortarStatus::ok;
+}
+
+/// mortar_integration_points_2d from the slave nodes and nodal normals.
 template <class Scalar>
 KOKKOS_INLINE_FUNCTION MortarStatus
 mortar_integration_points_2d(const Scalar xs[2][2], const Scalar ns[2][2], const Scalar xm[2][2],
                              int n_gauss, Scalar xi_s[max_gauss_line_points],
                              Scalar eta_m[max_gauss_line_points], Scalar w[max_gauss_line_points]) {
-  using std::sqrt;
-  for (int g = 0; g < max_gauss_line_points; ++g) xi_s[g] = eta_m[g] = w[g] = 0.0;
-  if (n_gauss < 1 || n_gauss > max_gauss_line_points) return MortarStatus::capacity_exceeded;
-  const Scalar dx = xs[1][0] - xs[0][0], dy = xs[1][1] - xs[0][1];
-  const Scalar ll = dx * dx + dy * dy;
-  if (!(ll > 0.0)) return MortarStatus::degenerate;
-  Scalar xi_a, xi_b;
-  const MortarStatus s = mortar_overlap_2d(xs, ns, xm, xi_a, xi_b);
-  if (s != MortarStatus::ok) return s;
-  const Scalar half = 0.5 * (xi_b - xi_a), mid = 0.5 * (xi_a + xi_b);
-  const Scalar det_j = 0.5 * sqrt(ll);
-  for (int g = 0; g < n_gauss; ++g) {
-    double t, wr;
-    gauss_line_point(n_gauss, g, t, wr);
-    xi_s[g] = mid + half * t;
-    w[g] = wr * half * det_j;
-    Scalar x[2], n[2];
-    slave_point_2d(xs, ns, xi_s[g], x, n);
-    const MortarStatus sp = project_along_normal_to_master_2d(xm, x, n, eta_m[g]);
-    if (sp != MortarStatus::ok) return sp;
-  }
-  return MortarStatus::ok;
+  MortarSlave2D<Scalar> s;
+  mortar_slave_2d(xs, ns, s);
+  return mortar_integration_points_2d(s, xm, n_gauss, xi_s, eta_m, w);
 }
 
 template <class Scalar>
@@ -191,19 +266,48 @@ KOKKOS_INLINE_FUNCTION void add_mortar_point_2d(const Scalar& xi, const Scalar& 
 }
 
 /// \brief Exact (segment-based) D_jj and M_jl of one LINE2/LINE2 pair with an n_gauss-point rule
-/// on the overlap (steps 1-4 above). \pre ns: unit (or at least non-zero) slave nodal normals.
+/// on the overlap (steps 1-4 above), the slave given by its MortarSlave2D. D, M and the overlap
+/// are summed in local variables and stored once.
 /// \return ok, no_overlap (out zero), degenerate, projection_failed or capacity_exceeded.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION MortarStatus integrate_mortar_2d(const MortarSlave2D<Scalar>& slave,
+                                                        const Scalar xm[2][2], int n_gauss,
+                                                        MortarPairResult<Scalar>& out) {
+  zero_pair_result_2d(out);
+  Scalar xi[max_gauss_line_points], eta[max_gauss_line_points], w[max_gauss_line_points];
+  const MortarStatus s = mortar_integration_points_2d(slave, xm, n_gauss, xi, eta, w);
+  if (s != MortarStatus::ok) return s;
+  // Φ_1,2 = (1 ∓ 3ξ)/2, N²_1,2 = (1 ∓ η)/2 (dual_basis.hpp).
+  Scalar overlap = 0.0, D[2] = {0.0, 0.0}, M[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
+  for (int g = 0; g < n_gauss; ++g) {
+    Scalar Phi[2], Nm[2];
+    line2_dual_shape(xi[g], Phi);
+    line2_shape(eta[g], Nm);
+    overlap += w[g];
+    for (int j = 0; j < 2; ++j) {
+      const Scalar wp = w[g] * Phi[j];
+      D[j] += wp;
+      for (int l = 0; l < 2; ++l) M[j][l] += wp * Nm[l];
+    }
+  }
+  out.overlap = overlap;
+  for (int j = 0; j < 2; ++j) {
+    out.D[j] = D[j];
+    for (int l = 0; l < 2; ++l) out.M[j][l] = M[j][l];
+  }
+  return MortarStatus::ok;
+}
+
+/// \brief integrate_mortar_2d from the slave nodes and nodal normals.
+/// \pre ns: unit (or at least non-zero) slave nodal normals.
 template <class Scalar>
 KOKKOS_INLINE_FUNCTION MortarStatus integrate_mortar_2d(const Scalar xs[2][2],
                                                         const Scalar ns[2][2],
                                                         const Scalar xm[2][2], int n_gauss,
                                                         MortarPairResult<Scalar>& out) {
-  zero_pair_result_2d(out);
-  Scalar xi[max_gauss_line_points], eta[max_gauss_line_points], w[max_gauss_line_points];
-  const MortarStatus s = mortar_integration_points_2d(xs, ns, xm, n_gauss, xi, eta, w);
-  if (s != MortarStatus::ok) return s;
-  for (int g = 0; g < n_gauss; ++g) add_mortar_point_2d(xi[g], eta[g], w[g], out);
-  return MortarStatus::ok;
+  MortarSlave2D<Scalar> s;
+  mortar_slave_2d(xs, ns, s);
+  return integrate_mortar_2d(s, xm, n_gauss, out);
 }
 
 /// \brief integrate_mortar_2d with mortar_2d_gauss_points points: the 2D pair kernel. The 3D pair

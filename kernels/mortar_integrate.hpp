@@ -58,6 +58,7 @@ struct MortarPairKernel<2> {
     int n_nodes;
     bool parallel_normals;  ///< n₁ ∥ n₂: η(ξ) is affine, Φ_j N²_l quadratic (2 points exact)
     Scalar xs[2][2], ns[2][2];
+    MortarSlave2D<Scalar> segment;  ///< what the exact pair kernel needs of the slave
   };
 
   /// Copies the padded (max_face_nodes × 3) slave arrays; degenerate unless LINE2.
@@ -74,6 +75,7 @@ struct MortarPairKernel<2> {
     slave.parallel_normals = std::is_same<Scalar, double>::value &&
                              ns[0][0] * ns[1][1] - ns[0][1] * ns[1][0] == 0.0 &&
                              ns[0][0] * ns[1][0] + ns[0][1] * ns[1][1] > 0.0;
+    mortar_slave_2d(slave.xs, slave.ns, slave.segment);
     return n_slave == 2 ? MortarStatus::ok : MortarStatus::degenerate;
   }
 
@@ -92,7 +94,7 @@ struct MortarPairKernel<2> {
       return integrate_mortar_2d_collocation(slave.xs, slave.ns, xm2, options.n_collocation, out);
     // With parallel slave normals the 2-point rule is exact (Φ_j N²_l quadratic in ξ).
     const int n_gauss = slave.parallel_normals && options.n_gauss > 2 ? 2 : options.n_gauss;
-    return integrate_mortar_2d(slave.xs, slave.ns, xm2, n_gauss, out);
+    return integrate_mortar_2d(slave.segment, xm2, n_gauss, out);
   }
 
   /// LINE2/LINE2 pair from padded (max_face_nodes × 3) arrays; only [0..1][0..1] are read.

@@ -32,13 +32,13 @@ struct QuadraturePoint {
 KOKKOS_INLINE_FUNCTION bool gauss_legendre_1d(int n, int i, double& x, double& w) {
   // Rules n = 1..5 stored one after the other; rule n starts at offset n(n-1)/2.
   // clang-format off
-  constexpr double points[15] = {
+  static constexpr double points[15] = {
       0.0,
       -0.5773502691896257, 0.5773502691896257,
       -0.7745966692414834, 0.0, 0.7745966692414834,
       -0.8611363115940526, -0.33998104358485626, 0.33998104358485626, 0.8611363115940526,
       -0.906179845938664, -0.5384693101056831, 0.0, 0.5384693101056831, 0.906179845938664};
-  constexpr double weights[15] = {
+  static constexpr double weights[15] = {
       2.0,
       1.0, 1.0,
       5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0,
@@ -79,7 +79,7 @@ KOKKOS_INLINE_FUNCTION void triangle_rule_point(int k, double& xi, double& eta, 
   constexpr double a5 = 0.4701420641051151, b5 = 0.05971587178976982, w5a = 0.1323941527885062;
   constexpr double c5 = 0.10128650732345634, d5 = 0.7974269853530873, w5c = 0.12593918054482714;
   // clang-format off
-  constexpr double table[17][3] = {
+  static constexpr double table[17][3] = {
       {1.0 / 3.0, 1.0 / 3.0, 1.0},                                      // degree 1
       {a2, a2, w2}, {b2, a2, w2}, {a2, b2, w2},                         // degree 2
       {a4, a4, w4a}, {b4, a4, w4a}, {a4, b4, w4a},                      // degree 4
@@ -107,7 +107,7 @@ KOKKOS_INLINE_FUNCTION void tetrahedron_rule_point(int k, double xi[3], double& 
   constexpr double a = 0.5854101966249684, b = 0.1381966011250105;
   constexpr double c = 0.5, d = 1.0 / 6.0;
   // clang-format off
-  constexpr double table[10][4] = {
+  static constexpr double table[10][4] = {
       {0.25, 0.25, 0.25, 1.0},                                          // degree 1
       {b, b, b, 0.25}, {a, b, b, 0.25}, {b, a, b, 0.25}, {b, b, a, 0.25},  // degree 2
       {0.25, 0.25, 0.25, -0.8},                                         // degree 3

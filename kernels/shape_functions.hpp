@@ -38,8 +38,8 @@ template <class Scalar>
 KOKKOS_INLINE_FUNCTION int shape_functions(Topology t, const Scalar* xi,
                                            typename NonDeduced<Scalar>::type* N,
                                            typename NonDeduced<Scalar>::type* dN_dxi) {
-  constexpr double s[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
-                              {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+  static constexpr double s[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                                     {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
   switch (t) {
     case Topology::line2:
       if (N) {
@@ -58,7 +58,7 @@ KOKKOS_INLINE_FUNCTION int shape_functions(Topology t, const Scalar* xi,
         N[2] = xi[1];
       }
       if (dN_dxi) {
-        constexpr double d[6] = {-1, -1, 1, 0, 0, 1};
+        static constexpr double d[6] = {-1, -1, 1, 0, 0, 1};
         for (int k = 0; k < 6; ++k) dN_dxi[k] = d[k];
       }
       return 3;
@@ -70,7 +70,7 @@ KOKKOS_INLINE_FUNCTION int shape_functions(Topology t, const Scalar* xi,
         N[3] = xi[2];
       }
       if (dN_dxi) {
-        constexpr double d[12] = {-1, -1, -1, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+        static constexpr double d[12] = {-1, -1, -1, 1, 0, 0, 0, 1, 0, 0, 0, 1};
         for (int k = 0; k < 12; ++k) dN_dxi[k] = d[k];
       }
       return 4;

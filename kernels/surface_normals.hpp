@@ -122,8 +122,75 @@ KOKKOS_INLINE_FUNCTION int gather_face_coordinates(const FaceView& faces, int f,
   return n_nodes;
 }
 
+namespace detail {
+
+/// Unit normal of face f and its node count, from the coordinates (2D: LINE2 read straight from
+/// the views; 3D: gathered TRI3/QUAD4).
+template <int Dim, class FaceView, class CoordView>
+KOKKOS_INLINE_FUNCTION MortarStatus face_normal_of(const FaceView& faces, int f,
+                                                   const CoordView& coords, int& n_nodes,
+                                                   double n[3]) {
+  if constexpr (Dim == 2) {
+    const int n_cols = static_cast<int>(faces.extent(1));
+    n_nodes = 0;
+    while (n_nodes < n_cols && n_nodes < max_face_nodes && faces(f, n_nodes) >= 0) ++n_nodes;
+    n[2] = 0.0;
+    if (n_nodes != 2) return MortarStatus::degenerate;
+    const int a = faces(f, 0), b = faces(f, 1);
+    n[0] = coords(b, 1) - coords(a, 1);
+    n[1] = coords(a, 0) - coords(b, 0);
+    return normalize_vector<2>(n) ? MortarStatus::ok : MortarStatus::degenerate;
+  } else {
+    double x[max_face_nodes][3];
+    n_nodes = gather_face_coordinates(faces, f, coords, x);
+    return face_normal(3, n_nodes, x, n);
+  }
+}
+
+template <int Dim, class ExecSpace>
+MortarStatus compute_nodal_normals(
+    const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> faces,
+    Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
+    Kokkos::View<double**, typename ExecSpace::memory_space> normals) {
+  using Policy = Kokkos::RangePolicy<ExecSpace>;
+  Kokkos::parallel_for(
+      "grout::nodal_normals_zero", Policy(space, 0, normals.extent(0)), KOKKOS_LAMBDA(const int j) {
+        for (int d = 0; d < Dim; ++d) normals(j, d) = 0.0;
+      });
+  int status = 0;
+  Kokkos::parallel_reduce(
+      "grout::nodal_normals", Policy(space, 0, faces.extent(0)),
+      KOKKOS_LAMBDA(const int f, int& worst) {
+        int n_nodes;
+        double n[3];
+        const MortarStatus s = face_normal_of<Dim>(faces, f, coords, n_nodes, n);
+        if (s != MortarStatus::ok) {
+          worst = worst > static_cast<int>(s) ? worst : static_cast<int>(s);
+          return;
+        }
+        for (int k = 0; k < n_nodes; ++k)
+          for (int d = 0; d < Dim; ++d) Kokkos::atomic_add(&normals(faces(f, k), d), n[d]);
+      },
+      Kokkos::Max<int>(status));
+  status = status > 0 ? status : 0;  // Max starts from INT_MIN (empty range)
+  Kokkos::parallel_for(
+      "grout::nodal_normals_normalise", Policy(space, 0, normals.extent(0)),
+      KOKKOS_LAMBDA(const int j) {
+        using std::sqrt;
+        double nn = 0.0;
+        for (int d = 0; d < Dim; ++d) nn += normals(j, d) * normals(j, d);
+        if (!(nn > 0.0)) return;  // node on no face, or opposite face normals cancel: n_j = 0
+        const double inv = 1.0 / sqrt(nn);
+        for (int d = 0; d < Dim; ++d) normals(j, d) *= inv;
+      });
+  return static_cast<MortarStatus>(status);
+}
+
+}  // namespace detail
+
 /// \brief Averaged unit nodal normals n_j of the faces `faces` (one row per face, local nodes
-/// in the columns, −1 pads a TRI3 row of a 4-column table), launch "grout::nodal_normals".
+/// in the columns, −1 pads a TRI3 row of a 4-column table), launches "grout::nodal_normals_zero",
+/// "grout::nodal_normals" (per face, summed into its nodes) and "grout::nodal_normals_normalise".
 /// \pre coords: (n_nodes, dim), dim ∈ {2, 3}; normals: (n_nodes, dim). Nodes on no face get 0.
 /// \return degenerate if a face has zero length/area or bad sizes, ok otherwise. A node whose
 /// adjacent face normals cancel keeps n_j = 0.
@@ -138,35 +205,8 @@ MortarStatus compute_nodal_normals(
       static_cast<int>(normals.extent(1)) != dim || n_cols > max_face_nodes) {
     return MortarStatus::degenerate;
   }
-  Kokkos::deep_copy(space, normals, 0.0);
-  int status = 0;
-  Kokkos::parallel_reduce(
-      "grout::nodal_normals", Kokkos::RangePolicy<ExecSpace>(space, 0, faces.extent(0)),
-      KOKKOS_LAMBDA(const int f, int& worst) {
-        double x[max_face_nodes][3];
-        const int n_nodes = gather_face_coordinates(faces, f, coords, x);
-        double n[3];
-        const MortarStatus s = face_normal(dim, n_nodes, x, n);
-        if (s != MortarStatus::ok) {
-          worst = worst > static_cast<int>(s) ? worst : static_cast<int>(s);
-          return;
-        }
-        for (int k = 0; k < n_nodes; ++k)
-          for (int d = 0; d < dim; ++d) Kokkos::atomic_add(&normals(faces(f, k), d), n[d]);
-      },
-      Kokkos::Max<int>(status));
-  status = status > 0 ? status : 0;  // Max starts from INT_MIN (empty range)
-  Kokkos::parallel_for(
-      "grout::nodal_normals_normalise", Kokkos::RangePolicy<ExecSpace>(space, 0, normals.extent(0)),
-      KOKKOS_LAMBDA(const int j) {
-        using std::sqrt;
-        double nn = 0.0;
-        for (int d = 0; d < dim; ++d) nn += normals(j, d) * normals(j, d);
-        if (!(nn > 0.0)) return;  // node on no face, or opposite face normals cancel: n_j = 0
-        const double inv = 1.0 / sqrt(nn);
-        for (int d = 0; d < dim; ++d) normals(j, d) *= inv;
-      });
-  return static_cast<MortarStatus>(status);
+  return dim == 2 ? detail::compute_nodal_normals<2>(space, faces, coords, normals)
+                  : detail::compute_nodal_normals<3>(space, faces, coords, normals);
 }
 
 /// Default-execution-space overload of compute_nodal_normals.
