@@ -4,19 +4,19 @@
 //
 //   box(e) = [min_k x_k − δ_e, max_k x_k + δ_e],  δ_e = factor · max_d (max_k x_kd − min_k x_kd)
 //
-// Master boxes are binned in a uniform grid of cell size h = mean enlarged master box extent,
-// stored as a hashed CSR (cell → bucket: cells grouped in blocks, 4×4×4 in 3D and 64×64 in 2D;
-// bucket = (hash(block) + cell's index in its block) mod 2^p, 2^p ≥ 2 n_master, so that a
-// block's cells sit in nearby buckets and the queries along a surface touch nearby memory, while
-// distinct blocks are spread at random): one pass computes the master boxes and the grid bounds,
-// then count → exclusive prefix sum → fill (counting the counts down, no second reset), with
-// Kokkos::atomic_fetch_add so any execution space works. The query computes each slave box on the
-// fly and visits only the cells it overlaps (O(1) per query for meshes of comparable size, O(n)
-// overall); hash collisions only add box tests. The passes are compiled per dimension
-// (coarse_search dispatches on dim). Output per slave face: at most max_pair_candidates master ids,
-// sorted ascending, −1 after the last (a fixed-capacity CSR: row s starts at s ·
-// max_pair_candidates), and their count. A brute-force O(n_s n_m) reference with the same contract
-// is provided for tests.
+// Master boxes are binned in a uniform grid of cell size h = 4 (2D) or 2 (3D) × the mean
+// enlarged master box extent, stored as a hashed CSR: cells are grouped in blocks (64×64 in 2D,
+// 4×4×4 in 3D) and bucket = (hash(block) + the cell's index in its block) mod 2^p, with
+// 2^p ≥ n_master (2D) or 2 n_master (3D), so that a block's cells sit in nearby buckets (the
+// queries along a curve or surface touch nearby memory) while distinct blocks are spread at
+// random. One pass computes the master boxes and the grid bounds, then count → exclusive prefix
+// sum → fill (counting the counts down, no second reset), with Kokkos::atomic_fetch_add so any
+// execution space works. The query computes each slave box on the fly and visits only the cells
+// it overlaps (O(1) per query for meshes of comparable size, O(n) overall); hash collisions
+// only add box tests. The passes are compiled per dimension (coarse_search dispatches on dim).
+// Output per slave face: at most max_pair_candidates master ids, sorted ascending, −1 after the
+// last (a fixed-capacity CSR: row s starts at s · max_pair_candidates), and their count. A
+// brute-force O(n_s n_m) reference with the same contract is provided for tests.
 //
 // Repeated searches (every Newton iterate, or a benchmark) pass a CoarseSearchWorkspace: its
 // work arrays (master boxes, bucket offsets and cursors, entries) grow to the largest size seen
@@ -290,10 +290,17 @@ struct FaceBoxesStatsReduce {
 };
 
 namespace detail {
-/// Buckets of the hashed grid per master face (rounded up to a power of two); a master box
-/// covers 2-3 cells on average, so about one occupied cell per bucket.
+/// Grid cell size in units of the mean enlarged master box extent: larger cells mean fewer
+/// cells per box (fewer bucket lookups, less memory) and more boxes per cell (more box tests).
+/// Measured optimum (bench_mortar, 1e3-1e6 faces): 4 for curves (2D: the boxes per cell grow
+/// like the factor), 2 for surfaces (3D: like its square).
 template <int Dim>
-constexpr std::uint64_t search_buckets_per_master = 2;
+constexpr double search_cell_factor = Dim == 2 ? 4.0 : 2.0;
+
+/// Buckets of the hashed grid per master face (rounded up to a power of two): at least as many
+/// buckets as occupied cells (a master box covers about 1.5 cells in 2D, 2-4 in 3D).
+template <int Dim>
+constexpr std::uint64_t search_buckets_per_master = Dim == 2 ? 1 : 2;
 
 /// Hashed grid of n_m master boxes with known BoxStats (see bin_master_boxes).
 template <int Dim, class ExecSpace>
@@ -311,7 +318,7 @@ SearchGrid bin_boxes(const ExecSpace& space,
     double span = 0.0;
     for (int d = 0; d < dim; ++d)
       span = stats.hi[d] - stats.lo[d] > span ? stats.hi[d] - stats.lo[d] : span;
-    grid.h = stats.extent / n_m;
+    grid.h = search_cell_factor<Dim> * stats.extent / n_m;
     if (!(grid.h > 1e-12 * span)) grid.h = span > 0.0 ? span : 1.0;  // point-like masters
     grid.inv_h = 1.0 / grid.h;
     for (int d = 0; d < dim; ++d) {
