@@ -192,7 +192,13 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
     Vector x_gathered(gathered_map_);
     x_gathered.doImport(x, *gather_, Tpetra::INSERT);
     active_size_ = active_changes_ = 0;
+    contact_floor2_ = 0.0;
     for (auto& c : interfaces_) evaluate_interface(*c, x_gathered, F);
+  }
+  {
+    const double eps = std::numeric_limits<double>::epsilon();
+    const double f_floor = eps * f_int_->norm2();  // collective
+    residual_floor_ = std::sqrt(f_floor * f_floor + contact_floor2_);
   }
   // Reactions, then the prescribed rows drop out.
   {
@@ -282,8 +288,18 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
       m_begin = m_end;
       continue;
     }
+    // Round-off of node j's rows where they carry ĉ × (a gap or a slip): ε ĉ |X_j| each.
+    const auto add_floor = [&] {
+      double x_max = 0.0;
+      for (int a = 0; a < dim; ++a)
+        x_max = std::max(x_max, std::abs(mesh_.coordinates[node * dim + a]));
+      const double row =
+          std::numeric_limits<double>::epsilon() * std::max(c.c_hat, c.c_t_hat) * x_max;
+      contact_floor2_ += dim * row * row;
+    };
     if (tied) {  // ĉ (D u¹_j − Σ_l M_jl u²_l) / D = 0, per component
       c.active[j] = 1;
+      add_floor();
       for (int a = 0; a < dim; ++a) {
         const GO row = c.lambda_gid(j, a);
         double v = D * value_of(node * dim + a);
@@ -324,6 +340,7 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
       m_begin = m_end;
       continue;
     }
+    add_floor();
     // dg = (dg̃ − g dD) / D,  dg̃ = −Σ_a v_a dn_a − Σ_a n_a dv_a,
     // dv_a = x_ja dD + D e_ja − Σ_l (x_la dM_jl + M_jl e_la).
     SparseGradient dg;

@@ -46,6 +46,12 @@ class MechanicsProblem : public NonlinearProblem {
   bool jacobian(const Vector& x, Teuchos::RCP<Matrix>& J) override;
   int active_set_size() const override { return active_size_; }
   int active_set_changes() const override { return active_changes_; }
+  /// Round-off estimate of ‖F‖₂: ε ‖f_int‖₂ for the force rows and ε · max(ĉ, ĉ_t) · |X_j| for
+  /// each multiplier row of an active or tied slave node j (ĉ times a gap or slip computed from
+  /// coordinates of size |X_j|, known to ε|X_j|; X the reference coordinates, so that a wild
+  /// iterate cannot raise the estimate), combined in quadrature; ε = 2.2e-16. Inactive rows
+  /// (λ = 0) are exact.
+  double residual_floor() const override { return residual_floor_; }
 
   /// Set the load and prescribed displacements of time t, and put the prescribed values
   /// into x (the initial guess of the step).
@@ -87,6 +93,8 @@ class MechanicsProblem : public NonlinearProblem {
   std::vector<GO> entry_rows_, entry_cols_;
   std::vector<double> entry_values_;
   int active_size_ = 0, active_changes_ = 0;
+  double residual_floor_ = 0.0;
+  double contact_floor2_ = 0.0;  ///< Σ of the squared multiplier-row floors (residual_floor)
 };
 
 }  // namespace grout

@@ -62,6 +62,8 @@ NewtonOptions newton_options_from(const Teuchos::ParameterList& solver_sublist) 
         options.absolute_tolerance = get_tolerance(list, key);
       } else if (key == "relative_tolerance") {
         options.relative_tolerance = get_tolerance(list, key);
+      } else if (key == "floor_factor") {
+        options.floor_factor = get_tolerance(list, key);
       } else if (key == "update_tolerance") {
         options.update_tolerance = get_tolerance(list, key);
       } else if (key == "line_search") {
@@ -80,7 +82,8 @@ NewtonOptions newton_options_from(const Teuchos::ParameterList& solver_sublist) 
       } else {
         throw InputError("unknown key " + newton_key_prefix + key +
                          " (known: max_iterations, absolute_tolerance, relative_tolerance, "
-                         "update_tolerance, line_search, require_unchanged_active_set)");
+                         "floor_factor, update_tolerance, line_search, "
+                         "require_unchanged_active_set)");
       }
     }
   }
@@ -116,6 +119,38 @@ class ActiveSetUnchanged : public NOX::StatusTest::Generic {
  private:
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
   int changes_ = -1;
+};
+
+/// Converged iff ‖F‖₂ ≤ factor · residual_floor() at the current iterate: the residual is at
+/// its round-off level, where further iterates only move it around (never converged when the
+/// problem gives no estimate).
+class ResidualAtRoundOff : public NOX::StatusTest::Generic {
+ public:
+  explicit ResidualAtRoundOff(double factor) : factor_(factor) {}
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver,
+                                          NOX::StatusTest::CheckType type) override {
+    if (type == NOX::StatusTest::None) {
+      status_ = NOX::StatusTest::Unevaluated;
+      return status_;
+    }
+    const auto& group = dynamic_cast<const NoxGroup&>(solver.getSolutionGroup());
+    norm_f_ = group.getNormF();
+    threshold_ = factor_ * group.residual_floor();
+    status_ = threshold_ > 0.0 && norm_f_ <= threshold_ ? NOX::StatusTest::Converged
+                                                        : NOX::StatusTest::Unconverged;
+    return status_;
+  }
+  NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  std::ostream& print(std::ostream& stream, int indent = 0) const override {
+    stream << std::string(indent, ' ') << status_ << "F-Norm = " << norm_f_ << " <= " << threshold_
+           << " (floor_factor * round-off estimate)\n";
+    return stream;
+  }
+
+ private:
+  double factor_;
+  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
+  double norm_f_ = 0.0, threshold_ = 0.0;
 };
 
 /// Records the report's histories after every iteration and prints the log line on
@@ -198,11 +233,15 @@ NewtonReport solve_newton(NonlinearProblem& problem, Vector& x, LinearSolver& li
   auto context = Teuchos::rcp(new NewtonContext(problem, linear));
   auto group = Teuchos::rcp(new NoxGroup(context, x));
 
-  // converged = (|F| <= abs OR |F|/|F0| < rel) AND [|dx|_inf < upd] AND [active set unchanged]
+  // converged = (|F| <= abs OR |F|/|F0| < rel OR |F| <= floor_factor * round-off estimate)
+  //             AND [|dx|_inf < upd] AND [active set unchanged]
   auto residual_small = Teuchos::rcp(new Combo(Combo::OR));
   residual_small->addStatusTest(Teuchos::rcp(
       new NormF(options.absolute_tolerance, NOX::Abstract::Vector::TwoNorm, NormF::Unscaled)));
   residual_small->addStatusTest(Teuchos::rcp(new RelativeNormF(options.relative_tolerance)));
+  if (options.floor_factor > 0.0) {
+    residual_small->addStatusTest(Teuchos::rcp(new ResidualAtRoundOff(options.floor_factor)));
+  }
   auto converged = Teuchos::rcp(new Combo(Combo::AND));
   converged->addStatusTest(residual_small);
   if (options.update_tolerance > 0.0) {

@@ -15,8 +15,9 @@ namespace grout {
 
 struct NewtonOptions {
   int max_iterations = 25;
-  double absolute_tolerance = 1e-10;         ///< converged if ‖F‖₂ ≤ this ...
-  double relative_tolerance = 1e-10;         ///< ... or ‖F‖₂ / ‖F(x₀)‖₂ < this
+  double absolute_tolerance = 1e-10;  ///< converged if ‖F‖₂ ≤ this ...
+  double relative_tolerance = 1e-10;  ///< ... or ‖F‖₂ / ‖F(x₀)‖₂ < this
+  double floor_factor = 10.0;  ///< ... or ‖F‖₂ ≤ this · residual_floor() (round-off; 0 = off)
   double update_tolerance = 0.0;             ///< and, if > 0, ‖Δx‖_∞ < this
   std::string line_search = "Full Step";     ///< NOX name: "Full Step", "Backtrack", "Polynomial"
   bool require_unchanged_active_set = true;  ///< and no active-set change at the iterate
@@ -25,7 +26,7 @@ struct NewtonOptions {
 };
 
 /// Reads the optional `Newton` sublist of the `solver` sublist (keys max_iterations,
-/// absolute_tolerance, relative_tolerance, update_tolerance, line_search,
+/// absolute_tolerance, relative_tolerance, floor_factor, update_tolerance, line_search,
 /// require_unchanged_active_set) and the optional `NOX` sublist (passed through). Throws
 /// InputError naming "grout/solver/Newton/<key>" on an unknown key or a bad value.
 NewtonOptions newton_options_from(const Teuchos::ParameterList& solver_sublist);

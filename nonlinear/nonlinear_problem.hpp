@@ -24,6 +24,9 @@ class NonlinearProblem {
   /// changed status (open/stick/slip) since the call before. 0 without contact.
   virtual int active_set_size() const { return 0; }
   virtual int active_set_changes() const { return 0; }
+  /// Round-off estimate of ‖F‖₂ at the last residual() call: no iterate can be expected to
+  /// bring ‖F‖₂ much below it (NewtonOptions::floor_factor). 0 = unknown.
+  virtual double residual_floor() const { return 0.0; }
 };
 
 }  // namespace grout

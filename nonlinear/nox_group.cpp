@@ -64,6 +64,7 @@ NOX::Abstract::Group& NoxGroup::operator=(const NOX::Abstract::Group& base) {
   residual_failed_ = source.residual_failed_;
   active_set_size_ = source.active_set_size_;
   active_set_changes_ = source.active_set_changes_;
+  residual_floor_ = source.residual_floor_;
   return *this;
 }
 
@@ -100,6 +101,7 @@ NOX::Abstract::Group::ReturnType NoxGroup::computeF() {
   }
   active_set_size_ = problem.active_set_size();
   active_set_changes_ = problem.active_set_changes();
+  residual_floor_ = problem.residual_floor();
   is_f_ = true;
   return Ok;
 }

@@ -72,6 +72,7 @@ class NoxGroup : public NOX::Abstract::Group {
   /// At the last computeF(): the problem's active set, and whether F could be evaluated.
   int active_set_size() const { return active_set_size_; }
   int active_set_changes() const { return active_set_changes_; }
+  double residual_floor() const { return residual_floor_; }
   bool residual_failed() const { return residual_failed_; }
 
  private:
@@ -85,6 +86,7 @@ class NoxGroup : public NOX::Abstract::Group {
   double norm_f_ = 0.0;
   bool residual_failed_ = false;
   int active_set_size_ = 0, active_set_changes_ = 0;
+  double residual_floor_ = 0.0;
 };
 
 }  // namespace grout

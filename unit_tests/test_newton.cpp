@@ -122,6 +122,39 @@ class AtanProblem : public NonlinearProblem {
   Teuchos::RCP<const Map> map_;
 };
 
+/// F(x)ᵢ = xᵢ − 1 + ε sgn(xᵢ − 1) (sgn(0) = 1), J = I: no root, |Fᵢ| ≥ ε everywhere, and
+/// Newton from x < 1 oscillates between 1 ± ε with |Fᵢ| = 2ε — a residual stuck at a floor,
+/// whose estimate residual_floor() = ε_est √n the problem reports.
+class FloorProblem : public NonlinearProblem {
+ public:
+  FloorProblem(double eps, double eps_estimate)
+      : map_(Teuchos::rcp(new Map(8, 0, Tpetra::getDefaultComm()))),
+        eps_(eps),
+        estimate_(eps_estimate * std::sqrt(8.0)) {}
+  Teuchos::RCP<const Map> map() const override { return map_; }
+  bool residual(const Vector& x, Vector& F) override {
+    auto f = F.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    const auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (LO i = 0; i < LO(f.extent(0)); ++i)
+      f(i, 0) = xv(i, 0) - 1.0 + (xv(i, 0) >= 1.0 ? eps_ : -eps_);
+    return true;
+  }
+  bool jacobian(const Vector&, Teuchos::RCP<Matrix>& J) override {
+    J = Teuchos::rcp(new Matrix(map_, 1));
+    for (LO i = 0; i < LO(map_->getNodeNumElements()); ++i) {
+      const GO g = map_->getGlobalElement(i);
+      J->insertGlobalValues(g, Teuchos::tuple<GO>(g), Teuchos::tuple<double>(1.0));
+    }
+    J->fillComplete();
+    return true;
+  }
+  double residual_floor() const override { return estimate_; }
+
+ private:
+  Teuchos::RCP<const Map> map_;
+  double eps_, estimate_;
+};
+
 // Quiet unless GROUT_TEST_VERBOSE is set (then every solve prints its Newton log).
 NewtonOptions quiet_options() {
   NewtonOptions options;
@@ -322,6 +355,37 @@ TEST(NewtonOptions, UnknownKeyIsAnInputErrorNamingIt) {
   Teuchos::ParameterList bad;
   bad.sublist("Newton").set("line_search", std::string("Zigzag"));
   EXPECT_THROW(newton_options_from(bad), InputError);
+}
+
+TEST(Newton, StopsAtTheResidualRoundOffFloor) {
+  // ‖F₀‖ ≈ √8; every later iterate has ‖F‖ = 2ε√8 = 5.7e-9: the relative (1e-10 ‖F₀‖) and
+  // absolute (1e-10) tests can never pass. With the floor estimated at ε√8, the default
+  // floor_factor 10 accepts ‖F‖ ≤ 2.8e-8, after one step.
+  FloorProblem problem(1e-9, 1e-9);
+  NewtonOptions options = quiet_options();
+  options.max_iterations = 8;
+  Vector x(problem.map());
+  const NewtonReport report = solve(problem, x, options);
+  EXPECT_TRUE(report.converged) << report.reason;
+  EXPECT_EQ(report.iterations, 1);
+  EXPECT_NEAR(report.residual_history.back(), 2e-9 * std::sqrt(8.0), 1e-12);
+  options.floor_factor = 0.0;  // off: the floor cannot be passed
+  Vector x_off(problem.map());
+  const NewtonReport off = solve(problem, x_off, options);
+  EXPECT_FALSE(off.converged);
+  EXPECT_EQ(off.reason, "max iterations (8)");
+  // An estimate 100 × below the actual floor: 10 × estimate < ‖F‖, not converged.
+  FloorProblem underestimated(1e-9, 1e-11);
+  options.floor_factor = 10.0;
+  Vector x_under(underestimated.map());
+  EXPECT_FALSE(solve(underestimated, x_under, options).converged);
+}
+
+TEST(NewtonOptions, ReadsFloorFactor) {
+  Teuchos::ParameterList solver;
+  solver.sublist("Newton").set("floor_factor", 100.0);
+  EXPECT_EQ(newton_options_from(solver).floor_factor, 100.0);
+  EXPECT_EQ(newton_options_from(Teuchos::ParameterList()).floor_factor, 10.0);
 }
 
 }  // namespace
