@@ -178,6 +178,19 @@ Kokkos::View<int**> face_view(const ContactSurface& s, const SurfaceFaces& faces
 
 }  // namespace
 
+void compress_gradient(SparseGradient& g) {
+  std::stable_sort(g.begin(), g.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < g.size();) {
+    const long long dof = g[i].first;
+    double sum = 0.0;
+    for (; i < g.size() && g[i].first == dof; ++i) sum += g[i].second;
+    if (sum != 0.0) g[out++] = {dof, sum};
+  }
+  g.resize(out);
+}
+
 ContactMortar evaluate_contact_mortar(const ContactSurface& s,
                                       const std::vector<std::array<double, 3>>& x,
                                       const ContactMortarOptions& options) {
@@ -212,6 +225,8 @@ ContactMortar evaluate_contact_mortar(const ContactSurface& s,
         add_pair<pair_vars_3d>(s, x, options, int(f), candidates(f, c), result);
     }
   }
+  for (auto& D : result.D) compress_gradient(D.gradient);
+  for (auto& [key, M] : result.M) compress_gradient(M.gradient);
   return result;
 }
 

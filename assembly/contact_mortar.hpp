@@ -44,7 +44,12 @@ struct ContactMortar {
   int pairs = 0;                                         ///< pairs with a non-empty overlap
 };
 
-/// Evaluate at positions x (x[i] = position of surface.nodes[i], 3 components).
+/// Sorts g by dof and sums the entries of each dof (in their order in g, so the result is
+/// deterministic), dropping exact zeros: each dof then appears once.
+void compress_gradient(SparseGradient& g);
+
+/// Evaluate at positions x (x[i] = position of surface.nodes[i], 3 components). The D and M
+/// gradients are compressed (compress_gradient).
 ContactMortar evaluate_contact_mortar(const ContactSurface& surface,
                                       const std::vector<std::array<double, 3>>& x,
                                       const ContactMortarOptions& options);

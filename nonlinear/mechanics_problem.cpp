@@ -362,6 +362,7 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
         }
         for (const auto& [dof, dM] : it->second.gradient) dg.emplace_back(dof, r * n_dot_xl * dM);
       }
+      compress_gradient(dg);
     }
     const auto emit = [&](GO row, const SparseGradient& g, double scale) {
       for (const auto& [dof, value] : g) add_entry(row, dof, scale * value);
@@ -381,6 +382,7 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
         for (const auto& [dof, dt] : fr.dt[k][a])
           dlambda_t[k].emplace_back(dof, c.lambda[j][a] * dt);
       }
+      compress_gradient(dlambda_t[k]);
     }
     if (c.input.type == ContactKind::frictionless) {  // τ_k·λ = 0
       c.active[j] = 2;
@@ -427,6 +429,7 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
         for (const auto& [dof, dM] : it->second.gradient)
           dslip[k].emplace_back(dof, -r * t_dxl * dM);
       }
+      compress_gradient(dslip[k]);
       xi[k] = lambda_t[k] + c.c_t_hat * slip[k];
       xi_norm += xi[k] * xi[k];
     }
@@ -450,6 +453,7 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
         ds.emplace_back(c.lambda_gid(j, a), fr.n[a]);
         for (const auto& [dof, dn] : fr.dn[a]) ds.emplace_back(dof, c.lambda[j][a] * dn);
       }
+      compress_gradient(ds);
       double xi_hat[2] = {0.0, 0.0};
       if (xi_norm > 0.0)
         for (int k = 0; k < dim - 1; ++k) xi_hat[k] = xi[k] / xi_norm;
