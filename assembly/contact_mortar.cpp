@@ -109,10 +109,21 @@ MortarStatus integrate_pair(const ContactSurface& s, int dim, const Scalar xs[4]
                                                  options.collocation_points, out);
 }
 
+// Dual-basis coefficients A_e (Fad) of the last 3D slave face: they depend on the slave
+// coordinates only, which are the first pair variables of every pair of that face, so the
+// candidates of one slave face share them (a 16-point mass matrix and its inverse in Fad).
+template <int NVars>
+struct SlaveDualCache {
+  int face = -1;
+  MortarStatus status = MortarStatus::degenerate;
+  Sacado::Fad::SFad<double, NVars> A[max_face_nodes][max_face_nodes];
+};
+
 // One (slave face f, master face m) pair: integrate with AD and accumulate D, M.
 template <int NVars>
 void add_pair(const ContactSurface& s, const std::vector<std::array<double, 3>>& x,
-              const ContactMortarOptions& options, int f, int m, ContactMortar& result) {
+              const ContactMortarOptions& options, int f, int m, ContactMortar& result,
+              SlaveDualCache<NVars>& cache) {
   using Fad = Sacado::Fad::SFad<double, NVars>;
   const int dim = s.dimension;
   const int n_slave = s.slave.num_nodes[f], n_master = s.master.num_nodes[m];
@@ -151,7 +162,21 @@ void add_pair(const ContactSurface& s, const std::vector<std::array<double, 3>>&
     }
   }
   MortarPairResult<Fad> pair;
-  const MortarStatus status = integrate_pair(s, dim, xs, ns, n_slave, xm, n_master, options, pair);
+  MortarStatus status;
+  const bool exact_3d = dim == 3 && options.scheme == MortarIntegration::exact &&
+                        (n_slave == 3 || n_slave == 4) && (n_master == 3 || n_master == 4);
+  if (exact_3d) {  // integrate_mortar_3d with the face's cached A_e
+    if (cache.face != f) {
+      cache.face = f;
+      cache.status = dual_basis_coefficients_3d(n_slave, xs, cache.A);
+    }
+    detail3d::reset_pair_result(n_slave, n_master, pair);
+    status = cache.status != MortarStatus::ok
+                 ? MortarStatus::degenerate
+                 : integrate_mortar_3d_dual(n_slave, xs, cache.A, n_master, xm, pair);
+  } else {
+    status = integrate_pair(s, dim, xs, ns, n_slave, xm, n_master, options, pair);
+  }
   if (status != MortarStatus::ok) return;  // no overlap (or a harmless far-away candidate)
   ++result.pairs;
   for (int j = 0; j < n_slave; ++j) {
@@ -217,12 +242,14 @@ ContactMortar evaluate_contact_mortar(const ContactSurface& s,
                              std::to_string(max_pair_candidates) +
                              " master candidates for a slave face (search boxes too large?)");
   }
+  SlaveDualCache<pair_vars_2d> cache_2d;
+  SlaveDualCache<pair_vars_3d> cache_3d;
   for (std::size_t f = 0; f < s.slave.size(); ++f) {
     for (int c = 0; c < n_candidates(f); ++c) {
       if (dim == 2)
-        add_pair<pair_vars_2d>(s, x, options, int(f), candidates(f, c), result);
+        add_pair<pair_vars_2d>(s, x, options, int(f), candidates(f, c), result, cache_2d);
       else
-        add_pair<pair_vars_3d>(s, x, options, int(f), candidates(f, c), result);
+        add_pair<pair_vars_3d>(s, x, options, int(f), candidates(f, c), result, cache_3d);
     }
   }
   for (auto& D : result.D) compress_gradient(D.gradient);

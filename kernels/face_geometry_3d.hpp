@@ -13,6 +13,7 @@
 
 #include <Kokkos_Core.hpp>
 #include <cmath>
+#include <type_traits>
 
 #include "kernels/mortar_types.hpp"
 
@@ -148,36 +149,76 @@ KOKKOS_INLINE_FUNCTION void plane_basis(const Scalar normal[3], const Scalar e[3
   detail3d::cross(normal, t1, t2);
 }
 
+namespace detail3d {
+/// Value part of a scalar: the double itself, or the value of a Sacado Fad (its .val()).
+KOKKOS_INLINE_FUNCTION double value_of(double x) {
+  return x;
+}
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION auto value_of(const Scalar& x) -> decltype(x.val()) {
+  return x.val();
+}
+
+/// One Newton step ξ ← ξ − J⁻¹ (Σ N_i(ξ) p_i − y) of face_inverse_map_2d; Δξ in d.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION MortarStatus inverse_map_step(int n, const Scalar p[max_face_nodes][2],
+                                                     const Scalar y[2], Scalar xi[2], Scalar d[2]) {
+  using std::abs;
+  Scalar N[max_face_nodes], dN[max_face_nodes][2], r[2] = {-y[0], -y[1]};
+  Scalar J[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
+  face_shape_functions(n, xi, N);
+  face_shape_derivatives(n, xi, dN);
+  for (int i = 0; i < n; ++i)
+    for (int a = 0; a < 2; ++a) {
+      r[a] += N[i] * p[i][a];
+      for (int b = 0; b < 2; ++b) J[a][b] += p[i][a] * dN[i][b];
+    }
+  const Scalar det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+  const Scalar jscale = abs(J[0][0]) + abs(J[1][1]) + abs(J[0][1]) + abs(J[1][0]);
+  if (!(abs(det) > 1e-14 * jscale * jscale)) return MortarStatus::projection_failed;
+  d[0] = (J[1][1] * r[0] - J[0][1] * r[1]) / det;
+  d[1] = (J[0][0] * r[1] - J[1][0] * r[0]) / det;
+  xi[0] -= d[0];
+  xi[1] -= d[1];
+  return MortarStatus::ok;
+}
+}  // namespace detail3d
+
 /// \brief Inverse of the planar map y(ξ) = Σ_i N_i(ξ) p_i (p_i: nodes in 2D plane
 /// coordinates): Newton from the centre, J_ab = Σ_i p_i,a ∂N_i/∂ξ_b, ξ ← ξ − J⁻¹(y(ξ) − y).
 /// TRI3 is affine: one step is exact, values and derivatives alike. QUAD4: iterate until
-/// |Δξ| < face_inverse_map_tolerance (then the derivatives of ξ have converged too).
+/// |Δξ| < face_inverse_map_tolerance. With a derivative-carrying scalar (Sacado Fad) the QUAD4
+/// iterations run on the values only, and one final Newton step is taken in the scalar from the
+/// converged ξ* (held constant): its derivative is −J⁻¹ ∂r/∂(p, y) + O(|r(ξ*)|), the
+/// implicit-function derivative of the root (exact to the tolerance, like iterating in Fad,
+/// for a fraction of the cost).
 /// \return projection_failed (singular J or no convergence within the cap), else ok.
 template <class Scalar>
 KOKKOS_INLINE_FUNCTION MortarStatus face_inverse_map_2d(int n, const Scalar p[max_face_nodes][2],
                                                         const Scalar y[2], Scalar xi[2]) {
   using std::abs;
+  if constexpr (!std::is_same<Scalar, double>::value) {
+    if (n == 4) {  // converge on the values, then one step with derivatives (see above)
+      double pv[max_face_nodes][2], yv[2] = {detail3d::value_of(y[0]), detail3d::value_of(y[1])};
+      double xv[2];
+      for (int i = 0; i < n; ++i)
+        for (int a = 0; a < 2; ++a) pv[i][a] = detail3d::value_of(p[i][a]);
+      const MortarStatus s = face_inverse_map_2d(n, pv, yv, xv);
+      if (s != MortarStatus::ok) return s;
+      xi[0] = xv[0];
+      xi[1] = xv[1];
+      Scalar d[2];
+      return detail3d::inverse_map_step(n, p, y, xi, d);
+    }
+  }
   face_reference_centre(n, xi);
   const int max_it = n == 3 ? 1 : face_inverse_map_max_iterations;
   for (int it = 0; it < max_it; ++it) {
-    Scalar N[max_face_nodes], dN[max_face_nodes][2], r[2] = {-y[0], -y[1]};
-    Scalar J[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
-    face_shape_functions(n, xi, N);
-    face_shape_derivatives(n, xi, dN);
-    for (int i = 0; i < n; ++i)
-      for (int a = 0; a < 2; ++a) {
-        r[a] += N[i] * p[i][a];
-        for (int b = 0; b < 2; ++b) J[a][b] += p[i][a] * dN[i][b];
-      }
-    const Scalar det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-    const Scalar jscale = abs(J[0][0]) + abs(J[1][1]) + abs(J[0][1]) + abs(J[1][0]);
-    if (!(abs(det) > 1e-14 * jscale * jscale)) return MortarStatus::projection_failed;
-    const Scalar d0 = (J[1][1] * r[0] - J[0][1] * r[1]) / det;
-    const Scalar d1 = (J[0][0] * r[1] - J[1][0] * r[0]) / det;
-    xi[0] -= d0;
-    xi[1] -= d1;
+    Scalar d[2];
+    if (detail3d::inverse_map_step(n, p, y, xi, d) != MortarStatus::ok)
+      return MortarStatus::projection_failed;
     if (n == 3) return MortarStatus::ok;
-    if (abs(d0) + abs(d1) < face_inverse_map_tolerance) return MortarStatus::ok;
+    if (abs(d[0]) + abs(d[1]) < face_inverse_map_tolerance) return MortarStatus::ok;
     if (!(abs(xi[0]) + abs(xi[1]) < 1e6)) return MortarStatus::projection_failed;  // diverged
   }
   return MortarStatus::projection_failed;
