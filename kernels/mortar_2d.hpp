@@ -19,7 +19,8 @@
 // Cost: what depends on the slave segment only (MortarSlave2D: x¹(ξ) = a + ξ b,
 // n¹(ξ) = c + ξ d, b × d, b × c, L/2) is computed once per slave element and shared by its
 // candidate pairs. Per pair, the master projection of step 3 is the rational function
-//   η(ξ) = −(e × n¹(ξ)) … = −(e×c + ξ (e×d − b×c) − ξ² b×d) / (b²×c + ξ b²×d),  e = x̄² − a,
+//   η(ξ) = −((x̄² − x¹(ξ)) × n¹(ξ)) / (b² × n¹(ξ))
+//        = −(e×c + ξ (e×d − b×c) − ξ² b×d) / (b²×c + ξ b²×d),  e = x̄² − a
 // (its four pair coefficients once, then 8 flops and a division per Gauss point), and each
 // master-node projection of step 1 takes one square root and one division.
 
@@ -114,16 +115,6 @@ KOKKOS_INLINE_FUNCTION MortarStatus project_to_slave_2d(const MortarSlave2D<Scal
   return MortarStatus::ok;
 }
 
-/// project_to_slave_2d from the slave nodes and nodal normals.
-template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus project_to_slave_2d(const Scalar xs[2][2],
-                                                        const Scalar ns[2][2], const Scalar y[2],
-                                                        Scalar& xi) {
-  MortarSlave2D<Scalar> s;
-  mortar_slave_2d(xs, ns, s);
-  return project_to_slave_2d(s, y, xi);
-}
-
 /// \brief Master parameter η of the point x projected along the direction n onto the master
 /// line: (x²(η) − x) × n = 0 ⇒ η = −((x̄² − x) × n) / (b² × n), x̄², b² the master mid point and
 /// half edge. η may lie outside [−1, 1]. Used for Gauss points (n = n¹(ξ_g)) and for slave nodes
@@ -171,16 +162,6 @@ KOKKOS_INLINE_FUNCTION MortarStatus mortar_overlap_2d(const MortarSlave2D<Scalar
     return MortarStatus::no_overlap;
   }
   return MortarStatus::ok;
-}
-
-/// mortar_overlap_2d from the slave nodes and nodal normals.
-template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus mortar_overlap_2d(const Scalar xs[2][2], const Scalar ns[2][2],
-                                                      const Scalar xm[2][2], Scalar& xi_a,
-                                                      Scalar& xi_b) {
-  MortarSlave2D<Scalar> s;
-  mortar_slave_2d(xs, ns, s);
-  return mortar_overlap_2d(s, xm, xi_a, xi_b);
 }
 
 /// \brief Gauss points of an n_gauss-point rule on the overlap: slave parameters ξ_g, master
