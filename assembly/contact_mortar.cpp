@@ -123,7 +123,7 @@ struct SlaveDualCache {
 template <int NVars>
 void add_pair(const ContactSurface& s, const std::vector<std::array<double, 3>>& x,
               const ContactMortarOptions& options, int f, int m, ContactMortar& result,
-              SlaveDualCache<NVars>& cache) {
+              SlaveDualCache<NVars>* dual_cache) {
   using Fad = Sacado::Fad::SFad<double, NVars>;
   const int dim = s.dimension;
   const int n_slave = s.slave.num_nodes[f], n_master = s.master.num_nodes[m];
@@ -163,9 +163,10 @@ void add_pair(const ContactSurface& s, const std::vector<std::array<double, 3>>&
   }
   MortarPairResult<Fad> pair;
   MortarStatus status;
-  const bool exact_3d = dim == 3 && options.scheme == MortarIntegration::exact &&
+  const bool exact_3d = dual_cache && dim == 3 && options.scheme == MortarIntegration::exact &&
                         (n_slave == 3 || n_slave == 4) && (n_master == 3 || n_master == 4);
   if (exact_3d) {  // integrate_mortar_3d with the face's cached A_e
+    SlaveDualCache<NVars>& cache = *dual_cache;
     if (cache.face != f) {
       cache.face = f;
       cache.status = dual_basis_coefficients_3d(n_slave, xs, cache.A);
@@ -242,14 +243,13 @@ ContactMortar evaluate_contact_mortar(const ContactSurface& s,
                              std::to_string(max_pair_candidates) +
                              " master candidates for a slave face (search boxes too large?)");
   }
-  SlaveDualCache<pair_vars_2d> cache_2d;
-  SlaveDualCache<pair_vars_3d> cache_3d;
+  SlaveDualCache<pair_vars_3d> dual_cache;
   for (std::size_t f = 0; f < s.slave.size(); ++f) {
     for (int c = 0; c < n_candidates(f); ++c) {
       if (dim == 2)
-        add_pair<pair_vars_2d>(s, x, options, int(f), candidates(f, c), result, cache_2d);
+        add_pair<pair_vars_2d>(s, x, options, int(f), candidates(f, c), result, nullptr);
       else
-        add_pair<pair_vars_3d>(s, x, options, int(f), candidates(f, c), result, cache_3d);
+        add_pair<pair_vars_3d>(s, x, options, int(f), candidates(f, c), result, &dual_cache);
     }
   }
   for (auto& D : result.D) compress_gradient(D.gradient);

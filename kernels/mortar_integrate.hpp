@@ -263,57 +263,25 @@ MortarStatus mortar_integrate(
   return static_cast<MortarStatus>(status);
 }
 
-/// 2D launch ("grout::mortar_integrate<2D>") on an explicit execution space.
-template <class ExecSpace>
-MortarStatus mortar_integrate_2d(
-    const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
-    Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
-    Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
-    Kokkos::View<const double**, typename ExecSpace::memory_space> normals,
-    Kokkos::View<const int*, typename ExecSpace::memory_space> n_candidates,
-    Kokkos::View<const int**, typename ExecSpace::memory_space> candidates,
-    Kokkos::View<const int*, typename ExecSpace::memory_space> pair_offsets,
-    const MortarOptions& options,
-    Kokkos::View<MortarPairResult<double>*, typename ExecSpace::memory_space> results) {
-  return mortar_integrate<2>(space, slave_faces, master_faces, coords, normals, n_candidates,
-                             candidates, pair_offsets, options, results);
-}
-
-/// 2D launch on the default execution space.
+/// mortar_integrate<2> (launch "grout::mortar_integrate<2D>") on the default execution space.
 inline MortarStatus mortar_integrate_2d(
     Kokkos::View<const int**> slave_faces, Kokkos::View<const int**> master_faces,
     Kokkos::View<const double**> coords, Kokkos::View<const double**> normals,
     Kokkos::View<const int*> n_candidates, Kokkos::View<const int**> candidates,
     Kokkos::View<const int*> pair_offsets, const MortarOptions& options,
     Kokkos::View<MortarPairResult<double>*> results) {
-  return mortar_integrate_2d(Kokkos::DefaultExecutionSpace(), slave_faces, master_faces, coords,
+  return mortar_integrate<2>(Kokkos::DefaultExecutionSpace(), slave_faces, master_faces, coords,
                              normals, n_candidates, candidates, pair_offsets, options, results);
 }
 
-/// 3D launch ("grout::mortar_integrate<3D>") on an explicit execution space.
-template <class ExecSpace>
-MortarStatus mortar_integrate_3d(
-    const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
-    Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
-    Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
-    Kokkos::View<const double**, typename ExecSpace::memory_space> normals,
-    Kokkos::View<const int*, typename ExecSpace::memory_space> n_candidates,
-    Kokkos::View<const int**, typename ExecSpace::memory_space> candidates,
-    Kokkos::View<const int*, typename ExecSpace::memory_space> pair_offsets,
-    const MortarOptions& options,
-    Kokkos::View<MortarPairResult<double>*, typename ExecSpace::memory_space> results) {
-  return mortar_integrate<3>(space, slave_faces, master_faces, coords, normals, n_candidates,
-                             candidates, pair_offsets, options, results);
-}
-
-/// 3D launch on the default execution space.
+/// mortar_integrate<3> (launch "grout::mortar_integrate<3D>") on the default execution space.
 inline MortarStatus mortar_integrate_3d(
     Kokkos::View<const int**> slave_faces, Kokkos::View<const int**> master_faces,
     Kokkos::View<const double**> coords, Kokkos::View<const double**> normals,
     Kokkos::View<const int*> n_candidates, Kokkos::View<const int**> candidates,
     Kokkos::View<const int*> pair_offsets, const MortarOptions& options,
     Kokkos::View<MortarPairResult<double>*> results) {
-  return mortar_integrate_3d(Kokkos::DefaultExecutionSpace(), slave_faces, master_faces, coords,
+  return mortar_integrate<3>(Kokkos::DefaultExecutionSpace(), slave_faces, master_faces, coords,
                              normals, n_candidates, candidates, pair_offsets, options, results);
 }
 

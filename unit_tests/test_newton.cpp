@@ -95,6 +95,19 @@ class CubicProblem : public NonlinearProblem {
   Vector b_, x_star_;
 };
 
+/// diag(d(xᵢ)) on the map of x (the Jacobian of the componentwise problems below).
+template <class Derivative>
+Teuchos::RCP<Matrix> diagonal_matrix(const Vector& x, Derivative d) {
+  auto J = Teuchos::rcp(new Matrix(x.getMap(), 1));
+  const auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (LO i = 0; i < LO(xv.extent(0)); ++i) {
+    const GO g = x.getMap()->getGlobalElement(i);
+    J->insertGlobalValues(g, Teuchos::tuple<GO>(g), Teuchos::tuple<double>(d(xv(i, 0))));
+  }
+  J->fillComplete();
+  return J;
+}
+
 /// F(x)ᵢ = atan(xᵢ): full Newton from 2 overshoots and diverges; a line search converges.
 class AtanProblem : public NonlinearProblem {
  public:
@@ -107,14 +120,7 @@ class AtanProblem : public NonlinearProblem {
     return true;
   }
   bool jacobian(const Vector& x, Teuchos::RCP<Matrix>& J) override {
-    J = Teuchos::rcp(new Matrix(map_, 1));
-    const auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
-    for (LO i = 0; i < LO(xv.extent(0)); ++i) {
-      const GO g = map_->getGlobalElement(i);
-      J->insertGlobalValues(g, Teuchos::tuple<GO>(g),
-                            Teuchos::tuple<double>(1.0 / (1.0 + xv(i, 0) * xv(i, 0))));
-    }
-    J->fillComplete();
+    J = diagonal_matrix(x, [](double v) { return 1.0 / (1.0 + v * v); });
     return true;
   }
 
@@ -139,13 +145,8 @@ class FloorProblem : public NonlinearProblem {
       f(i, 0) = xv(i, 0) - 1.0 + (xv(i, 0) >= 1.0 ? eps_ : -eps_);
     return true;
   }
-  bool jacobian(const Vector&, Teuchos::RCP<Matrix>& J) override {
-    J = Teuchos::rcp(new Matrix(map_, 1));
-    for (LO i = 0; i < LO(map_->getNodeNumElements()); ++i) {
-      const GO g = map_->getGlobalElement(i);
-      J->insertGlobalValues(g, Teuchos::tuple<GO>(g), Teuchos::tuple<double>(1.0));
-    }
-    J->fillComplete();
+  bool jacobian(const Vector& x, Teuchos::RCP<Matrix>& J) override {
+    J = diagonal_matrix(x, [](double) { return 1.0; });
     return true;
   }
   double residual_floor() const override { return estimate_; }
