@@ -346,7 +346,10 @@ void SolidProblem::element_stresses(const Vector& u,
   const auto u_view =
       Kokkos::subview(u_column.getLocalViewHost(Tpetra::Access::ReadOnly), Kokkos::ALL(), 0);
   const bool plane_strain = input_.model.plane == PlaneKind::strain;
+  // Kernel Voigt order (linear_elastic_stress) -> output order (stress_names):
+  // 2D (xx, yy, xy, zz) -> (xx, yy, zz, xy); 3D is the same order, σ_xz = σ_zx.
   const int n_components = dim_ == 2 ? 4 : 6;
+  const int output_index_2d[4] = {0, 1, 3, 2};
   for (const auto& block : blocks_) {
     for (std::size_t e = 0; e < block.nodes.extent(0); ++e) {
       if (!block.owned(e)) continue;
@@ -359,14 +362,15 @@ void SolidProblem::element_stresses(const Vector& u,
       }
       linear_elastic_stress(block.topology, dim_, X, ue, block.constants, plane_strain,
                             block.poissons_ratio, s);
-      for (int c = 0; c < n_components; ++c) stress[c][block.global(e)] = s[c];
+      for (int c = 0; c < n_components; ++c)
+        stress[dim_ == 2 ? output_index_2d[c] : c][block.global(e)] = s[c];
     }
   }
 }
 
 std::vector<std::string> SolidProblem::stress_names() const {
-  if (dim_ == 2) return {"stress_xx", "stress_yy", "stress_xy", "stress_zz"};
-  return {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_xz"};
+  if (dim_ == 2) return {"stress_xx", "stress_yy", "stress_zz", "stress_xy"};
+  return {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_zx"};
 }
 
 }  // namespace grout

@@ -66,11 +66,11 @@ class SolidProblem {
   /// Prescribed displacement per global dof at time t (NaN where free), on every rank.
   std::vector<double> prescribed_displacements(double t) const;
 
-  /// Volume-averaged stress of this rank's own elements, Voigt order (see
-  /// linear_elastic_stress), written into `stress[component][global element]`; other
-  /// entries are left untouched.
+  /// Volume-averaged stress of this rank's own elements in the order of stress_names(),
+  /// written into `stress[component][global element]`; other entries are left untouched.
   void element_stresses(const Vector& u, std::vector<std::vector<double>>& stress) const;
-  /// Output names of the stress components (2D: xx yy xy zz; 3D: xx yy zz xy yz xz).
+  /// Output names of the stress components, in the order in which IOSS (ParaView's Exodus
+  /// reader) groups them into one symmetric tensor: 2D xx yy zz xy; 3D xx yy zz xy yz zx.
   std::vector<std::string> stress_names() const;
 
   GlobalIndex num_global_nodes() const { return num_nodes_; }

@@ -4,12 +4,15 @@
 //
 // Exit codes: 0 written, 1 the file could not be written, 2 bad arguments.
 
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <map>
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "io/contact_meshes.hpp"
 #include "io/errors.hpp"
@@ -152,6 +155,22 @@ const char* type_name(grout::Topology t) {
       return "LINE2";
   }
   return "?";
+}
+
+/// "12 QUAD4, 30 TRI3": elements per type, in the order the types first appear.
+std::string element_counts(const grout::Mesh& mesh) {
+  std::vector<std::pair<std::string, long long>> counts;
+  for (const auto& block : mesh.blocks) {
+    const std::string type = type_name(block.topology);
+    auto it =
+        std::find_if(counts.begin(), counts.end(), [&](const auto& c) { return c.first == type; });
+    if (it == counts.end()) it = counts.insert(counts.end(), {type, 0});
+    it->second += block.num_elements();
+  }
+  std::string text;
+  for (const auto& [type, n] : counts)
+    text += (text.empty() ? "" : ", ") + std::to_string(n) + " " + type;
+  return text;
 }
 
 /// Build the mesh of `kind` from the command line.
@@ -351,15 +370,20 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
+    grout::name_node_sets_apart(mesh);  // a side set "top" and its node set "top_nodes"
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "grout_mesh: " << e.what() << "\n";
+    return 2;
+  }
+  try {
     grout::write_exodus_mesh(output, mesh);
   } catch (const grout::InputError& e) {
     std::cerr << "grout_mesh: " << e.what() << "\n";
     return 1;
   }
   std::cout << "grout_mesh: wrote " << output << " (" << kind << ", " << mesh.dimension << "D, "
-            << mesh.num_nodes() << " nodes, " << mesh.num_elements() << " "
-            << type_name(mesh.blocks.front().topology) << " elements in " << mesh.blocks.size()
-            << " block(s), " << mesh.side_sets.size() << " side sets, " << mesh.node_sets.size()
-            << " node sets)\n";
+            << mesh.num_nodes() << " nodes, " << mesh.num_elements() << " elements ("
+            << element_counts(mesh) << ") in " << mesh.blocks.size() << " block(s), "
+            << mesh.side_sets.size() << " side sets, " << mesh.node_sets.size() << " node sets)\n";
   return 0;
 }

@@ -38,8 +38,11 @@ ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidPr
   global_names_.erase(std::unique(global_names_.begin() + first_reaction, global_names_.end()),
                       global_names_.end());
   if (!root_) return;
+  // Provenance: QA record (code, version, date, time) and the input and mesh file names.
+  ExodusProvenance provenance{"grout", GROUT_VERSION, {}};
+  provenance.info = {"grout input: " + input.file, "mesh: " + input.mesh_file};
   exodus_ = std::make_unique<ExodusWriter>(input.output.file, mesh, nodal, solid.stress_names(),
-                                           global_names_);
+                                           global_names_, provenance);
   if (!input.output.summary.empty()) {
     summary_.open(input.output.summary);
     if (!summary_) throw InputError(input.output.summary + ": cannot write the summary file");

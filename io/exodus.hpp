@@ -25,6 +25,15 @@ Mesh read_exodus(const std::string& path);
 /// Write the mesh alone (no results), overwriting an existing file.
 void write_exodus_mesh(const std::string& path, const Mesh& mesh);
 
+/// Where a results file comes from: the Exodus QA record (code name, version, and the date
+/// mm/dd/yy and time hh:mm:ss (UTC) of writing) and the info records (free text lines; longer
+/// than 80 characters are continued on the next record).
+struct ExodusProvenance {
+  std::string code;  ///< empty: no QA record
+  std::string version;
+  std::vector<std::string> info;
+};
+
 /// \brief Writes a results file: the mesh at construction, then one time step per call
 /// of write_step(), flushed to disk immediately so that a later failure loses nothing.
 /// Nodal variables named "displ_x", "displ_y"[, "displ_z"] are what ParaView applies as
@@ -32,7 +41,8 @@ void write_exodus_mesh(const std::string& path, const Mesh& mesh);
 class ExodusWriter {
  public:
   ExodusWriter(const std::string& path, const Mesh& mesh, std::vector<std::string> nodal_vars,
-               std::vector<std::string> element_vars, std::vector<std::string> global_vars);
+               std::vector<std::string> element_vars, std::vector<std::string> global_vars,
+               const ExodusProvenance& provenance = {});
   ~ExodusWriter();
   ExodusWriter(ExodusWriter&& other) noexcept;
   ExodusWriter& operator=(ExodusWriter&& other) noexcept;

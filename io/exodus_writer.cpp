@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <ctime>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -181,11 +182,39 @@ int longest_name(const Mesh& mesh, const std::vector<std::vector<std::string>>& 
   return int(n);
 }
 
+/// QA record (code, version, date, time of writing) and info lines of 80 characters at most.
+void write_provenance(const WriteFile& file, const ExodusProvenance& provenance) {
+  if (!provenance.code.empty()) {
+    const std::time_t now = std::time(nullptr);
+    std::tm utc{};
+    gmtime_r(&now, &utc);
+    char date[16], clock[16];
+    std::strftime(date, sizeof date, "%m/%d/%y", &utc);
+    std::strftime(clock, sizeof clock, "%H:%M:%S", &utc);
+    std::string fields[4] = {provenance.code, provenance.version, date, clock};
+    char* record[1][4];
+    for (int k = 0; k < 4; ++k) {
+      fields[k].resize(std::min(fields[k].size(), std::size_t(MAX_STR_LENGTH)));
+      record[0][k] = const_cast<char*>(fields[k].c_str());
+    }
+    file.check(ex_put_qa(file.id(), 1, record), "the QA record");
+  }
+  std::vector<std::string> lines;
+  for (const auto& text : provenance.info)
+    for (std::size_t at = 0; at == 0 || at < text.size(); at += MAX_LINE_LENGTH)
+      lines.push_back(text.substr(at, MAX_LINE_LENGTH));
+  if (lines.empty()) return;
+  std::vector<char*> pointers;
+  for (auto& line : lines) pointers.push_back(const_cast<char*>(line.c_str()));
+  file.check(ex_put_info(file.id(), int(pointers.size()), pointers.data()), "the info records");
+}
+
 /// Create `path` and write the mesh (and the variable names); the file stays open.
 WriteFile create_mesh_file(const std::string& path, const Mesh& mesh,
                            const std::vector<std::string>& nodal_vars,
                            const std::vector<std::string>& element_vars,
-                           const std::vector<std::string>& global_vars) {
+                           const std::vector<std::string>& global_vars,
+                           const ExodusProvenance& provenance) {
   if (mesh.dimension != 2 && mesh.dimension != 3)
     fail(path, "cannot write a mesh of dimension " + std::to_string(mesh.dimension));
   WriteFile file(path, longest_name(mesh, {nodal_vars, element_vars, global_vars}));
@@ -194,6 +223,7 @@ WriteFile create_mesh_file(const std::string& path, const Mesh& mesh,
                          int64_t(mesh.blocks.size()), int64_t(mesh.node_sets.size()),
                          int64_t(mesh.side_sets.size())),
              "the header");
+  write_provenance(file, provenance);
   write_coordinates(file, mesh);
   write_blocks(file, mesh, block_ids);
   write_side_sets(file, mesh, entity_ids(mesh.side_sets));
@@ -216,20 +246,20 @@ WriteFile create_mesh_file(const std::string& path, const Mesh& mesh,
 }  // namespace
 
 void write_exodus_mesh(const std::string& path, const Mesh& mesh) {
-  create_mesh_file(path, mesh, {}, {}, {});
+  create_mesh_file(path, mesh, {}, {}, {}, {});
 }
 
 ExodusWriter::ExodusWriter(const std::string& path, const Mesh& mesh,
                            std::vector<std::string> nodal_vars,
                            std::vector<std::string> element_vars,
-                           std::vector<std::string> global_vars)
+                           std::vector<std::string> global_vars, const ExodusProvenance& provenance)
     : path_(path),
       num_nodes_(mesh.num_nodes()),
       num_elements_(mesh.num_elements()),
       num_nodal_(nodal_vars.size()),
       num_element_(element_vars.size()),
       num_global_(global_vars.size()) {
-  WriteFile file = create_mesh_file(path, mesh, nodal_vars, element_vars, global_vars);
+  WriteFile file = create_mesh_file(path, mesh, nodal_vars, element_vars, global_vars, provenance);
   const auto ids = entity_ids(mesh.blocks);
   for (std::size_t b = 0; b < mesh.blocks.size(); ++b)
     blocks_.push_back({ids[b], mesh.blocks[b].first_element, mesh.blocks[b].num_elements()});

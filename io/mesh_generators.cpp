@@ -349,4 +349,15 @@ double min_corner_jacobian(const Mesh& mesh) {
   return result;
 }
 
+void name_node_sets_apart(Mesh& mesh) {
+  for (auto& node_set : mesh.node_sets) {
+    if (!mesh.find_side_set(node_set.name)) continue;
+    const std::string name = node_set.name + "_nodes";
+    if (mesh.find_side_set(name) || mesh.find_node_set(name))
+      throw std::invalid_argument("mesh generator: cannot rename node set '" + node_set.name +
+                                  "': '" + name + "' exists already");
+    node_set.name = name;
+  }
+}
+
 }  // namespace grout

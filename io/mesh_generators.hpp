@@ -65,4 +65,11 @@ Mesh append_mesh(const Mesh& a, const Mesh& b);
 /// at each corner: positive for a valid, counter-clockwise / right-handed element).
 double min_corner_jacobian(const Mesh& mesh);
 
+/// \brief Rename every node set that shares its name with a side set to "<name>_nodes"
+/// (the generators give a side set and the node set of its nodes one name). Files that use
+/// one name for both make ParaView's IOSS reader put side-set data on the wrong points;
+/// grout_mesh writes its meshes through this. Throws std::invalid_argument when a new name
+/// is taken already.
+void name_node_sets_apart(Mesh& mesh);
+
 }  // namespace grout

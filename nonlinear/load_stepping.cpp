@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "nonlinear/step_times.hpp"
+
 namespace grout {
 
 void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const NewtonOptions& newton,
@@ -10,12 +12,10 @@ void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const New
                       const std::function<void(const ConvergedStep&)>& on_step) {
   const bool root = problem.map()->getComm()->getRank() == 0;
   Vector x(problem.map()), trial(problem.map()), F(problem.map());
-  const double nominal = stepping.end_time / stepping.steps;
-  const double eps = 1e-12 * stepping.end_time;
-  double t = 0.0, dt = nominal;
+  StepTimes times(stepping.end_time, stepping.steps);  // t = t_end·k/den, never a sum of Δt
   int step = 0, cuts = 0;
-  while (t < stepping.end_time - eps) {
-    const double t_next = std::min(t + dt, stepping.end_time);
+  while (!times.finished()) {
+    const double t_next = times.next_time();
     trial.assign(x);
     problem.begin_step(t_next, trial);
     std::ostringstream prefix;
@@ -29,26 +29,26 @@ void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const New
         throw ConvergenceError(what.str());
       }
       ++cuts;
-      dt /= 2.0;
+      times.halve();
       if (root) {
         std::printf("  step %d t = %g: %s; cutting the step to dt = %g (%d/%d)\n", step + 1, t_next,
-                    report.reason.c_str(), dt, cuts, stepping.max_cuts);
+                    report.reason.c_str(), times.step_size(), cuts, stepping.max_cuts);
         std::fflush(stdout);
       }
       continue;
     }
     x.assign(trial);
-    t = t_next;
+    times.advance();
     ++step;
     problem.residual(x, F);  // reactions and contact results at the converged state
     problem.commit_step();
     ConvergedStep converged;
     converged.step = step;
-    converged.time = t;
+    converged.time = times.time();
     converged.newton = &report;
     converged.state = &x;
     on_step(converged);
-    if (cuts > 0 && report.iterations < 5) dt = std::min(2.0 * dt, nominal);  // grow back
+    if (cuts > 0 && report.iterations < 5) times.grow();  // back towards t_end / n
   }
 }
 

@@ -300,6 +300,8 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
     if (tied) {  // ĉ (D u¹_j − Σ_l M_jl u²_l) / D = 0, per component
       c.active[j] = 1;
       add_floor();
+      for (int a = 0; a < dim; ++a)  // reported only: λ_n = n·λ as for frictional contact
+        c.pressure[j] += m.frames[j].n[a] * c.lambda[j][a];
       for (int a = 0; a < dim; ++a) {
         const GO row = c.lambda_gid(j, a);
         double v = D * value_of(node * dim + a);

@@ -31,7 +31,7 @@ POINTS = [10, 20, 50, 100, 200]
 
 def pressure_error(path):
     r = Results(path)
-    s = cc.node_set(r, "die_bottom")
+    s = cc.side_set_nodes(r, "die_bottom")
     return float(np.abs(r.nodal("contact_pressure")[s] - P).max() / P)
 
 

@@ -31,6 +31,12 @@ def node_set(results, name):
     return np.array(results.ds.variables["node_ns%d" % (names.index(name) + 1)][:]) - 1
 
 
+def side_set_nodes(results, side_set):
+    """0-based node indices of side set `side_set`: grout_mesh writes them as the node set
+    `<side_set>_nodes`."""
+    return node_set(results, side_set + "_nodes")
+
+
 def block_names(results):
     return _names(results.ds, "eb_names")
 
@@ -79,7 +85,7 @@ def stress_names(s, dim):
     if dim == 2:
         return {"stress_xx": s[0, 0], "stress_yy": s[1, 1], "stress_xy": s[0, 1], "stress_zz": s[2, 2]}
     return {"stress_xx": s[0, 0], "stress_yy": s[1, 1], "stress_zz": s[2, 2],
-            "stress_xy": s[0, 1], "stress_yz": s[1, 2], "stress_xz": s[0, 2]}
+            "stress_xy": s[0, 1], "stress_yz": s[1, 2], "stress_zx": s[0, 2]}
 
 
 # --- Hertz line contact ------------------------------------------------------------------------
@@ -197,7 +203,7 @@ def check_uniform(path, bodies, slave, pressure, tol=1e-8):
     for name, body in bodies.items():
         for key, value in stress_names(body["stress"], dim).items():
             err["stress"] = max(err["stress"], np.abs(r.element(key)[slices[name]] - value).max() / s_scale)
-    s_nodes = node_set(r, slave)
+    s_nodes = side_set_nodes(r, slave)
     cp = r.nodal("contact_pressure")
     err["contact_pressure"] = np.abs(cp[s_nodes] - pressure).max() / abs(pressure)
     others = np.setdiff1d(np.arange(cp.size), s_nodes)
@@ -233,7 +239,7 @@ def hertz_level(path, slave, b, p0):
     """Computed half-width and peak pressure of one results file, their relative errors and
     the RMS profile error (over slave nodes with |x| <= 1.2 b, relative to p0)."""
     r = Results(path)
-    s = node_set(r, slave)
+    s = side_set_nodes(r, slave)
     x = r.coordinates()[0, s]
     p = r.nodal("contact_pressure")[s]
     o = np.argsort(x)

@@ -89,7 +89,7 @@ def interface_jump(r, slave, master, u, dim):
     the master nodes (exact for the linear fields of a patch test; the fit residual is
     returned too). Returns (jump (dim, n_slave), fit residual)."""
     xyz = r.coordinates()
-    s, m = cc.node_set(r, slave), cc.node_set(r, master)
+    s, m = cc.side_set_nodes(r, slave), cc.side_set_nodes(r, master)
     if dim == 2:
         o = np.argsort(xyz[0, m])
         jump = np.array([u[d][s] - np.interp(xyz[0, s], xyz[0, m][o], u[d][m][o]) for d in range(2)])
@@ -143,7 +143,7 @@ def exact_displacement(case, xyz, upper_nodes, t=1.0):
 
 
 def check_patch(path, case, slave="upper_bottom", master="lower_top", tol=1e-8,
-                tangential_reaction="reaction_upper_top", normal_reaction="reaction_lower_bottom"):
+                tangential_reaction="reaction_upper_top_nodes", normal_reaction="reaction_lower_bottom_nodes"):
     """Check every step of one frictional patch run against the exact solution scaled by t.
 
     Per step: displacements (relative to the displacement scale), every element stress
@@ -164,7 +164,7 @@ def check_patch(path, case, slave="upper_bottom", master="lower_top", tol=1e-8,
         failures.append("%s: case set up wrongly: Coulomb predicts status %d (ratio %.4g, mu %g), "
                         "expected %d" % (path, case["predicted"], case["ratio"], case["mu"], case["status"]))
     xyz = r.coordinates()
-    s = cc.node_set(r, slave)
+    s = cc.side_set_nodes(r, slave)
     upper = cc.block_nodes(r, "upper")
     slices = cc.element_block_slices(r)
     normal = np.zeros(dim)
@@ -368,7 +368,7 @@ def patch_fake_fields(mesh, case, times, slave="upper_bottom", dim=None):
     xyz = r.coordinates()
     dim = xyz.shape[0]
     upper = cc.block_nodes(r, "upper")
-    s = cc.node_set(r, slave)
+    s = cc.side_set_nodes(r, slave)
     n = xyz.shape[1]
     nodal = {k: [] for k in ["displ_" + "xyz"[d] for d in range(dim)] + ["contact_pressure", "normal_gap",
                                                                          "contact_status"]
@@ -376,10 +376,10 @@ def patch_fake_fields(mesh, case, times, slave="upper_bottom", dim=None):
     slices = cc.element_block_slices(r)
     n_el = sum(sl.stop - sl.start for sl in slices.values())
     element = {}
-    glob = {"newton_iterations": [], "reaction_lower_bottom_" + "xyz"[dim - 1]: []}
+    glob = {"newton_iterations": [], "reaction_lower_bottom_nodes_" + "xyz"[dim - 1]: []}
     for k in range(dim - 1):
-        glob["reaction_upper_top_" + "xyz"[k]] = []
-        glob["reaction_lower_bottom_" + "xyz"[k]] = []
+        glob["reaction_upper_top_nodes_" + "xyz"[k]] = []
+        glob["reaction_lower_bottom_nodes_" + "xyz"[k]] = []
     for t in times:
         u = exact_displacement(case, xyz, upper, t)
         for d in range(dim):
@@ -401,12 +401,12 @@ def patch_fake_fields(mesh, case, times, slave="upper_bottom", dim=None):
         for key, value in cc.stress_names(t * case["sigma"], dim).items():
             element.setdefault(key, []).append(np.full(n_el, value))
         glob["newton_iterations"].append(2)
-        glob["reaction_lower_bottom_" + "xyz"[dim - 1]].append(t * case["normal_force"])
+        glob["reaction_lower_bottom_nodes_" + "xyz"[dim - 1]].append(t * case["normal_force"])
         tau_dir = case["tau"] / max(np.linalg.norm(case["tau"]), 1e-300)
         ft = t * (case["mu"] * case["normal_force"] if case["status"] == SLIP else case["tangential_force"])
         for k in range(dim - 1):
-            glob["reaction_upper_top_" + "xyz"[k]].append(ft * tau_dir[k] if case["status"] == SLIP else 0.0)
-            glob["reaction_lower_bottom_" + "xyz"[k]].append(-ft * tau_dir[k])
+            glob["reaction_upper_top_nodes_" + "xyz"[k]].append(ft * tau_dir[k] if case["status"] == SLIP else 0.0)
+            glob["reaction_lower_bottom_nodes_" + "xyz"[k]].append(-ft * tau_dir[k])
     return nodal, element, glob
 
 
@@ -424,7 +424,7 @@ def _self_test():
     # 3D: oblique shear.
     G3 = fixed_base_gradient(shear_stress(3, p, [0.6 * q, 0.8 * q]), E, nu, 3)
     st = cc.stress_of_gradient(G3, E, nu, 3)
-    assert abs(st["stress_xz"] - 0.6 * q) < 1e-6 and abs(st["stress_yz"] - 0.8 * q) < 1e-6
+    assert abs(st["stress_zx"] - 0.6 * q) < 1e-6 and abs(st["stress_yz"] - 0.8 * q) < 1e-6
     assert abs(st["stress_zz"] + p) < 1e-6 and G3[2, 0] == G3[2, 1] == 0.0
     # Coulomb prediction; mu = 0 always slips.
     assert coulomb_status(0.5, 1.0) == STICK and coulomb_status(0.5, 0.01) == SLIP

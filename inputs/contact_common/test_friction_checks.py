@@ -49,7 +49,7 @@ def friction_patch(grout_mesh, work):
     stem, case = [r for r in m.RUNS if r[0] == "slip_mu0001_2d"][0]
     mesh = os.path.join(d, mesh_of("friction_patch", stem))
     nodal, element, glob = fc.patch_fake_fields(mesh, case, times)
-    s = cc.node_set(Results(mesh), "upper_bottom")
+    s = cc.side_set_nodes(Results(mesh), "upper_bottom")
     nodal["contact_status"][-1][s[0]] = fc.STICK
     fc.write_results_steps(mesh, os.path.join(d, "np2", stem + ".e"), times, nodal, element, glob)
     bad, _ = run_check("friction_patch", d, False)
@@ -59,9 +59,9 @@ def friction_patch(grout_mesh, work):
 def dong_fields(mesh, curve):
     r = Results(mesh)
     n = r.coordinates().shape[1]
-    s = cc.node_set(r, "upper_bottom")
+    s = cc.side_set_nodes(r, "upper_bottom")
     s = s[np.argsort(r.coordinates()[0, s])]
-    mc = cc.node_set(r, "lower_top_contact")
+    mc = cc.side_set_nodes(r, "lower_top_contact")
     keys = curve["keys"]
     assert keys.shape[1] == s.size, (keys.shape, s.size)
     nodal = {"displ_x": [], "lm_x": [], "contact_status": []}
@@ -77,8 +77,8 @@ def dong_fields(mesh, curve):
         nodal["lm_x"].append(lx)
     nodal["displ_y"] = [np.zeros(n)] * curve["t"].size
     nodal["lm_y"] = [np.zeros(n)] * curve["t"].size
-    glob = {"newton_iterations": [2] * curve["t"].size, "reaction_upper_left_x": curve["F"],
-            "reaction_lower_bottom_y": curve["N"]}
+    glob = {"newton_iterations": [2] * curve["t"].size, "reaction_upper_left_nodes_x": curve["F"],
+            "reaction_lower_bottom_nodes_y": curve["N"]}
     return nodal, glob
 
 
@@ -105,7 +105,7 @@ def hertz_fields(mesh, m, spoil=1.0):
     r = Results(mesh)
     xyz = r.coordinates()
     n = xyz.shape[1]
-    s = cc.node_set(r, m.SLAVE)
+    s = cc.side_set_nodes(r, m.SLAVE)
     s = s[np.argsort(xyz[0, s])]
     level = {646: 1, 2442: 2, 9490: 3}.get(n, 3)
     b, c = m.B * (1 + 0.04 / 2**level), m.C * (1 - 0.05 / 2**level)

@@ -42,16 +42,16 @@ TOL = 1e-6
 
 
 def read_curve(path):
-    """Per step: t, F = reaction_upper_left_x, u = mean u_x of lower_top_contact, the normal
+    """Per step: t, F = reaction_upper_left_nodes_x, u = mean u_x of lower_top_contact, the normal
     reaction, and the partition key of every slave node (0 open, 1 stick, +-2 slip with the
     sign of lambda_x)."""
     from grout_results import Results
     r = Results(path)
-    s = cc.node_set(r, "upper_bottom")
-    m = cc.node_set(r, "lower_top_contact")
+    s = cc.side_set_nodes(r, "upper_bottom")
+    m = cc.side_set_nodes(r, "lower_top_contact")
     t = r.times()
-    F = np.array([r.global_var("reaction_upper_left_x", k) for k in range(t.size)])
-    Ny = np.array([r.global_var("reaction_lower_bottom_y", k) for k in range(t.size)])
+    F = np.array([r.global_var("reaction_upper_left_nodes_x", k) for k in range(t.size)])
+    Ny = np.array([r.global_var("reaction_lower_bottom_nodes_y", k) for k in range(t.size)])
     u = np.array([r.nodal("displ_x", k)[m].mean() for k in range(t.size)])
     keys = []
     for k in range(t.size):

@@ -70,7 +70,7 @@ SUPPORTS = ["reaction_lower_bottom_centre_x", "reaction_lower_bottom_centre_y", 
 def level_data(path):
     from grout_results import Results
     r = Results(path)
-    s = cc.node_set(r, SLAVE)
+    s = cc.side_set_nodes(r, SLAVE)
     xyz = r.coordinates()
     o = np.argsort(xyz[0, s])
     s = s[o]

@@ -27,7 +27,7 @@ def exact_patch(dim):
         return A2, {"stress_xx": s[0, 0], "stress_yy": s[1, 1], "stress_xy": s[0, 1], "stress_zz": s[2, 2]}
     s = stress_3d(A3)
     return A3, {"stress_xx": s[0, 0], "stress_yy": s[1, 1], "stress_zz": s[2, 2],
-                "stress_xy": s[0, 1], "stress_yz": s[1, 2], "stress_xz": s[0, 2]}
+                "stress_xy": s[0, 1], "stress_yz": s[1, 2], "stress_zx": s[0, 2]}
 
 
 def exact_tension():

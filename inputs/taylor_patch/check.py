@@ -49,7 +49,7 @@ def interface_jump(path, dim):
     r = Results(path)
     xyz = r.coordinates()
     uv = r.nodal("displ_" + "xyz"[dim - 1])
-    s, m = cc.node_set(r, "die_bottom"), cc.node_set(r, "block_top")
+    s, m = cc.side_set_nodes(r, "die_bottom"), cc.side_set_nodes(r, "block_top")
     m = m[(xyz[0, m] >= 4.0) & (xyz[0, m] <= 6.0)]
     if dim == 3:
         m = m[(xyz[1, m] >= 4.0) & (xyz[1, m] <= 6.0)]
