@@ -76,6 +76,8 @@ kinds and their options (defaults in brackets):
                    upper_top_end (R,R+gap), lower_bottom_centre (0,-R), lower_bottom_end
                    (R,-R) (frictional Hertz: both flat faces loaded, pin + roller)
 common: -o|--output <file> (required), -h|--help
+sets: each side set X listed above comes with the node set X_nodes of its nodes; the other
+node sets (block_origin, plane, ...) keep their names.
 distortion (< 0.4) moves nodes randomly by up to distortion x cell size; boundary nodes
 stay on their boundary line/plane.
 )";
