@@ -395,4 +395,31 @@ TEST(ContactMeshes, HalfDiscArea) {
   }
 }
 
+// grout_mesh writes node set "X_nodes" beside side set "X" (ParaView's IOSS reader needs
+// distinct names); node sets without a side set of their name keep it.
+TEST(ContactMeshes, NodeSetsNamedApartFromSideSets) {
+  Mesh m = grout::taylor_patch_2d({});
+  const std::size_t n_sets = m.node_sets.size();
+  grout::name_node_sets_apart(m);
+  ASSERT_EQ(m.node_sets.size(), n_sets);
+  std::set<std::string> side_names;
+  for (const auto& s : m.side_sets) side_names.insert(s.name);
+  for (const auto& ns : m.node_sets) {
+    EXPECT_EQ(side_names.count(ns.name), 0u) << ns.name;
+    const bool twin = ns.name.size() > 6 && ns.name.substr(ns.name.size() - 6) == "_nodes";
+    EXPECT_TRUE(twin || ns.name == "block_origin" || ns.name == "die_anchor") << ns.name;
+  }
+  for (const auto& s : m.side_sets)
+    EXPECT_NE(m.find_node_set(s.name + "_nodes"), nullptr) << s.name;
+  // Idempotent: a second pass finds nothing to rename.
+  const Mesh once = m;
+  grout::name_node_sets_apart(m);
+  for (std::size_t i = 0; i < n_sets; ++i) EXPECT_EQ(m.node_sets[i].name, once.node_sets[i].name);
+  // A name that is taken already is an error, not a silent duplicate.
+  Mesh clash = grout::rectangle_mesh(1, 1);
+  clash.side_sets.push_back(clash.side_sets.front());
+  clash.side_sets.back().name = clash.node_sets.front().name + "_nodes";
+  EXPECT_THROW(grout::name_node_sets_apart(clash), std::invalid_argument);
+}
+
 }  // namespace
