@@ -22,7 +22,7 @@ void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const New
     prefix << "  step " << step + 1 << " t = " << t_next;
     const NewtonReport report = solve_newton(problem, trial, linear, newton, prefix.str());
     if (!report.converged) {
-      if (cuts == stepping.max_cuts) {
+      if (cuts == stepping.max_cuts || dt / 2.0 < eps) {
         std::ostringstream what;
         what << "step " << step + 1 << " (t = " << t_next << ") did not converge: " << report.reason
              << ", after " << cuts << " cut-backs of the step size";
@@ -49,6 +49,7 @@ void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const New
     converged.state = &x;
     on_step(converged);
     if (cuts > 0 && report.iterations < 5) dt = std::min(2.0 * dt, nominal);  // grow back
+    cuts = 0;  // the budget of halvings is per step
   }
 }
 
