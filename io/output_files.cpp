@@ -51,6 +51,11 @@ void check_output_files(const Input& input, const std::vector<OutputFile>& files
   };
   for (std::size_t i = 0; i < files.size(); ++i) {
     const OutputFile& f = files[i];
+    if (same_file(f.path, input.file)) fail(f, "is the input file itself");
+    if (same_file(f.path, input.mesh_file)) fail(f, "is the mesh file (grout/mesh/file)");
+    for (std::size_t j = 0; j < i; ++j) {
+      if (same_file(f.path, files[j].path)) fail(f, "is also written as " + files[j].key);
+    }
     std::error_code error;
     const fs::path folder =
         fs::path(f.path).parent_path().empty() ? fs::path(".") : fs::path(f.path).parent_path();
@@ -59,11 +64,6 @@ void check_output_files(const Input& input, const std::vector<OutputFile>& files
     const auto status = fs::symlink_status(f.path, error);
     if (fs::exists(status) && !fs::is_regular_file(fs::status(f.path, error))) {
       fail(f, "exists and is not a regular file (a folder, device or pipe): not overwritten");
-    }
-    if (same_file(f.path, input.file)) fail(f, "is the input file itself");
-    if (same_file(f.path, input.mesh_file)) fail(f, "is the mesh file (grout/mesh/file)");
-    for (std::size_t j = 0; j < i; ++j) {
-      if (same_file(f.path, files[j].path)) fail(f, "is also written as " + files[j].key);
     }
   }
 }

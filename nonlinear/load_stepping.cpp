@@ -48,7 +48,7 @@ void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const New
     converged.newton = &report;
     converged.state = &x;
     on_step(converged);
-    if (cuts > 0 && report.iterations < 5) dt = std::min(2.0 * dt, nominal);  // grow back
+    if (dt < nominal && report.iterations < 5) dt = std::min(2.0 * dt, nominal);  // grow back
     cuts = 0;  // the budget of halvings is per step
   }
 }
