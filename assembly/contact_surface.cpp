@@ -40,6 +40,47 @@ SurfaceFaces faces_of(const Mesh& mesh, const Input& input, const ContactInput& 
   return faces;
 }
 
+/// The body (connected set of elements, through shared nodes) of every node, as the
+/// smallest node index of its body (union-find over the element connectivity).
+std::vector<GlobalIndex> body_of_nodes(const Mesh& mesh) {
+  std::vector<GlobalIndex> parent(mesh.num_nodes());
+  for (GlobalIndex n = 0; n < GlobalIndex(parent.size()); ++n) parent[n] = n;
+  const auto root = [&](GlobalIndex n) {
+    while (parent[n] != n) n = parent[n] = parent[parent[n]];
+    return n;
+  };
+  for (const ElementBlock& b : mesh.blocks) {
+    for (GlobalIndex e = 0; e < b.num_elements(); ++e) {
+      const GlobalIndex first = root(b.connectivity[e * b.nodes_per_element]);
+      for (int a = 1; a < b.nodes_per_element; ++a) {
+        const GlobalIndex other = root(b.connectivity[e * b.nodes_per_element + a]);
+        if (other != first) parent[std::max(first, other)] = std::min(first, other);
+      }
+    }
+  }
+  for (GlobalIndex n = 0; n < GlobalIndex(parent.size()); ++n) parent[n] = root(n);
+  return parent;
+}
+
+/// A slave face must not lie on a body that carries master faces (a slave side set with
+/// faces of both bodies would put a body in contact with itself).
+void check_bodies(const Mesh& mesh, const Input& input, const ContactInput& contact,
+                  const SurfaceFaces& slave, const SurfaceFaces& master) {
+  const std::vector<GlobalIndex> body = body_of_nodes(mesh);
+  std::vector<GlobalIndex> master_bodies;
+  for (std::size_t f = 0; f < master.size(); ++f) master_bodies.push_back(body[master.nodes[f][0]]);
+  std::sort(master_bodies.begin(), master_bodies.end());
+  for (std::size_t f = 0; f < slave.size(); ++f) {
+    if (std::binary_search(master_bodies.begin(), master_bodies.end(), body[slave.nodes[f][0]])) {
+      throw InputError(input.file + ": grout/contact/" + contact.name + "/slave: side set '" +
+                       contact.slave + "' has a face (face " + std::to_string(f + 1) + ", node " +
+                       std::to_string(slave.nodes[f][0] + 1) +
+                       ") on the body of master side set '" + contact.master +
+                       "' (slave and master faces must lie on different bodies)");
+    }
+  }
+}
+
 std::vector<GlobalIndex> unique_nodes(const SurfaceFaces& faces) {
   std::vector<GlobalIndex> nodes;
   for (std::size_t f = 0; f < faces.size(); ++f)
@@ -59,6 +100,7 @@ ContactSurface build_contact_surface(const Mesh& mesh, const Input& input,
   s.dimension = mesh.dimension;
   s.slave = faces_of(mesh, input, contact, "slave", contact.slave);
   s.master = faces_of(mesh, input, contact, "master", contact.master);
+  check_bodies(mesh, input, contact, s.slave, s.master);
   s.slave_nodes = unique_nodes(s.slave);
   for (std::size_t i = 0; i < s.slave_nodes.size(); ++i) s.slave_index[s.slave_nodes[i]] = int(i);
   s.slave_node_faces.resize(s.slave_nodes.size());

@@ -6,8 +6,10 @@
 // input (DIR is created if missing); --timers prints where the time went (solid assembly,
 // contact, Jacobian, linear solve; min/mean/max over ranks).
 //
-// Exit codes: 0 done, 2 bad input (message names the file and key or mesh entity),
-// 3 a step did not converge (every earlier step is already written), 1 anything else.
+// Exit codes: 0 done, 2 bad input (message names the file and key or mesh entity; also an
+// output that cannot be written), 3 a step did not converge (every earlier step is already
+// written), 1 anything else. On several ranks an error found by one rank ends every rank
+// with one message and one exit code (assembly/agree_on_errors.hpp).
 
 #include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_Core.hpp>
@@ -15,7 +17,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 
+#include "assembly/agree_on_errors.hpp"
 #include "assembly/distribute_mesh.hpp"
 #include "assembly/solid_problem.hpp"
 #include "drivers/results_output.hpp"
@@ -41,22 +45,30 @@ void print_usage() {
 // Outputs go to `dir` under the file names the input gives them.
 void redirect_outputs(Input& input, const std::string& dir, bool root) {
   namespace fs = std::filesystem;
-  if (root) fs::create_directories(dir);
+  std::error_code error;
+  if (root && !fs::create_directories(dir, error) && !fs::is_directory(dir)) {
+    throw InputError("--output-dir " + dir + ": cannot create the folder (" +
+                     (error ? error.message() : "a file of that name exists") + ")");
+  }
   input.output.file = (fs::path(dir) / fs::path(input.output.file).filename()).string();
   if (!input.output.summary.empty())
     input.output.summary = (fs::path(dir) / fs::path(input.output.summary).filename()).string();
 }
 
-int run(const std::string& input_path, const std::string& output_dir,
-        const Teuchos::RCP<const Comm>& comm) {
+void run(const std::string& input_path, const std::string& output_dir,
+         const Teuchos::RCP<const Comm>& comm) {
   const bool root = comm->getRank() == 0;
   const auto start = std::chrono::steady_clock::now();
 
-  // Parse: the input is validated into plain structs before anything is built.
-  Input input = read_input(input_path);
-  if (!output_dir.empty()) redirect_outputs(input, output_dir, root);
+  // Parse: the input is validated into plain structs before anything is built. Each phase
+  // whose errors one rank alone may find ends with every rank agreeing on its outcome.
+  Input input;
+  agree_on_errors(*comm, [&] {
+    input = read_input(input_path);
+    if (!output_dir.empty()) redirect_outputs(input, output_dir, root);
+  });
   const Mesh mesh = read_and_broadcast_mesh(*comm, [&] { return read_exodus(input.mesh_file); });
-  check_input_against_mesh(input, mesh);
+  agree_on_errors(*comm, [&] { check_input_against_mesh(input, mesh); });
   if (root) {
     std::printf("grout: %s: %lld nodes, %lld elements, %d rank(s)\n", input.file.c_str(),
                 mesh.num_nodes(), mesh.num_elements(), comm->getSize());
@@ -65,20 +77,22 @@ int run(const std::string& input_path, const std::string& output_dir,
   // Build: partition, maps, graph, contact interfaces; solvers from the `solver` sublist.
   const SolidProblem solid(mesh, input, comm);
   MechanicsProblem problem(solid, mesh, input);
-  const NewtonOptions newton = newton_options_from(*input.solver);
+  const NewtonOptions newton = newton_options_from(*input.solver, input.file);
   const Teuchos::ParameterList linear_params = input.solver->isSublist("Linear Solver")
                                                    ? input.solver->sublist("Linear Solver")
                                                    : Teuchos::ParameterList();
   LinearSolver linear(linear_params, input.file + ": grout/solver/Linear Solver");
   linear.set_multiplier_pairing(problem.multiplier_pairing(), mesh.dimension);
-  ResultsOutput output(mesh, input, solid, problem);
+  std::unique_ptr<ResultsOutput> output;
+  agree_on_errors(*comm,
+                  [&] { output = std::make_unique<ResultsOutput>(mesh, input, solid, problem); });
   SteppingOptions stepping;
   stepping.end_time = input.time.end;
   stepping.steps = input.time.steps;
 
   // Solve, writing and flushing every converged step at once.
   solve_load_steps(problem, linear, newton, stepping, [&](const ConvergedStep& step) {
-    output.write(step);
+    agree_on_errors(*comm, [&] { output->write(step); });
     if (root) {
       std::printf(
           "step %d  t = %g  newton %d  linear %d  |F| = %.3e\n", step.step, step.time,
@@ -93,7 +107,6 @@ int run(const std::string& input_path, const std::string& output_dir,
     std::printf("grout: wrote %s and %s (%.2f s)\n", input.output.file.c_str(),
                 input.output.summary.c_str(), seconds);
   }
-  return 0;
 }
 
 }  // namespace
@@ -125,19 +138,22 @@ int main(int argc, char** argv) {
     if (root) print_usage();
     return 2;
   }
+  // Every error ends here, on every rank: the rank that found it prints it, once.
   try {
-    const int status = run(input_path, output_dir, comm);
+    agree_on_errors(*comm, [&] { run(input_path, output_dir, comm); });
     if (timers) Teuchos::TimeMonitor::summarize(comm.ptr(), std::cout, false, true, false);
-    return status;
-  } catch (const grout::InputError& e) {
-    if (root) std::fprintf(stderr, "grout: error: %s\n", e.what());
-    return 2;
-  } catch (const grout::ConvergenceError& e) {
-    if (root)
-      std::fprintf(stderr, "grout: error: %s (converged steps are in the output)\n", e.what());
-    return 3;
-  } catch (const std::exception& e) {
-    if (root) std::fprintf(stderr, "grout: error: %s\n", e.what());
-    return 1;
+    return 0;
+  } catch (const ErrorOnOtherRank& e) {
+    return e.exit_code();
+  } catch (...) {
+    const std::exception_ptr error = std::current_exception();
+    const int code = exit_code_of(error);
+    if (code == 3) {  // a step did not converge: the message names the step, add the input
+      std::fprintf(stderr, "grout: error: %s: %s (converged steps are in the output)\n",
+                   input_path.c_str(), message_of(error).c_str());
+    } else {
+      std::fprintf(stderr, "grout: error: %s\n", message_of(error).c_str());
+    }
+    return code;
   }
 }

@@ -2,6 +2,7 @@
 
 #include <Teuchos_CommHelpers.hpp>
 #include <iomanip>
+#include <sstream>
 
 #include "io/errors.hpp"
 
@@ -38,32 +39,28 @@ ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidPr
   global_names_.erase(std::unique(global_names_.begin() + first_reaction, global_names_.end()),
                       global_names_.end());
   if (!root_) return;
+  const std::vector<OutputFile> files = output_files(input, problem.has_contact() && dim == 2);
+  check_output_files(input, files);
+  commit_ = std::make_unique<OutputCommit>(files);
   // Provenance: QA record (code, version, date, time) and the input and mesh file names.
   ExodusProvenance provenance{"grout", GROUT_VERSION, {}};
   provenance.info = {"grout input: " + input.file, "mesh: " + input.mesh_file};
-  exodus_ = std::make_unique<ExodusWriter>(input.output.file, mesh, nodal, solid.stress_names(),
+  exodus_ = std::make_unique<ExodusWriter>(files[0].temporary, mesh, nodal, solid.stress_names(),
                                            global_names_, provenance);
   if (!input.output.summary.empty()) {
-    summary_.open(input.output.summary);
-    if (!summary_) throw InputError(input.output.summary + ": cannot write the summary file");
-    summary_ << "step,time";
-    for (const auto& name : global_names_) summary_ << "," << name;
-    summary_ << "\n" << std::flush;
+    summary_ = CheckedTextFile(files[1].temporary, files[1].path);
+    std::string header = "step,time";
+    for (const auto& name : global_names_) header += "," + name;
+    summary_.write(header + "\n");
     // <summary>_newton.csv: the residual history and active set of every Newton iteration.
-    std::string log = input.output.summary;
-    const auto dot = log.rfind('.');
-    log = (dot == std::string::npos ? log : log.substr(0, dot)) + "_newton.csv";
-    newton_log_.open(log);
-    if (!newton_log_) throw InputError(log + ": cannot write the Newton log");
-    newton_log_ << "step,time,iteration,residual,active_nodes,active_changes\n" << std::flush;
+    newton_log_ = CheckedTextFile(files[2].temporary, files[2].path);
+    newton_log_.write("step,time,iteration,residual,active_nodes,active_changes\n");
     // <summary>_contact.csv (2D): the contact results along the interface, every step.
-    if (problem.has_contact() && dim == 2) {
-      const std::string stem = log.substr(0, log.size() - std::string("_newton.csv").size());
-      profile_.open(stem + "_contact.csv");
-      if (!profile_) throw InputError(stem + "_contact.csv: cannot write the contact profile");
-      profile_ << "step,time,node,x,y,contact_pressure,normal_gap,contact_status,lm_x,lm_y,"
-                  "slip_x,slip_y\n"
-               << std::flush;
+    if (files.size() > 3) {
+      profile_ = CheckedTextFile(files[3].temporary, files[3].path);
+      profile_.write(
+          "step,time,node,x,y,contact_pressure,normal_gap,contact_status,lm_x,lm_y,"
+          "slip_x,slip_y\n");
       profile_nodes_ = problem.slave_nodes();
       const auto& X = mesh.coordinates;
       std::sort(profile_nodes_.begin(), profile_nodes_.end(), [&](GlobalIndex a, GlobalIndex b) {
@@ -131,31 +128,34 @@ void ResultsOutput::write(const ConvergedStep& step) {
   }
   exodus_->write_step(step.time, nodal, stress, globals);
   if (summary_.is_open()) {
-    summary_ << step.step << "," << std::setprecision(17) << step.time;
-    for (double value : globals) summary_ << "," << value;
-    summary_ << "\n" << std::flush;
+    std::ostringstream row;
+    row << step.step << "," << std::setprecision(17) << step.time;
+    for (double value : globals) row << "," << value;
+    summary_.write(row.str() + "\n");
   }
   if (profile_.is_open()) {
+    std::ostringstream rows;
     for (GlobalIndex n : profile_nodes_) {
-      profile_ << step.step << "," << std::setprecision(17) << step.time << "," << n + 1 << ","
-               << mesh_.coordinates[2 * n] << "," << mesh_.coordinates[2 * n + 1] << ","
-               << contact.pressure[n] << "," << contact.gap[n] << "," << contact.status[n] << ","
-               << contact.lm[0][n] << "," << contact.lm[1][n] << "," << contact.slip[0][n] << ","
-               << contact.slip[1][n] << "\n";
+      rows << step.step << "," << std::setprecision(17) << step.time << "," << n + 1 << ","
+           << mesh_.coordinates[2 * n] << "," << mesh_.coordinates[2 * n + 1] << ","
+           << contact.pressure[n] << "," << contact.gap[n] << "," << contact.status[n] << ","
+           << contact.lm[0][n] << "," << contact.lm[1][n] << "," << contact.slip[0][n] << ","
+           << contact.slip[1][n] << "\n";
     }
-    profile_ << std::flush;
+    profile_.write(rows.str());
   }
   if (newton_log_.is_open()) {
+    std::ostringstream rows;
     for (std::size_t k = 0; k < newton.residual_history.size(); ++k) {
-      newton_log_ << step.step << "," << std::setprecision(17) << step.time << "," << k << ","
-                  << newton.residual_history[k] << ","
-                  << (k < newton.active_set_history.size() ? newton.active_set_history[k] : 0)
-                  << ","
-                  << (k < newton.active_change_history.size() ? newton.active_change_history[k] : 0)
-                  << "\n";
+      rows << step.step << "," << std::setprecision(17) << step.time << "," << k << ","
+           << newton.residual_history[k] << ","
+           << (k < newton.active_set_history.size() ? newton.active_set_history[k] : 0) << ","
+           << (k < newton.active_change_history.size() ? newton.active_change_history[k] : 0)
+           << "\n";
     }
-    newton_log_ << std::flush;
+    newton_log_.write(rows.str());
   }
+  commit_->commit();  // the first converged step replaces the previous results
 }
 
 }  // namespace grout

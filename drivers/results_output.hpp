@@ -1,6 +1,7 @@
 #pragma once
 // Results of every converged step: gathered to rank 0, written to Exodus (DESIGN.md §5
-// field names) and to the CSV summary, both flushed at once.
+// field names) and to the CSV summary, both flushed at once. The files are written under
+// temporary names and moved into place at the first converged step (output_files.hpp).
 
 #include <fstream>
 #include <memory>
@@ -9,6 +10,7 @@
 
 #include "assembly/solid_problem.hpp"
 #include "io/exodus.hpp"
+#include "io/output_files.hpp"
 #include "nonlinear/load_stepping.hpp"
 
 namespace grout {
@@ -30,9 +32,10 @@ class ResultsOutput {
   bool root_ = false;
   std::vector<std::string> global_names_;
   std::unique_ptr<ExodusWriter> exodus_;
-  std::ofstream summary_;
-  std::ofstream newton_log_;                ///< per Newton iteration of every converged step
-  std::ofstream profile_;                   ///< 2D: slave-node contact results along the interface
+  std::unique_ptr<OutputCommit> commit_;  ///< temporary names -> final names
+  CheckedTextFile summary_;
+  CheckedTextFile newton_log_;              ///< per Newton iteration of every converged step
+  CheckedTextFile profile_;                 ///< 2D: slave-node contact results along the interface
   std::vector<GlobalIndex> profile_nodes_;  ///< slave nodes sorted by x, then y
 };
 

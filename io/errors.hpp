@@ -1,14 +1,65 @@
 #pragma once
+#include <exception>
 #include <stdexcept>
 #include <string>
 
 namespace grout {
 
-/// An error in what the user gave us (input file, mesh, expression). The message names the
-/// file and the key or mesh entity; the driver prints it without a stack trace and exits 2.
+/// An error in what the user gave us (input file, mesh, expression, output paths). The
+/// message names the file and the key or mesh entity; the driver prints it without a stack
+/// trace and exits 2.
 class InputError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+/// A failure that carries its own exit code (3: a step did not converge).
+class ExitCodeError : public std::runtime_error {
+ public:
+  ExitCodeError(const std::string& what, int exit_code)
+      : std::runtime_error(what), exit_code_(exit_code) {}
+  int exit_code() const { return exit_code_; }
+
+ private:
+  int exit_code_;
+};
+
+/// Thrown on the ranks that did not report an error another rank reported (its message is
+/// printed there, once): carries only that error's exit code.
+class ErrorOnOtherRank : public ExitCodeError {
+ public:
+  explicit ErrorOnOtherRank(int exit_code)
+      : ExitCodeError("error reported by another rank", exit_code) {}
+};
+
+/// The driver's exit code for an error: 2 for InputError, the code an ExitCodeError
+/// carries, 1 for anything else (including what is not a std::exception).
+inline int exit_code_of(const std::exception_ptr& error) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const InputError&) {
+    return 2;
+  } catch (const ExitCodeError& e) {
+    return e.exit_code();
+  } catch (...) {
+    return 1;
+  }
+}
+
+/// The message of an error, for what is not a std::exception too (NOX throws string
+/// literals).
+inline std::string message_of(const std::exception_ptr& error) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const std::exception& e) {
+    return e.what();
+  } catch (const char* text) {
+    return text;
+  } catch (const std::string& text) {
+    return text;
+  } catch (...) {
+    return "unknown error (not a std::exception)";
+  }
+}
 
 }  // namespace grout

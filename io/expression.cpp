@@ -3,10 +3,19 @@
 #include <muParser.h>
 
 #include <cmath>
+#include <sstream>
 
 #include "io/errors.hpp"
 
 namespace grout {
+
+namespace {
+
+std::string describe(double value) {
+  return std::isnan(value) ? "not a number (NaN)" : value > 0 ? "+infinity" : "-infinity";
+}
+
+}  // namespace
 
 /// The parser and the variables it is bound to. muParser stores the variables' addresses,
 /// so an Impl is never moved or copied: a copy of an Expression parses the text again.
@@ -15,6 +24,17 @@ struct Expression::Impl {
   mu::Parser parser;
 
   Impl(const std::string& text, const std::string& where) {
+    // muParser accepts assignments to its variables ("t=5"); a value is a formula only.
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      if (text[i] != '=') continue;
+      const char before = i > 0 ? text[i - 1] : ' ',
+                 after = i + 1 < text.size() ? text[i + 1] : ' ';
+      if (after == '=' || before == '=' || before == '<' || before == '>' || before == '!')
+        continue;
+      throw InputError(where + ": cannot parse expression '" + text +
+                       "': assignment '=' at position " + std::to_string(i + 1) +
+                       " (a value is a formula in t, x, y, z; compare with ==)");
+    }
     try {
       parser.DefineVar("t", &t);
       parser.DefineVar("x", &x);
@@ -23,7 +43,11 @@ struct Expression::Impl {
       parser.DefineConst("pi", M_PI);
       parser.DefineConst("_pi", M_PI);  // muParser's own is cut at 3.141592653589 under GCC
       parser.SetExpr(text);
-      parser.Eval();  // muParser parses lazily: evaluate once so that errors surface here
+      const double value = parser.Eval();  // muParser parses lazily: errors surface here
+      if (parser.GetUsedVar().empty() && !std::isfinite(value)) {
+        throw InputError(where + ": expression '" + text + "' is " + describe(value) +
+                         " (a constant that is not a finite number)");
+      }
     } catch (const mu::Parser::exception_type& e) {
       std::string message = where + ": cannot parse expression '" + text + "': " + e.GetMsg();
       if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN) {
@@ -66,7 +90,14 @@ double Expression::operator()(double t, double x, double y, double z) const {
   impl_->x = x;
   impl_->y = y;
   impl_->z = z;
-  return impl_->parser.Eval();
+  const double value = impl_->parser.Eval();
+  if (!std::isfinite(value)) {
+    std::ostringstream text;
+    text << where_ << ": expression '" << text_ << "' is " << describe(value) << " at t = " << t
+         << ", x = " << x << ", y = " << y << ", z = " << z;
+    throw InputError(text.str());
+  }
+  return value;
 }
 
 }  // namespace grout

@@ -303,6 +303,19 @@ Input read_input(const std::string& path) {
 
   input.solver = Teuchos::rcp(new Teuchos::ParameterList(grout.raw_section("solver")));
   input.solver->setName("solver");
+  // The solver sublists are read by the solvers (NOX and the linear solver get theirs
+  // passed through); a name not among them would be silently ignored.
+  const std::vector<std::string> solver_sublists = {"Newton", "NOX", "Linear Solver"};
+  for (auto it = input.solver->begin(); it != input.solver->end(); ++it) {
+    const std::string& name = input.solver->name(it);
+    if (std::find(solver_sublists.begin(), solver_sublists.end(), name) == solver_sublists.end()) {
+      throw InputError(path + ": grout/solver/" + name +
+                       ": unknown key (known: Newton, NOX, Linear Solver)");
+    }
+    if (!input.solver->entry(it).isList()) {
+      throw InputError(path + ": grout/solver/" + name + ": expected a section of keys");
+    }
+  }
 
   const Section output =
       grout.section("output", {Key::string("file").defaults(stem + ".e"),

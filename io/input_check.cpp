@@ -65,6 +65,7 @@ const MaterialInput* find_material(const Input& input, const ElementBlock& block
 }
 
 void check_input_against_mesh(const Input& input, const Mesh& mesh) {
+  check_mesh(mesh);
   const MeshCheck check(input, mesh);
   const int dim = input.model.dimension;
   if (mesh.dimension != dim) {
@@ -112,10 +113,17 @@ void check_input_against_mesh(const Input& input, const Mesh& mesh) {
                                           "D model, got " + std::to_string(l.components.size()));
     }
   }
+  std::map<std::string, std::string> pair_of_slave;
   for (const ContactInput& c : input.contact) {
     const std::string key = "grout/contact/" + c.name;
     check.side_set(key + "/slave", c.slave);
     check.side_set(key + "/master", c.master);
+    const auto [it, fresh] = pair_of_slave.emplace(mesh.find_side_set(c.slave)->name, c.name);
+    if (!fresh) {
+      check.fail(key + "/slave", "side set '" + c.slave +
+                                     "' is already the slave of grout/contact/" + it->second +
+                                     " (a slave side belongs to one contact pair)");
+    }
   }
 }
 

@@ -30,6 +30,10 @@ std::string describe(const Teuchos::ParameterEntry& entry) {
   if (entry.isList()) return "a section";
   if (holds<std::string>(entry)) return "a string '" + value_of<std::string>(entry) + "'";
   if (holds<int>(entry)) return "an integer '" + std::to_string(value_of<int>(entry)) + "'";
+  if (holds<long long>(entry)) {
+    return "an integer '" + std::to_string(value_of<long long>(entry)) +
+           "' (out of range: at most 2147483647 in magnitude)";
+  }
   if (holds<double>(entry)) return "a number '" + format_number(value_of<double>(entry)) + "'";
   if (holds<bool>(entry))
     return std::string("a boolean '") + (value_of<bool>(entry) ? "true" : "false") + "'";

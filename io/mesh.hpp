@@ -63,4 +63,11 @@ struct Mesh {
   const ElementBlock* block_of(GlobalIndex element) const;
 };
 
+/// \brief Checks what every solve relies on; throws InputError naming the mesh file and the
+/// entity: ids and names unique among blocks, among side sets and among node sets; no node
+/// twice in a node set and no (element, side) twice in a side set; every element with
+/// finite coordinates and det J > 0 at each point of its quadrature rule (not inverted,
+/// not degenerate).
+void check_mesh(const Mesh& mesh);
+
 }  // namespace grout

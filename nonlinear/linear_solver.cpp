@@ -42,8 +42,20 @@ LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::stri
   }
   impl_->belos_type_given = impl_->belos.isParameter("Solver Type");
   // --- end condensed multipliers ---
+  if (impl_->belos_type_given && !impl_->belos.isType<std::string>("Solver Type"))
+    throw InputError(where + "/Belos/Solver Type: expected the name of a Belos solver");
   impl_->belos_type = impl_->belos.get<std::string>("Solver Type", "CG");
   impl_->belos.remove("Solver Type", false);
+  // Belos names its own solvers (case-insensitive): ask it, so that a misspelt name is an
+  // input error here and not an exception from inside Belos at the first solve.
+  Belos::SolverFactory<double, MultiVector, Operator> belos_factory;
+  if (!belos_factory.isSupported(impl_->belos_type)) {
+    std::string names;
+    for (const std::string& name : belos_factory.supportedSolverNames())
+      names += (names.empty() ? "" : ", ") + name;
+    throw InputError(where + "/Belos/Solver Type: unknown Belos solver '" + impl_->belos_type +
+                     "' (Belos has: " + names + ")");
+  }
   if (!impl_->belos.isParameter("Convergence Tolerance"))
     impl_->belos.set("Convergence Tolerance", 1e-12);
   if (!impl_->belos.isParameter("Maximum Iterations")) impl_->belos.set("Maximum Iterations", 2000);

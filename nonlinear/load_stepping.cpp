@@ -48,7 +48,8 @@ void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const New
     converged.newton = &report;
     converged.state = &x;
     on_step(converged);
-    if (cuts > 0 && report.iterations < 5) times.grow();  // back towards t_end / n
+    if (report.iterations < 5) times.grow();  // back towards t_end / n
+    cuts = 0;                                   // the budget of halvings is per step
   }
 }
 

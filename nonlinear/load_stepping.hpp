@@ -3,6 +3,7 @@
 
 #include <functional>
 
+#include "io/errors.hpp"
 #include "nonlinear/mechanics_problem.hpp"
 #include "nonlinear/newton.hpp"
 
@@ -23,13 +24,14 @@ struct ConvergedStep {
 };
 
 /// Thrown when a step fails after every cut-back: names the time and the reason.
-class ConvergenceError : public std::runtime_error {
+class ConvergenceError : public ExitCodeError {
  public:
-  using std::runtime_error::runtime_error;
+  explicit ConvergenceError(const std::string& what) : ExitCodeError(what, 3) {}
 };
 
 /// Steps from t = 0 to end_time in `steps` equal increments. A step whose Newton solve fails
-/// is retried with half the increment, up to max_cuts times; then ConvergenceError. Every
+/// is retried with half the increment, up to max_cuts times per step (the count restarts
+/// after each converged step); then ConvergenceError. Every
 /// converged step goes to `on_step` at once (the caller writes and flushes it).
 void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const NewtonOptions& newton,
                       const SteppingOptions& stepping,

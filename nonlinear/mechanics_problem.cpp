@@ -4,7 +4,9 @@
 #include <Teuchos_TimeMonitor.hpp>
 #include <cmath>
 #include <limits>
+#include <map>
 
+#include "assembly/agree_on_errors.hpp"
 #include "io/errors.hpp"
 #include "nonlinear/dirichlet.hpp"
 
@@ -132,6 +134,19 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
     c->tangents.assign(n_slave, {});
     interfaces_.push_back(std::move(c));
   }
+  // A slave node carries one multiplier: two pairs must not share slave nodes.
+  std::map<GlobalIndex, const Interface*> slave_pair;
+  for (const auto& c : interfaces_) {
+    for (GlobalIndex n : c->surface.slave_nodes) {
+      const auto [it, fresh] = slave_pair.emplace(n, c.get());
+      if (!fresh) {
+        throw InputError(input.file + ": grout/contact/" + c->input.name + "/slave: side set '" +
+                         c->input.slave + "' shares node " + std::to_string(n + 1) +
+                         " with the slave side of grout/contact/" + it->second->input.name +
+                         " (a slave node belongs to one contact pair)");
+      }
+    }
+  }
   const auto comm = solid.comm();
   map_ = Teuchos::rcp(new Map(next_lambda, owned.data(), owned.size(), 0, comm));
   std::sort(gathered.begin(), gathered.end());
@@ -150,8 +165,12 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
 MechanicsProblem::~MechanicsProblem() = default;
 
 void MechanicsProblem::begin_step(double t, Vector& x) {
-  prescribed_ = solid_.prescribed_displacements(t);
-  solid_.external_force(t, *f_ext_);
+  // The load expressions are evaluated on each rank's own faces: a value that is not finite
+  // on one rank stops every rank.
+  agree_on_errors(*solid_.comm(), [&] {
+    prescribed_ = solid_.prescribed_displacements(t);
+    solid_.external_force(t, *f_ext_);
+  });
   auto xv = x.getLocalViewHost(Tpetra::Access::ReadWrite);
   for (int i = 0; i < num_owned_u_; ++i) {
     const double value = prescribed_[map_->getGlobalElement(i)];

@@ -14,7 +14,9 @@
 #include <NOX_StatusTest_RelativeNormF.H>
 #include <NOX_Utils.H>
 #include <NOX_Observer.hpp>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 
 #include "io/errors.hpp"
@@ -26,46 +28,52 @@ namespace grout {
 
 namespace {
 
-const std::string newton_key_prefix = "grout/solver/Newton/";
-
-double get_number(const Teuchos::ParameterList& list, const std::string& key) {
+double get_number(const Teuchos::ParameterList& list, const std::string& key,
+                  const std::string& prefix) {
   if (list.isType<double>(key)) return list.get<double>(key);
   if (list.isType<int>(key)) return list.get<int>(key);
-  throw InputError(newton_key_prefix + key + ": expected a number");
+  throw InputError(prefix + key + ": expected a number");
 }
 
-double get_tolerance(const Teuchos::ParameterList& list, const std::string& key) {
-  const double value = get_number(list, key);
-  if (!(value >= 0.0)) {
-    throw InputError(newton_key_prefix + key + ": must be >= 0, got " + std::to_string(value));
+double get_tolerance(const Teuchos::ParameterList& list, const std::string& key,
+                     const std::string& prefix) {
+  const double value = get_number(list, key, prefix);
+  if (!(value >= 0.0) || !std::isfinite(value)) {
+    std::ostringstream text;
+    text << prefix << key << ": expected a finite number >= 0, got " << value;
+    throw InputError(text.str());
   }
   return value;
 }
 
 }  // namespace
 
-NewtonOptions newton_options_from(const Teuchos::ParameterList& solver_sublist) {
+NewtonOptions newton_options_from(const Teuchos::ParameterList& solver_sublist,
+                                  const std::string& file) {
   NewtonOptions options;
+  const std::string where = (file.empty() ? "" : file + ": ") + "grout/solver/Newton";
+  const std::string newton_key_prefix = where + "/";
+  options.where = (file.empty() ? "" : file + ": ") + "grout/solver";
   if (solver_sublist.isParameter("Newton")) {
     if (!solver_sublist.isSublist("Newton")) {
-      throw InputError("grout/solver/Newton: expected a map of Newton options");
+      throw InputError(where + ": expected a map of Newton options");
     }
     const Teuchos::ParameterList& list = solver_sublist.sublist("Newton");
     for (auto it = list.begin(); it != list.end(); ++it) {
       const std::string& key = list.name(it);
       if (key == "max_iterations") {
-        if (!list.isType<int>(key) || list.get<int>(key) < 0) {
-          throw InputError(newton_key_prefix + key + ": expected an integer >= 0");
+        if (!list.isType<int>(key) || list.get<int>(key) < 1) {
+          throw InputError(newton_key_prefix + key + ": expected an integer >= 1");
         }
         options.max_iterations = list.get<int>(key);
       } else if (key == "absolute_tolerance") {
-        options.absolute_tolerance = get_tolerance(list, key);
+        options.absolute_tolerance = get_tolerance(list, key, newton_key_prefix);
       } else if (key == "relative_tolerance") {
-        options.relative_tolerance = get_tolerance(list, key);
+        options.relative_tolerance = get_tolerance(list, key, newton_key_prefix);
       } else if (key == "floor_factor") {
-        options.floor_factor = get_tolerance(list, key);
+        options.floor_factor = get_tolerance(list, key, newton_key_prefix);
       } else if (key == "update_tolerance") {
-        options.update_tolerance = get_tolerance(list, key);
+        options.update_tolerance = get_tolerance(list, key, newton_key_prefix);
       } else if (key == "line_search") {
         const std::string* value = list.getPtr<std::string>(key);
         if (!value || (*value != "Full Step" && *value != "Backtrack" && *value != "Polynomial" &&
@@ -80,10 +88,11 @@ NewtonOptions newton_options_from(const Teuchos::ParameterList& solver_sublist) 
           throw InputError(newton_key_prefix + key + ": expected a bool");
         options.require_unchanged_active_set = list.get<bool>(key);
       } else {
-        throw InputError("unknown key " + newton_key_prefix + key +
-                         " (known: max_iterations, absolute_tolerance, relative_tolerance, "
-                         "floor_factor, update_tolerance, line_search, "
-                         "require_unchanged_active_set)");
+        throw InputError(
+            newton_key_prefix + key +
+            ": unknown key (known: max_iterations, absolute_tolerance, relative_tolerance, "
+            "floor_factor, update_tolerance, line_search, "
+            "require_unchanged_active_set)");
       }
     }
   }
@@ -122,10 +131,14 @@ class ActiveSetUnchanged : public NOX::StatusTest::Generic {
 };
 
 /// Converged iff ‖F‖₂ ≤ factor · residual_floor() at the current iterate: the residual is at
-/// its round-off level, where further iterates only move it around (never converged when the
-/// problem gives no estimate).
+/// its round-off level, where further iterates only move it around. The estimate is only
+/// trusted when it is finite, positive and well below the residual of the first iterate,
+/// factor · floor ≤ max_floor_ratio · ‖F₀‖₂: a floor near ‖F₀‖ (a penalty or modulus so large
+/// that ε times it swamps the load, or an overflowing residual) would accept any iterate,
+/// the first one included.
 class ResidualAtRoundOff : public NOX::StatusTest::Generic {
  public:
+  static constexpr double max_floor_ratio = 1e-4;
   explicit ResidualAtRoundOff(double factor) : factor_(factor) {}
   NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver,
                                           NOX::StatusTest::CheckType type) override {
@@ -135,22 +148,27 @@ class ResidualAtRoundOff : public NOX::StatusTest::Generic {
     }
     const auto& group = dynamic_cast<const NoxGroup&>(solver.getSolutionGroup());
     norm_f_ = group.getNormF();
+    if (solver.getNumIterations() == 0) norm_f0_ = norm_f_;
     threshold_ = factor_ * group.residual_floor();
-    status_ = threshold_ > 0.0 && norm_f_ <= threshold_ ? NOX::StatusTest::Converged
-                                                        : NOX::StatusTest::Unconverged;
+    const bool trusted = std::isfinite(threshold_) && threshold_ > 0.0 && std::isfinite(norm_f0_) &&
+                         threshold_ <= max_floor_ratio * norm_f0_;
+    status_ = trusted && std::isfinite(norm_f_) && norm_f_ <= threshold_
+                  ? NOX::StatusTest::Converged
+                  : NOX::StatusTest::Unconverged;
     return status_;
   }
   NOX::StatusTest::StatusType getStatus() const override { return status_; }
   std::ostream& print(std::ostream& stream, int indent = 0) const override {
     stream << std::string(indent, ' ') << status_ << "F-Norm = " << norm_f_ << " <= " << threshold_
-           << " (floor_factor * round-off estimate)\n";
+           << " (floor_factor * round-off estimate, if <= " << max_floor_ratio << " * " << norm_f0_
+           << ")\n";
     return stream;
   }
 
  private:
   double factor_;
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
-  double norm_f_ = 0.0, threshold_ = 0.0;
+  double norm_f_ = 0.0, norm_f0_ = std::numeric_limits<double>::quiet_NaN(), threshold_ = 0.0;
 };
 
 /// Records the report's histories after every iteration and prints the log line on
@@ -201,6 +219,37 @@ class IterationLog : public NOX::Observer {
   std::string prefix_;
   bool print_;
 };
+
+/// Trilinos messages start with the source file and line that threw, and repeat the test
+/// that failed ("Throw test that evaluated to true: ..."): keep the sentences for the user.
+std::string without_source_paths(const std::string& text) {
+  std::istringstream stream(text);
+  std::string kept;
+  for (std::string line; std::getline(stream, line);) {
+    if (line.find(".cpp:") != std::string::npos || line.find(".hpp:") != std::string::npos ||
+        line.find(".H:") != std::string::npos || line.find(".C:") != std::string::npos ||
+        line.rfind("Throw number", 0) == 0 || line.rfind("Throw test that evaluated", 0) == 0 ||
+        line.find_first_not_of(" \t") == std::string::npos) {
+      continue;
+    }
+    kept += (kept.empty() ? "" : " ") + line.substr(line.find_first_not_of(" \t"));
+  }
+  return kept.empty() ? "(no message)" : kept;
+}
+
+/// The NOX names Grout sets or passes through, for the error message.
+std::string nox_settings_summary(const NewtonOptions& options) {
+  const std::string solver = options.nox.isType<std::string>("Nonlinear Solver")
+                                 ? options.nox.get<std::string>("Nonlinear Solver")
+                                 : "Line Search Based";
+  std::string text =
+      " (Nonlinear Solver: '" + solver + "', line search: '" + options.line_search + "'";
+  if (options.nox.isSublist("Direction") &&
+      options.nox.sublist("Direction").isType<std::string>("Method"))
+    text +=
+        ", Direction/Method: '" + options.nox.sublist("Direction").get<std::string>("Method") + "'";
+  return text + ")";
+}
 
 Teuchos::RCP<Teuchos::ParameterList> nox_parameters(const NewtonOptions& options, int rank,
                                                     const Teuchos::RCP<NOX::Observer>& observer) {
@@ -260,15 +309,26 @@ NewtonReport solve_newton(NonlinearProblem& problem, Vector& x, LinearSolver& li
 
   auto observer =
       Teuchos::rcp(new IterationLog(report, *context, log_prefix, options.verbose, rank == 0));
-  auto solver = NOX::Solver::buildSolver(group, tests, nox_parameters(options, rank, observer));
+  // NOX checks its parameters (solver, line search and direction names) while it builds the
+  // solver: what it rejects is a bad `NOX` or `Newton` sublist, an input error.
+  Teuchos::RCP<NOX::Solver::Generic> solver;
+  try {
+    solver = NOX::Solver::buildSolver(group, tests, nox_parameters(options, rank, observer));
+  } catch (...) {
+    throw InputError(options.where + "/NOX: NOX rejects these settings" +
+                     nox_settings_summary(options) + ": " +
+                     without_source_paths(message_of(std::current_exception())));
+  }
   std::string thrown;
   StatusType status = Unconverged;
   try {
     status = solver->solve();
-  } catch (const std::exception& e) {
-    thrown = e.what();
-  } catch (const char* e) {  // NOX throws "NOX Error" as a string literal
-    thrown = e;
+  } catch (const InputError&) {
+    throw;  // found while evaluating (already agreed over the ranks)
+  } catch (const ExitCodeError&) {
+    throw;
+  } catch (...) {  // NOX throws std::exceptions and "NOX Error" as a string literal
+    thrown = without_source_paths(message_of(std::current_exception()));
   }
 
   observer->finish(*group);

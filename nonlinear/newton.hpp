@@ -23,13 +23,15 @@ struct NewtonOptions {
   bool require_unchanged_active_set = true;  ///< and no active-set change at the iterate
   bool verbose = true;                       ///< one log line per iteration on rank 0
   Teuchos::ParameterList nox;                ///< passed to NOX, merged over Grout's defaults
+  std::string where = "grout/solver";        ///< "<input file>: grout/solver", for errors
 };
 
 /// Reads the optional `Newton` sublist of the `solver` sublist (keys max_iterations,
 /// absolute_tolerance, relative_tolerance, floor_factor, update_tolerance, line_search,
 /// require_unchanged_active_set) and the optional `NOX` sublist (passed through). Throws
-/// InputError naming "grout/solver/Newton/<key>" on an unknown key or a bad value.
-NewtonOptions newton_options_from(const Teuchos::ParameterList& solver_sublist);
+/// InputError naming "<file>: grout/solver/Newton/<key>" on an unknown key or a bad value.
+NewtonOptions newton_options_from(const Teuchos::ParameterList& solver_sublist,
+                                  const std::string& file = "");
 
 struct NewtonReport {
   bool converged = false;
@@ -44,7 +46,9 @@ struct NewtonReport {
 };
 
 /// Solves F(x) = 0 from the initial guess in `x`; `x` holds the last iterate on return
-/// (the solution if converged). Collective over the problem's communicator. Log lines:
+/// (the solution if converged). Collective over the problem's communicator. Throws
+/// InputError naming `options.where` + "/NOX" when NOX rejects its settings; an InputError
+/// or ExitCodeError from the problem's evaluations passes through. Log lines:
 /// `<log_prefix> newton <k>  |F| = ..  |dx| = ..  active <n> (<c> changed)  linear <its>`.
 NewtonReport solve_newton(NonlinearProblem& problem, Vector& x, LinearSolver& linear,
                           const NewtonOptions& options, const std::string& log_prefix);

@@ -1,6 +1,9 @@
 #include "nonlinear/nox_group.hpp"
 
+#include "assembly/agree_on_errors.hpp"
+
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 
@@ -12,9 +15,11 @@ Teuchos::RCP<NoxTpetraVector> new_vector(const Teuchos::RCP<const Map>& map) {
   return Teuchos::rcp(new NoxTpetraVector(Teuchos::rcp(new grout::Vector(map))));
 }
 
-// True on every rank iff `ok` on every rank (a failure on one rank must not leave the
-// others iterating alone).
-bool all_ranks(bool ok, const Comm& comm) {
+// True on every rank iff `evaluate` returned true on every rank (a failure on one rank must
+// not leave the others iterating alone); an exception on one rank is thrown on every rank.
+bool all_ranks(const std::function<bool()>& evaluate, const Comm& comm) {
+  bool ok = false;
+  agree_on_errors(comm, [&] { ok = evaluate(); });
   int local = ok ? 1 : 0, global = 0;
   Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, local, Teuchos::outArg(global));
   return global == 1;
@@ -88,8 +93,8 @@ void NoxGroup::computeX(const NOX::Abstract::Group& grp, const NOX::Abstract::Ve
 NOX::Abstract::Group::ReturnType NoxGroup::computeF() {
   if (is_f_) return Ok;
   auto& problem = context_->problem;
-  const bool ok =
-      all_ranks(problem.residual(x_->tpetra(), f_->tpetra()), *x_->tpetra().getMap()->getComm());
+  const bool ok = all_ranks([&] { return problem.residual(x_->tpetra(), f_->tpetra()); },
+                            *x_->tpetra().getMap()->getComm());
   context_->evaluated_x_tag = x_tag_;
   residual_failed_ = !ok;
   if (ok) {
@@ -117,11 +122,12 @@ NOX::Abstract::Group::ReturnType NoxGroup::computeJacobian() {
   if (context_->evaluated_x_tag != x_tag_) {
     // The problem last evaluated another x (a line-search trial): bring it back here.
     grout::Vector scratch(f_->tpetra().getMap());
-    problem.residual(x_->tpetra(), scratch);
+    all_ranks([&] { return problem.residual(x_->tpetra(), scratch); },
+              *x_->tpetra().getMap()->getComm());
     context_->evaluated_x_tag = x_tag_;
   }
-  const bool ok =
-      all_ranks(problem.jacobian(x_->tpetra(), jacobian_), *x_->tpetra().getMap()->getComm());
+  const bool ok = all_ranks([&] { return problem.jacobian(x_->tpetra(), jacobian_); },
+                            *x_->tpetra().getMap()->getComm());
   if (!ok || jacobian_.is_null()) {
     context_->failure = "jacobian evaluation failed";
     return Failed;

@@ -259,6 +259,41 @@ TEST(InputExpression, BadTextNamesWhereAndText) {
   expect_input_error([] { Expression("sin(x", "f.yaml: k"); }, {"'sin(x'"});
 }
 
+TEST(InputExpression, NonFiniteValuesAndAssignmentsNameTheKey) {
+  const std::string key = "f.yaml: grout/dirichlet/left_x/value";
+  expect_input_error([&] { Expression("0/0", key); },
+                     {key + ": expression '0/0' is not a number (NaN)"});
+  expect_input_error([&] { Expression("sqrt(-1)", key); }, {"'sqrt(-1)' is not a number"});
+  expect_input_error([&] { Expression("10/0", key); }, {key + ": expression '10/0' is +infinity"});
+  expect_input_error([&] { Expression("-1e308*10", key); }, {"is -infinity"});
+  // Not finite only at some points: found where it is evaluated, with the point.
+  const Expression log_x("log(x)*t", key);
+  EXPECT_DOUBLE_EQ(log_x(1.0, 1.0, 0.0, 0.0), 0.0);
+  expect_input_error(
+      [&] { log_x(0.5, 0.0, 2.0, 0.0); },
+      {key + ": expression 'log(x)*t' is -infinity at t = 0.5, x = 0, y = 2, z = 0"});
+  const Expression one_over_t("1/t", key);  // at t = 0 only: never evaluated there by a run
+  EXPECT_DOUBLE_EQ(one_over_t(0.5, 0.0, 0.0, 0.0), 2.0);
+  // Assignments are rejected; comparisons stay.
+  expect_input_error([&] { Expression("t=5", key); },
+                     {key + ": cannot parse expression 't=5': assignment '=' at position 2"});
+  expect_input_error([&] { Expression("x+=1", key); }, {"assignment"});
+  EXPECT_DOUBLE_EQ(Expression("(t>=1)*2 + (t==0.5) + (t<=0)", key)(1.0, 0, 0, 0), 2.0);
+  EXPECT_DOUBLE_EQ(Expression("t!=1", key)(0.0, 0, 0, 0), 1.0);
+}
+
+TEST(InputErrors, SolverSublistsAndIntegerRange) {
+  expect_bad_input("misspelt_solver", minimal + "  solver:\n    Newtn: {max_iterations: 3}\n",
+                   {"grout/solver/Newtn: unknown key (known: Newton, NOX, Linear Solver)"});
+  expect_bad_input("huge_steps", minimal + "  time: {steps: 99999999999}\n",
+                   {"grout/time/steps: ", "integer '99999999999' (out of range"});
+  try {
+    read_input(write_file("huge_steps.yaml", minimal + "  time: {steps: 99999999999}\n"));
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).find("a list"), std::string::npos) << e.what();
+  }
+}
+
 TEST(InputErrors, UnknownKeysAtEveryLevel) {
   expect_bad_input("top_key", minimal + "  mesh_file: a.exo\n",
                    {"grout: unknown key 'mesh_file'", "expected one of: mesh, model, materials"});

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 
 #include "io/errors.hpp"
 #include "nonlinear/newton.hpp"
@@ -380,6 +381,87 @@ TEST(Newton, StopsAtTheResidualRoundOffFloor) {
   options.floor_factor = 10.0;
   Vector x_under(underestimated.map());
   EXPECT_FALSE(solve(underestimated, x_under, options).converged);
+}
+
+TEST(Newton, RoundOffFloorNearTheFirstResidualIsNotTrusted) {
+  // A floor estimate as large as ‖F₀‖ (ε times a huge penalty or modulus) would accept the
+  // very first iterate. It is trusted only when floor_factor · floor ≤ 1e-4 ‖F₀‖: here it
+  // is not, and the absolute and relative tests cannot pass the actual floor (1e-9).
+  FloorProblem problem(1e-9, 1.0);  // estimate √8 ≈ ‖F₀‖
+  NewtonOptions options = quiet_options();
+  options.max_iterations = 4;
+  Vector x(problem.map());
+  const NewtonReport report = solve(problem, x, options);
+  EXPECT_FALSE(report.converged);
+  EXPECT_EQ(report.reason, "max iterations (4)");
+  // An estimate 1e-6 ‖F₀‖ is trusted (10 × 1e-6 ‖F₀‖ ≤ 1e-4 ‖F₀‖), and the first iterate,
+  // at the actual floor 2e-9 √8, is below 10 × the estimate: converged after one iteration.
+  FloorProblem small_floor(1e-9, 1e-6);
+  Vector x_small(small_floor.map());
+  const NewtonReport small = solve(small_floor, x_small, options);
+  EXPECT_TRUE(small.converged) << small.reason;
+  EXPECT_EQ(small.iterations, 1);
+}
+
+/// F(x) = s (x - 1) with s so large that F overflows to ±inf; the floor estimate overflows too.
+class OverflowProblem : public NonlinearProblem {
+ public:
+  OverflowProblem() : map_(Teuchos::rcp(new Map(4, 0, Tpetra::getDefaultComm()))) {}
+  Teuchos::RCP<const Map> map() const override { return map_; }
+  bool residual(const Vector& x, Vector& F) override {
+    auto f = F.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    const auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (LO i = 0; i < LO(f.extent(0)); ++i) f(i, 0) = 1e308 * 10.0 * (xv(i, 0) - 1.0);
+    return true;
+  }
+  bool jacobian(const Vector& x, Teuchos::RCP<Matrix>& J) override {
+    J = diagonal_matrix(x, [](double) { return 1.0; });
+    return true;
+  }
+  double residual_floor() const override { return std::numeric_limits<double>::infinity(); }
+
+ private:
+  Teuchos::RCP<const Map> map_;
+};
+
+TEST(Newton, InfiniteResidualNeverConverges) {
+  OverflowProblem problem;
+  Vector x(problem.map());
+  const NewtonReport report = solve(problem, x, quiet_options());
+  EXPECT_FALSE(report.converged);
+  EXPECT_EQ(report.reason, "non-finite residual");
+}
+
+TEST(NewtonOptions, ErrorsNameTheInputFile) {
+  Teuchos::ParameterList solver;
+  solver.sublist("Newton").set("max_iterations", 0);  // NOX's MaxIters aborts on < 1
+  try {
+    newton_options_from(solver, "case.yaml");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "case.yaml: grout/solver/Newton/max_iterations: expected an integer >= 1");
+  }
+}
+
+TEST(Newton, SettingsNoxRejectsAreAnInputErrorNamingTheKey) {
+  Teuchos::ParameterList solver;
+  solver.sublist("NOX").set("Nonlinear Solver", std::string("Newton Raphson Deluxe"));
+  NewtonOptions options = newton_options_from(solver, "case.yaml");
+  options.verbose = false;
+  FloorProblem problem(0.0, 0.0);
+  Vector x(problem.map());
+  try {
+    solve(problem, x, options);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind("case.yaml: grout/solver/NOX: NOX rejects these settings", 0), 0u)
+        << message;
+    EXPECT_NE(message.find("Newton Raphson Deluxe"), std::string::npos) << message;
+    EXPECT_EQ(message.find(".cpp:"), std::string::npos) << message;
+    EXPECT_EQ(message.find(".H:"), std::string::npos) << message;
+  }
 }
 
 TEST(NewtonOptions, ReadsFloorFactor) {

@@ -1,0 +1,125 @@
+// check_mesh: what every solve relies on in a mesh, checked once after reading it.
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "io/errors.hpp"
+#include "io/mesh.hpp"
+#include "kernels/element_jacobian.hpp"
+#include "kernels/linear_elastic.hpp"
+
+namespace grout {
+
+namespace {
+
+/// Two entities of one kind (blocks, side sets or node sets) must not share an id or a name:
+/// a look-up by name (or "id_<n>") would silently pick one.
+template <class Entity>
+void check_unique(const Mesh& mesh, const std::vector<Entity>& entities, const std::string& kind) {
+  std::map<std::string, const Entity*> by_key;
+  std::map<int, const Entity*> by_id;
+  for (const Entity& e : entities) {
+    const auto [it, fresh] = by_id.emplace(e.id, &e);
+    if (!fresh) {
+      throw InputError("mesh '" + mesh.file + "': " + kind + "s '" + it->second->name + "' and '" +
+                       e.name + "' have the same id " + std::to_string(e.id) +
+                       " (ids must be unique)");
+    }
+    for (const std::string& key : {e.name, "id_" + std::to_string(e.id)}) {
+      const auto [at, unique] = by_key.emplace(key, &e);
+      if (!unique && at->second != &e) {
+        throw InputError("mesh '" + mesh.file + "': " + kind + "s with ids " +
+                         std::to_string(at->second->id) + " and " + std::to_string(e.id) +
+                         " are both named '" + key + "' (names must be unique)");
+      }
+    }
+  }
+}
+
+void check_node_sets(const Mesh& mesh) {
+  for (const NodeSet& set : mesh.node_sets) {
+    std::set<GlobalIndex> seen;
+    for (GlobalIndex n : set.nodes) {
+      if (n < 0 || n >= mesh.num_nodes()) {
+        throw InputError("mesh '" + mesh.file + "': node set '" + set.name + "' names node " +
+                         std::to_string(n + 1) + ", which does not exist");
+      }
+      if (!seen.insert(n).second) {
+        throw InputError("mesh '" + mesh.file + "': node set '" + set.name + "' lists node " +
+                         std::to_string(n + 1) + " twice (reactions would count it twice)");
+      }
+    }
+  }
+}
+
+void check_side_sets(const Mesh& mesh) {
+  for (const SideSet& set : mesh.side_sets) {
+    std::set<std::pair<GlobalIndex, int>> seen;
+    for (std::size_t i = 0; i < set.elements.size(); ++i) {
+      if (!seen.emplace(set.elements[i], set.sides[i]).second) {
+        throw InputError("mesh '" + mesh.file + "': side set '" + set.name + "' lists side " +
+                         std::to_string(set.sides[i]) + " of element " +
+                         std::to_string(set.elements[i] + 1) +
+                         " twice (its load or contact terms would count twice)");
+      }
+    }
+  }
+}
+
+/// Every element: finite coordinates and det J > 0 at every point of its quadrature rule,
+/// relative to its size (degenerate when |det J| ≤ 1e-10 h^dim, h its longest extent).
+void check_elements(const Mesh& mesh) {
+  const int dim = mesh.dimension;
+  for (const ElementBlock& block : mesh.blocks) {
+    const int npe = block.nodes_per_element;
+    if (npe != topology_num_nodes(block.topology) || npe > max_element_nodes) continue;
+    for (GlobalIndex e = 0; e < block.num_elements(); ++e) {
+      double X[max_element_nodes * 3];
+      double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+      for (int a = 0; a < npe; ++a) {
+        const GlobalIndex node = block.connectivity[e * npe + a];
+        for (int d = 0; d < dim; ++d) {
+          const double x = mesh.coordinates[node * dim + d];
+          X[a * dim + d] = x;
+          lo[d] = a == 0 ? x : std::min(lo[d], x);
+          hi[d] = a == 0 ? x : std::max(hi[d], x);
+        }
+      }
+      const auto where = [&] {
+        return "mesh '" + mesh.file + "': block '" + block.name + "', element " +
+               std::to_string(e + 1) + " (global element " +
+               std::to_string(block.first_element + e + 1) + "): ";
+      };
+      double det_min = 0.0;
+      if (!min_jacobian_determinant(block.topology, dim, X, full_integration_degree(block.topology),
+                                    det_min)) {
+        throw InputError(where() + "a node coordinate is not a finite number");
+      }
+      double h = 0.0;
+      for (int d = 0; d < dim; ++d) h = std::max(h, hi[d] - lo[d]);
+      const double tolerance = 1e-10 * std::pow(h, dim);
+      if (det_min > tolerance) continue;
+      std::ostringstream text;
+      text << where()
+           << (det_min < -tolerance ? "inverted (det J = " : "degenerate (zero volume, det J = ")
+           << det_min << " at a quadrature point; check the node order and coordinates)";
+      throw InputError(text.str());
+    }
+  }
+}
+
+}  // namespace
+
+void check_mesh(const Mesh& mesh) {
+  check_unique(mesh, mesh.blocks, "element block");
+  check_unique(mesh, mesh.side_sets, "side set");
+  check_unique(mesh, mesh.node_sets, "node set");
+  check_node_sets(mesh);
+  check_side_sets(mesh);
+  check_elements(mesh);
+}
+
+}  // namespace grout
