@@ -9,6 +9,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -31,17 +34,37 @@ void check(int status, const std::string& path, const std::string& what) {
     fail(path, "Exodus error while " + what + " (status " + std::to_string(status) + ")");
 }
 
+/// Longest entity name read (netCDF's NC_MAX_NAME is 256 including the terminating zero).
+constexpr int64_t max_name_length = 255;
+
+/// How many stored values a file of `bytes` bytes can hold at most, so that a count in a
+/// corrupt or hostile header is refused before anything is allocated for it. A classic
+/// netCDF file ("CDF" magic) stores every value in full, at least 4 bytes each. An HDF5-based
+/// file (netCDF-4) may compress: deflate, the only filter Exodus applies, shrinks data by at
+/// most a factor of 1032.
+int64_t max_stored_values(const std::string& path) {
+  std::error_code error;
+  const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+  if (error) return 0;
+  char magic[3] = {};
+  std::ifstream(path, std::ios::binary).read(magic, sizeof magic);
+  const bool classic = magic[0] == 'C' && magic[1] == 'D' && magic[2] == 'F';
+  const std::uintmax_t values = classic ? bytes / 4 : bytes / 4 * 1032;
+  return int64_t(std::min<std::uintmax_t>(values, std::numeric_limits<int64_t>::max() / 8));
+}
+
 /// An Exodus file opened for reading, closed when it goes out of scope.
 class ReadOnlyFile {
  public:
-  explicit ReadOnlyFile(const std::string& path) : path_(path) {
+  explicit ReadOnlyFile(const std::string& path)
+      : path_(path), max_values_(max_stored_values(path)) {
     int comp_ws = sizeof(double), io_ws = 0;
     float version = 0.0f;
     id_ = ex_open(path.c_str(), EX_READ | EX_ALL_INT64_API, &comp_ws, &io_ws, &version);
     if (id_ < 0) fail(path, "cannot open Exodus file");
     // Names longer than the 32-character default are truncated unless we ask for them.
     const int64_t used = ex_inquire_int(id_, EX_INQ_DB_MAX_USED_NAME_LENGTH);
-    name_length_ = int(std::max<int64_t>(used, MAX_NAME_LENGTH));
+    name_length_ = int(std::clamp<int64_t>(used, MAX_NAME_LENGTH, max_name_length));
     ex_set_max_name_length(id_, name_length_);
   }
   ~ReadOnlyFile() { ex_close(id_); }
@@ -52,7 +75,21 @@ class ReadOnlyFile {
   const std::string& path() const { return path_; }
   void check(int status, const std::string& what) const { grout::check(status, path_, what); }
 
-  std::vector<int64_t> ids(ex_entity_type type, int64_t count) const {
+  /// Refuse `count` entries of `what` (from the header), `values_each` stored values each,
+  /// when the file is too small to hold them: the header is corrupt, and allocating for it
+  /// could exhaust the memory.
+  void check_count(int64_t count, const std::string& what, int64_t values_each = 1) const {
+    if (count < 0) fail(path_, what + ": negative count " + std::to_string(count));
+    if (count > max_values_ / values_each) {
+      fail(path_, what + ": the header declares " + std::to_string(count) + " entries of " +
+                      std::to_string(values_each) + " value(s) but the file can hold at most " +
+                      std::to_string(max_values_) +
+                      " values (limit from the file size; the file is corrupt or truncated)");
+    }
+  }
+
+  std::vector<int64_t> ids(ex_entity_type type, int64_t count, const std::string& what) const {
+    check_count(count, what);
     std::vector<int64_t> ids(static_cast<std::size_t>(count));
     if (count > 0) check(ex_get_ids(id_, type, ids.data()), "reading entity ids");
     return ids;
@@ -76,6 +113,7 @@ class ReadOnlyFile {
   std::vector<std::string> variable_names(ex_entity_type type) const {
     int count = 0;
     check(ex_get_variable_param(id_, type, &count), "reading the number of variables");
+    check_count(count, "the number of variables");
     std::vector<std::string> result(std::size_t(std::max(count, 0)));
     if (count <= 0) return result;
     std::vector<std::vector<char>> buffers(result.size(),
@@ -89,6 +127,7 @@ class ReadOnlyFile {
 
  private:
   std::string path_;
+  int64_t max_values_ = 0;
   int id_ = -1;
   int name_length_ = MAX_NAME_LENGTH;
 };
@@ -126,6 +165,11 @@ Counts read_counts(const ReadOnlyFile& file) {
              "reading the header");
   if (c.dimension != 2 && c.dimension != 3)
     fail(file.path(), "unsupported spatial dimension " + std::to_string(c.dimension));
+  file.check_count(c.nodes, "the node coordinates", c.dimension);
+  file.check_count(c.elements, "the elements");
+  file.check_count(c.blocks, "the element blocks");
+  file.check_count(c.node_sets, "the node sets");
+  file.check_count(c.side_sets, "the side sets");
   return c;
 }
 
@@ -145,7 +189,7 @@ void read_coordinates(const ReadOnlyFile& file, const Counts& c, Mesh& mesh) {
 }
 
 void read_blocks(const ReadOnlyFile& file, const Counts& c, Mesh& mesh) {
-  const auto ids = file.ids(EX_ELEM_BLOCK, c.blocks);
+  const auto ids = file.ids(EX_ELEM_BLOCK, c.blocks, "the element blocks");
   const auto names = file.names(EX_ELEM_BLOCK, ids);
   GlobalIndex first = 0;
   for (std::size_t b = 0; b < ids.size(); ++b) {
@@ -171,6 +215,7 @@ void read_blocks(const ReadOnlyFile& file, const Counts& c, Mesh& mesh) {
                             std::to_string(nodes_per_element) + " nodes per element, expected " +
                             std::to_string(topology_num_nodes(eb.topology)));
     eb.nodes_per_element = int(nodes_per_element);
+    file.check_count(num_elements, "the connectivity of " + block, nodes_per_element);
     eb.connectivity.resize(std::size_t(num_elements * nodes_per_element));
     if (num_elements > 0)
       file.check(
@@ -191,12 +236,13 @@ void read_blocks(const ReadOnlyFile& file, const Counts& c, Mesh& mesh) {
 }
 
 void read_side_sets(const ReadOnlyFile& file, const Counts& c, Mesh& mesh) {
-  const auto ids = file.ids(EX_SIDE_SET, c.side_sets);
+  const auto ids = file.ids(EX_SIDE_SET, c.side_sets, "the side sets");
   const auto names = file.names(EX_SIDE_SET, ids);
   for (std::size_t s = 0; s < ids.size(); ++s) {
     const std::string set = "side set '" + names[s] + "' (id " + std::to_string(ids[s]) + ")";
     int64_t count = 0, num_df = 0;
     file.check(ex_get_set_param(file.id(), EX_SIDE_SET, ids[s], &count, &num_df), "reading " + set);
+    file.check_count(count, set, 2);  // element and side of each face
     SideSet ss;
     ss.name = names[s];
     ss.id = int(ids[s]);
@@ -228,12 +274,13 @@ void read_side_sets(const ReadOnlyFile& file, const Counts& c, Mesh& mesh) {
 }
 
 void read_node_sets(const ReadOnlyFile& file, const Counts& c, Mesh& mesh) {
-  const auto ids = file.ids(EX_NODE_SET, c.node_sets);
+  const auto ids = file.ids(EX_NODE_SET, c.node_sets, "the node sets");
   const auto names = file.names(EX_NODE_SET, ids);
   for (std::size_t s = 0; s < ids.size(); ++s) {
     const std::string set = "node set '" + names[s] + "' (id " + std::to_string(ids[s]) + ")";
     int64_t count = 0, num_df = 0;
     file.check(ex_get_set_param(file.id(), EX_NODE_SET, ids[s], &count, &num_df), "reading " + set);
+    file.check_count(count, set);
     NodeSet ns;
     ns.name = names[s];
     ns.id = int(ids[s]);
@@ -284,7 +331,9 @@ Mesh read_exodus(const std::string& path) {
 ExodusResults read_exodus_results(const std::string& path) {
   const ReadOnlyFile file(path);
   ExodusResults r;
-  r.times.resize(std::size_t(std::max<int64_t>(ex_inquire_int(file.id(), EX_INQ_TIME), 0)));
+  const int64_t steps = std::max<int64_t>(ex_inquire_int(file.id(), EX_INQ_TIME), 0);
+  file.check_count(steps, "the time steps");
+  r.times.resize(std::size_t(steps));
   if (!r.times.empty()) file.check(ex_get_all_times(file.id(), r.times.data()), "reading times");
   r.nodal_names = file.variable_names(EX_NODAL);
   r.element_names = file.variable_names(EX_ELEM_BLOCK);
@@ -297,7 +346,9 @@ std::vector<double> read_nodal_variable(const std::string& path, const std::stri
   const ReadOnlyFile file(path);
   const int index = variable_index(file, file.variable_names(EX_NODAL), name, "nodal");
   check_step(file, step);
-  std::vector<double> values(std::size_t(ex_inquire_int(file.id(), EX_INQ_NODES)));
+  const int64_t nodes = ex_inquire_int(file.id(), EX_INQ_NODES);
+  file.check_count(nodes, "the nodes");
+  std::vector<double> values(static_cast<std::size_t>(nodes));
   file.check(ex_get_var(file.id(), step, EX_NODAL, index, 1, int64_t(values.size()), values.data()),
              "reading nodal variable '" + name + "'");
   return values;
@@ -312,12 +363,16 @@ std::vector<double> read_element_variable(const std::string& path, const std::st
   std::vector<double> values(static_cast<std::size_t>(counts.elements));
   // Blocks are stored one after the other in the global element order.
   std::size_t offset = 0;
-  for (const int64_t id : file.ids(EX_ELEM_BLOCK, counts.blocks)) {
+  for (const int64_t id : file.ids(EX_ELEM_BLOCK, counts.blocks, "the element blocks")) {
     char type[MAX_STR_LENGTH + 1] = {};
     int64_t num_elements = 0, npe = 0, edges = 0, faces = 0, attributes = 0;
     file.check(ex_get_block(file.id(), EX_ELEM_BLOCK, id, type, &num_elements, &npe, &edges, &faces,
                             &attributes),
                "reading element block " + std::to_string(id));
+    if (num_elements < 0 || std::size_t(num_elements) > values.size() - offset)
+      fail(file.path(), "element block " + std::to_string(id) + " holds " +
+                            std::to_string(num_elements) + " elements, more than the header's " +
+                            std::to_string(counts.elements) + " in all");
     if (num_elements > 0)
       file.check(ex_get_var(file.id(), step, EX_ELEM_BLOCK, index, id, num_elements,
                             values.data() + offset),

@@ -3,6 +3,7 @@
 #include <Teuchos_YamlParameterListCoreHelpers.hpp>
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -18,6 +19,13 @@ namespace {
 
 using input_schema::Key;
 using input_schema::Section;
+
+/// `text` after its first `n` characters ("" when it is shorter).
+std::string rest(const std::string& text, std::size_t n) {
+  return n < text.size() ? text.substr(n) : std::string();
+}
+
+}  // namespace
 
 /// Teuchos' parser messages carry its own source file, line and "Throw test" noise: keep
 /// the position in the input and the sentence that says what is wrong.
@@ -43,9 +51,11 @@ std::string clean_yaml_message(const std::string& what, const std::string& path)
   if (throw_test != lines.end()) {
     for (auto it = throw_test + 1; it != lines.end(); ++it) append(*it);
   } else {
-    for (const std::string& line : lines) {
-      if (line.rfind("Expected one of", 0) == 0) append("expected one of " + line.substr(16));
-      if (line.rfind("Got:", 0) == 0) append(", got" + line.substr(4));
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      if (i == 1 && !position.empty()) continue;  // the offending line of the input
+      const std::string& line = lines[i];
+      if (line.rfind("Expected one of", 0) == 0) append("expected one of " + rest(line, 16));
+      if (line.rfind("Got:", 0) == 0) append(", got" + rest(line, 4));
     }
   }
   if (detail.empty()) {  // a message in plain words after the position
@@ -73,6 +83,8 @@ std::string clean_yaml_message(const std::string& what, const std::string& path)
   }
   return path + ": YAML error: " + position + detail;
 }
+
+namespace {
 
 /// The keys at the start of a line, unindented: Teuchos silently drops some of these, so
 /// the single top-level key `grout:` is checked on the text itself.
@@ -108,14 +120,46 @@ std::string strip_comments(const std::string& text, const std::string& path) {
   return out;
 }
 
-Teuchos::RCP<Teuchos::ParameterList> parse_yaml(const std::string& path) {
+[[noreturn]] void file_too_large(const std::string& path) {
+  throw InputError(path + ": the input file has more than " + std::to_string(max_input_bytes) +
+                   " bytes (the limit of its size)");
+}
+
+/// Refuse a file or a line longer than the limits of input.hpp, naming the limit.
+void check_size(const std::string& raw, const std::string& path) {
+  if (raw.size() > max_input_bytes) file_too_large(path);
+  std::size_t number = 1, start = 0;
+  for (std::size_t end = raw.find('\n'); start <= raw.size(); end = raw.find('\n', start)) {
+    if (end == std::string::npos) end = raw.size();
+    if (end - start > max_input_line_length) {
+      throw InputError(path + ": line " + std::to_string(number) + " has " +
+                       std::to_string(end - start) + " characters, more than the limit of " +
+                       std::to_string(max_input_line_length));
+    }
+    start = end + 1;
+    ++number;
+  }
+}
+
+/// The bytes of the input file, at most max_input_bytes of them.
+std::string read_text(const std::string& path) {
   std::error_code error;
-  std::ifstream file(path);
+  std::ifstream file(path, std::ios::binary);
   if (!std::filesystem::is_regular_file(path, error) || !file) {
     throw InputError(path + ": cannot read input file");
   }
-  const std::string text = strip_comments(
-      {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()}, path);
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (!error && size > max_input_bytes) file_too_large(path);
+  std::string raw(max_input_bytes + 1, '\0');  // one more, to see that the limit is exceeded
+  file.read(raw.data(), std::streamsize(raw.size()));
+  if (file.bad()) throw InputError(path + ": cannot read input file");
+  raw.resize(std::size_t(file.gcount()));
+  return raw;
+}
+
+Teuchos::RCP<Teuchos::ParameterList> parse_yaml(const std::string& raw, const std::string& path) {
+  check_size(raw, path);
+  const std::string text = strip_comments(raw, path);
   const std::vector<std::string> keys = top_level_keys(text);
   const bool flow_style = std::regex_search(text, std::regex("(^|\n)\\{"));  // {grout: ...}
   if (keys.size() > 1 || (keys.size() == 1 && keys[0] != "grout") ||
@@ -238,7 +282,7 @@ std::vector<ContactInput> read_contact(const Section& grout) {
       Key::number("c_n").above(0),
       Key::number("c_t").above(0),
       Key::choice("integration", {"exact", "collocation"}, "integration").defaults("exact"),
-      Key::integer("collocation_points").at_least(1),
+      Key::integer("collocation_points").at_least(1).at_most(max_collocation_points),
       Key::choice("geometry", {"reference", "current"}, "contact geometry")};
   std::vector<ContactInput> pairs;
   for (const Section& s : grout.named_sections("contact", keys)) {
@@ -277,7 +321,11 @@ std::vector<ContactInput> read_contact(const Section& grout) {
 }  // namespace
 
 Input read_input(const std::string& path) {
-  const Teuchos::RCP<Teuchos::ParameterList> root = parse_yaml(path);
+  return read_input_text(read_text(path), path);
+}
+
+Input read_input_text(const std::string& raw, const std::string& path) {
+  const Teuchos::RCP<Teuchos::ParameterList> root = parse_yaml(raw, path);
   const Section grout(*root, "grout", path,
                       {Key::section("mesh").required(), Key::section("model").required(),
                        Key::section("materials").required(), Key::section("dirichlet"),

@@ -5,6 +5,7 @@
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
 #include <array>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -101,7 +102,24 @@ struct Input {
 const MaterialInput* find_material(const Input& input, const ElementBlock& block);
 
 /// Read and validate `grout:` from a YAML file. Throws InputError naming the file and key.
+/// The file must respect the limits below (checked before it is parsed).
 Input read_input(const std::string& path);
+
+/// read_input on `text` given in memory; `path` names the file in messages and is the base
+/// of relative mesh and output paths.
+Input read_input_text(const std::string& text, const std::string& path);
+
+/// Bounds on an input file, so that hostile input cannot cost unbounded time: the YAML
+/// reader's time grows with the square of a token's length.
+constexpr std::size_t max_input_bytes = 256 * 1024;
+constexpr std::size_t max_input_line_length = 4096;
+/// Bound on contact/<pair>/collocation_points (points per slave segment in 2D, per direction
+/// of a slave face in 3D): the collocation convergence study needs at most a few hundred.
+constexpr int max_collocation_points = 1000;
+
+/// The message of a Teuchos YAML parser exception in a few words:
+/// "<path>: YAML error: line L, column C: <what is wrong>".
+std::string clean_yaml_message(const std::string& what, const std::string& path);
 
 /// Check every block, side set and node set the input names exists in `mesh`, and that the
 /// mesh dimension matches the model. Throws InputError naming the entity and the file.

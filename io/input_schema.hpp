@@ -57,6 +57,7 @@ struct Key {
   Key above(double v) && { return lower = v, lower_open = true, std::move(*this); }
   Key at_least(double v) && { return lower = v, lower_open = false, std::move(*this); }
   Key below(double v) && { return upper = v, upper_open = true, std::move(*this); }
+  Key at_most(double v) && { return upper = v, upper_open = false, std::move(*this); }
 
  private:
   static Key make(std::string name, ValueType type) {

@@ -1,0 +1,136 @@
+// Hostile input: the readers refuse what would cost unbounded time or memory, and naming a
+// YAML error never fails itself. Inputs that the fuzzers found are replayed by the ctest
+// entries fuzz/replay/* (fuzz/regressions/).
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "io/errors.hpp"
+#include "io/input.hpp"
+
+namespace grout {
+namespace {
+
+const std::filesystem::path test_dir =
+    std::filesystem::path(GROUT_BINARY_DIR) / "unit_tests" / "test_io_hostile_input";
+
+/// The InputError message of `action` ("" and a test failure when it does not throw one).
+std::string input_error(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "expected an InputError";
+  return "";
+}
+
+void expect_contains(const std::string& message, const std::vector<std::string>& parts) {
+  for (const std::string& part : parts) {
+    EXPECT_NE(message.find(part), std::string::npos)
+        << "message: " << message << "\nlacks:   " << part;
+  }
+}
+
+const std::string minimal = R"yaml(grout:
+  mesh: {file: mesh.exo}
+  model: {dimension: 2}
+  materials:
+    steel: {block: body, law: linear_elastic, youngs_modulus: 200, poissons_ratio: 0.3}
+)yaml";
+
+// Teuchos' message for `printf 'grout:\n  mesh: {file: a, b\nExpected one of\n'`: the echo of
+// the input line is itself "Expected one of", which once made the cleaner read past its end.
+const std::string parser_failure =
+    "error: Parser failure at line 3 column 1 of parseYamlStream\n"
+    "Expected one of\n"
+    "Expected one of {:}\n"
+    "Got: NEWLINE\n"
+    "Lexer text: \"\n\"\n"
+    "Parser was in state 139\n";
+
+TEST(YamlMessage, InputLineLikeAHeadingIsNotReadAsOne) {
+  EXPECT_EQ(clean_yaml_message(parser_failure, "case.yaml"),
+            "case.yaml: YAML error: line 3, column 1: expected one of {:}, got NEWLINE");
+}
+
+TEST(YamlMessage, TruncatedMessagesDoNotThrow) {
+  for (const std::string what :
+       {"", "\n", "Expected one of", "Got:", "Expected one of\nGot:", "error: ",
+        "error: Parser failure at line 1 column 1 of x", "Throw test that evaluated to true",
+        "error: Parser failure at line 9 column 9 of x\nExpected one of\nExpected one of"}) {
+    SCOPED_TRACE(what);
+    std::string message;
+    EXPECT_NO_THROW(message = clean_yaml_message(what, "case.yaml"));
+    EXPECT_EQ(message.rfind("case.yaml: YAML error: ", 0), 0u) << message;
+  }
+}
+
+TEST(YamlMessage, ReaderNamesTheLineOfTheFuzzedInput) {
+  const std::string message = input_error(
+      [] { read_input_text("grout:\n  mesh: {file: a, b\nExpected one of\n", "fuzzed.yaml"); });
+  expect_contains(message, {"fuzzed.yaml: YAML error: line 3, column 1: expected one of"});
+}
+
+TEST(InputLimits, LongLineIsRefusedNamingTheLimit) {
+  // A 1 MB string value took 23 s in the YAML lexer (quadratic in a token's length).
+  const std::string before = "  output: {file: \"", after = "\"}";
+  const std::string value(max_input_line_length + 1 - before.size() - after.size(), 'a');
+  const std::string text = minimal + before + value + after + "\n";
+  expect_contains(input_error([&] { read_input_text(text, "long.yaml"); }),
+                  {"long.yaml: line 6 has 4097 characters, more than the limit of 4096"});
+  // One character less is accepted (and a comment line of the same length too).
+  const std::string ok = minimal + before + value.substr(1) + after + "\n# " +
+                         std::string(max_input_line_length - 2, '#') + "\n";
+  EXPECT_EQ(read_input_text(ok, "long.yaml").output.file, value.substr(1));
+}
+
+TEST(InputLimits, LargeFileIsRefusedBeforeItIsRead) {
+  std::filesystem::create_directories(test_dir);
+  const std::string path = (test_dir / "large.yaml").string();
+  {
+    std::ofstream file(path);
+    file << minimal;
+    const std::string comment = "# " + std::string(78, '-') + "\n";
+    for (std::size_t size = minimal.size(); size <= max_input_bytes; size += comment.size())
+      file << comment;
+  }
+  expect_contains(input_error([&] { read_input(path); }),
+                  {"large.yaml: the input file has more than 262144 bytes"});
+  // The same text given in memory.
+  std::ifstream in(path);
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  expect_contains(input_error([&] { read_input_text(text, "large.yaml"); }),
+                  {"more than 262144 bytes"});
+}
+
+TEST(InputLimits, CollocationPointsAreBounded) {
+  const std::string pair =
+      "  contact:\n    pair: {slave: a, master: b, type: frictionless, integration: "
+      "collocation, collocation_points: ";
+  expect_contains(
+      input_error([&] { read_input_text(minimal + pair + "2000000000}\n", "c.yaml"); }),
+      {"c.yaml: grout/contact/pair/collocation_points: expected an integer in [1, 1000]",
+       "2000000000"});
+  EXPECT_EQ(read_input_text(minimal + pair + "1000}\n", "c.yaml").contact.at(0).collocation_points,
+            1000);
+}
+
+TEST(InputLimits, TextAndFileReadersAgree) {
+  std::filesystem::create_directories(test_dir);
+  const std::string path = (test_dir / "same.yaml").string();
+  std::ofstream(path) << minimal;
+  const Input from_file = read_input(path);
+  const Input from_text = read_input_text(minimal, path);
+  EXPECT_EQ(from_file.mesh_file, from_text.mesh_file);
+  EXPECT_EQ(from_file.output.file, from_text.output.file);
+  EXPECT_EQ(from_file.materials.at(0).youngs_modulus, from_text.materials.at(0).youngs_modulus);
+}
+
+}  // namespace
+}  // namespace grout
