@@ -234,22 +234,15 @@ ContactMortar evaluate_contact_mortar(const ContactSurface& s,
     for (int d = 0; d < dim; ++d) coords(i, d) = x[i][d];
   const auto slave_faces = face_view(s, s.slave);
   const auto master_faces = face_view(s, s.master);
-  Kokkos::View<int*> n_candidates("grout::n_candidates", s.slave.size());
-  Kokkos::View<int**> candidates("grout::candidates", s.slave.size(), max_pair_candidates);
-  const MortarStatus found = coarse_search(slave_faces, master_faces, coords, options.search_factor,
-                                           n_candidates, candidates);
-  if (found == MortarStatus::capacity_exceeded) {
-    throw std::runtime_error("contact '" + s.name + "': more than " +
-                             std::to_string(max_pair_candidates) +
-                             " master candidates for a slave face (search boxes too large?)");
-  }
+  SearchCandidates<Kokkos::HostSpace> candidates;
+  coarse_search(slave_faces, master_faces, coords, options.search_factor, candidates);
   SlaveDualCache<pair_vars_3d> dual_cache;
   for (std::size_t f = 0; f < s.slave.size(); ++f) {
-    for (int c = 0; c < n_candidates(f); ++c) {
+    for (int p = candidates.offsets(f); p < candidates.offsets(f + 1); ++p) {
       if (dim == 2)
-        add_pair<pair_vars_2d>(s, x, options, int(f), candidates(f, c), result, nullptr);
+        add_pair<pair_vars_2d>(s, x, options, int(f), candidates.masters(p), result, nullptr);
       else
-        add_pair<pair_vars_3d>(s, x, options, int(f), candidates(f, c), result, &dual_cache);
+        add_pair<pair_vars_3d>(s, x, options, int(f), candidates.masters(p), result, &dual_cache);
     }
   }
   for (auto& D : result.D) compress_gradient(D.gradient);

@@ -17,8 +17,9 @@ struct MechanicsProblem::Interface {
   ContactInput input;
   GO lambda_offset = 0;  ///< GID of λ_0, component 0
   double c_hat = 1.0;
-  double active_tolerance = 0.0;                        ///< on λ_n − ĉ g: 1e-10 E
-  double c_t_hat = 1.0;                                 ///< c_t: like ĉ unless the input sets it
+  double active_tolerance = 0.0;  ///< on λ_n − ĉ g: 1e-10 E
+  std::vector<double> proximity;  ///< per slave node: start_gap_factor × its face size
+  double c_t_hat = 1.0;           ///< c_t: like ĉ unless the input sets it
   std::vector<std::array<double, 3>> old_positions;     ///< of surface.nodes, last converged step
   std::vector<std::array<double, 3>> positions;         ///< of surface.nodes, last evaluation
   std::vector<std::array<double, 3>> slip_increment;    ///< per slave node, ū_k of the step
@@ -50,24 +51,31 @@ double youngs_modulus_of(const Input& input, const SurfaceFaces& faces, const Co
                    faces.blocks.front()->name + "'");
 }
 
-double mean_face_size(const Mesh& mesh, const SurfaceFaces& faces) {
+// Longest edge of face f.
+double face_size(const Mesh& mesh, const SurfaceFaces& faces, std::size_t f) {
   const int dim = mesh.dimension;
-  double sum = 0.0;
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    double extent = 0.0;  // longest edge
-    for (int a = 0; a < faces.num_nodes[f]; ++a) {
-      const GlobalIndex p = faces.nodes[f][a], q = faces.nodes[f][(a + 1) % faces.num_nodes[f]];
-      double d2 = 0.0;
-      for (int d = 0; d < dim; ++d) {
-        const double dx = mesh.coordinates[p * dim + d] - mesh.coordinates[q * dim + d];
-        d2 += dx * dx;
-      }
-      extent = std::max(extent, std::sqrt(d2));
+  double extent = 0.0;
+  for (int a = 0; a < faces.num_nodes[f]; ++a) {
+    const GlobalIndex p = faces.nodes[f][a], q = faces.nodes[f][(a + 1) % faces.num_nodes[f]];
+    double d2 = 0.0;
+    for (int d = 0; d < dim; ++d) {
+      const double dx = mesh.coordinates[p * dim + d] - mesh.coordinates[q * dim + d];
+      d2 += dx * dx;
     }
-    sum += extent;
+    extent = std::max(extent, std::sqrt(d2));
   }
+  return extent;
+}
+
+double mean_face_size(const Mesh& mesh, const SurfaceFaces& faces) {
+  double sum = 0.0;
+  for (std::size_t f = 0; f < faces.size(); ++f) sum += face_size(mesh, faces, f);
   return sum / double(faces.size());
 }
+
+// Gap below which a slave node with no pressure counts as active at the start of a step, in
+// units of the mean size of its slave faces (docs/input.md, "Start of a contact step").
+constexpr double start_gap_factor = 0.05;
 
 }  // namespace
 
@@ -94,6 +102,12 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
     c->c_hat = ci.c_n > 0.0 ? ci.c_n
                             : 2.0 / (1.0 / E1 + 1.0 / E2) / mean_face_size(mesh, c->surface.slave);
     c->active_tolerance = 1e-10 * 2.0 / (1.0 / E1 + 1.0 / E2);
+    c->proximity.assign(n_slave, 0.0);
+    for (int j = 0; j < n_slave; ++j) {
+      const auto& faces = c->surface.slave_node_faces[j];
+      for (int f : faces) c->proximity[j] += face_size(mesh, c->surface.slave, f);
+      if (!faces.empty()) c->proximity[j] *= start_gap_factor / double(faces.size());
+    }
     c->options.scheme = ci.integration == ContactIntegration::collocation
                             ? MortarIntegration::collocation
                             : MortarIntegration::exact;
@@ -165,6 +179,7 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
 MechanicsProblem::~MechanicsProblem() = default;
 
 void MechanicsProblem::begin_step(double t, Vector& x) {
+  step_start_ = true;
   // The load expressions are evaluated on each rank's own faces: a value that is not finite
   // on one rank stops every rank.
   agree_on_errors(*solid_.comm(), [&] {
@@ -351,8 +366,14 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
     c.pressure[j] = lambda_n;
     // Active if λ_n − ĉ g > 0; a closed gap with no pressure yet (λ_n = g = 0, the usual
     // start) counts as active, within round-off of ĉ g, so that touching bodies are supported.
+    // Until the first Newton update of a step, a node with no pressure and a gap below
+    // start_gap_factor × its face size also counts as active (Kratos' active check): a body
+    // held only by contact then has its rigid motion fixed by the contact from the first
+    // solve (else K is singular). From the next iterate on only λ_n − ĉ g decides, so the
+    // converged state satisfies the contact conditions exactly.
     const double augmented = lambda_n - c.c_hat * gap;
-    if (augmented < -c.active_tolerance) {  // inactive: λ_j = 0
+    const bool near = step_start_ && lambda_n <= 0.0 && gap <= c.proximity[j];
+    if (augmented < -c.active_tolerance && !near) {  // inactive: λ_j = 0
       for (int a = 0; a < dim; ++a) {
         add_F(c.lambda_gid(j, a), c.lambda[j][a]);
         add_entry(c.lambda_gid(j, a), c.lambda_gid(j, a), 1.0);
@@ -543,6 +564,7 @@ bool MechanicsProblem::jacobian(const Vector&, Teuchos::RCP<Matrix>& J) {
   }
   Vector rhs(map_);
   apply_dirichlet(*J, rhs, delta);
+  step_start_ = false;  // the next residual is at the first Newton update
   return true;
 }
 

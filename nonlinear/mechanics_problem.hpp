@@ -95,6 +95,7 @@ class MechanicsProblem : public NonlinearProblem {
   int active_size_ = 0, active_changes_ = 0;
   double residual_floor_ = 0.0;
   double contact_floor2_ = 0.0;  ///< Σ of the squared multiplier-row floors (residual_floor)
+  bool step_start_ = false;      ///< no Newton update yet in this step (proximity active set)
 };
 
 }  // namespace grout

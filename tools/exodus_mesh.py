@@ -1,0 +1,186 @@
+"""Plain mesh data and an Exodus II writer (netCDF classic layout, python3-netcdf4), shared by
+tools/mdpa_to_exodus.py and the gmsh mesh scripts of inputs/.
+
+A Mesh holds 0-based node coordinates (n, dim), named element blocks (topology QUAD4, TRI3,
+TETRA4 or HEX8 and 0-based connectivity), named node sets (0-based node ids) and named side
+sets ((element, side) pairs: 0-based global element index in block order, 1-based Exodus side
+number, Sjaardema et al., SAND92-2137, fig. 4; the table below).
+"""
+import numpy as np
+
+# Exodus local side -> 0-based local nodes (kernels/topology.hpp has the same tables).
+SIDES = {
+    "QUAD4": [(0, 1), (1, 2), (2, 3), (3, 0)],
+    "TRI3": [(0, 1), (1, 2), (2, 0)],
+    "TETRA4": [(0, 1, 3), (1, 2, 3), (0, 3, 2), (0, 2, 1)],
+    "HEX8": [(0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (0, 4, 7, 3), (0, 3, 2, 1), (4, 5, 6, 7)],
+}
+DIMENSION = {"QUAD4": 2, "TRI3": 2, "TETRA4": 3, "HEX8": 3}
+NODES = {"QUAD4": 4, "TRI3": 3, "TETRA4": 4, "HEX8": 8}
+
+
+class MeshError(Exception):
+    """Malformed or inconsistent mesh input; the message names the file and line or entity."""
+
+
+class Mesh:
+    def __init__(self, coords):
+        self.coords = np.asarray(coords, dtype=float)
+        self.blocks = []  # (name, topology, connectivity (n_e, n_per) int array)
+        self.node_sets = {}  # name -> sorted int array
+        self.side_sets = {}  # name -> list of (element, side)
+
+    @property
+    def dim(self):
+        return self.coords.shape[1]
+
+    def add_block(self, name, topology, conn):
+        conn = np.asarray(conn, dtype=np.int64).reshape(-1, NODES[topology])
+        self.blocks.append((name, topology, orient(self.coords, topology, conn)))
+
+    def elements(self):
+        """(global element index, topology, node tuple) over all blocks in order."""
+        e = 0
+        for _, topology, conn in self.blocks:
+            for row in conn:
+                yield e, topology, row
+                e += 1
+
+    def boundary_faces(self):
+        """dict frozenset(face nodes) -> (element, side) for the faces of exactly one element."""
+        seen = {}
+        count = {}
+        for e, topology, row in self.elements():
+            for s, local in enumerate(SIDES[topology]):
+                key = frozenset(int(row[i]) for i in local)
+                count[key] = count.get(key, 0) + 1
+                seen[key] = (e, s + 1)
+        return {k: v for k, v in seen.items() if count[k] == 1}
+
+    def block_of_element(self):
+        names = []
+        for name, _, conn in self.blocks:
+            names += [name] * len(conn)
+        return names
+
+    def side_set_nodes(self, name):
+        """Sorted nodes of the sides of side set `name`."""
+        conn = {e: (t, row) for e, t, row in self.elements()}
+        nodes = set()
+        for e, side in self.side_sets[name]:
+            t, row = conn[e]
+            nodes.update(int(row[i]) for i in SIDES[t][side - 1])
+        return np.array(sorted(nodes), dtype=np.int64)
+
+    def add_side_set_node_sets(self):
+        """A node set per side set (same name, its nodes) where no node set has that name."""
+        for name in self.side_sets:
+            if name not in self.node_sets:
+                self.node_sets[name] = self.side_set_nodes(name)
+
+    def drop_unused_nodes(self):
+        """Removes nodes no element uses (renumbering the rest); returns how many."""
+        used = np.zeros(len(self.coords), dtype=bool)
+        for _, _, conn in self.blocks:
+            used[conn.ravel()] = True
+        new = -np.ones(len(self.coords), dtype=np.int64)
+        new[used] = np.arange(used.sum())
+        self.coords = self.coords[used]
+        self.blocks = [(n, t, new[c]) for n, t, c in self.blocks]
+        self.node_sets = {k: np.unique(new[v][new[v] >= 0]) for k, v in self.node_sets.items()}
+        return int((~used).sum())
+
+
+def orient(coords, topology, conn):
+    """Reorders elements of negative measure (clockwise 2D, inverted 3D) to positive."""
+    conn = conn.copy()
+    x = coords
+    if topology in ("QUAD4", "TRI3"):
+        p = x[conn]  # (n_e, k, dim)
+        area = 0.5 * np.sum(p[:, :, 0] * np.roll(p[:, :, 1], -1, axis=1)
+                            - np.roll(p[:, :, 0], -1, axis=1) * p[:, :, 1], axis=1)
+        flip = area < 0
+        conn[flip] = conn[flip][:, ::-1]
+    elif topology == "TETRA4":
+        p = x[conn]
+        vol = np.einsum("ij,ij->i", np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), p[:, 3] - p[:, 0])
+        flip = vol < 0
+        conn[flip] = conn[flip][:, [0, 2, 1, 3]]
+    return conn
+
+
+def write_exodus(mesh, path, title="grout mesh"):
+    """Writes mesh as an Exodus II file (netCDF classic, 64-bit offsets, 1-based ids)."""
+    import netCDF4
+
+    def names_var(ds, var, dim, names):
+        v = ds.createVariable(var, "S1", (dim, "len_name"))
+        v.set_auto_mask(False)
+        arr = np.zeros((len(names), 33), dtype="S1")
+        for k, n in enumerate(names):
+            if len(n) > 32:
+                raise MeshError("name '%s' is longer than 32 characters" % n)
+            arr[k, :len(n)] = np.array(list(n), dtype="S1")
+        v[:] = arr
+
+    with netCDF4.Dataset(path, "w", format="NETCDF3_64BIT_OFFSET") as ds:
+        ds.api_version = np.float32(8.0)
+        ds.version = np.float32(8.0)
+        ds.floating_point_word_size = np.int32(8)
+        ds.file_size = np.int32(1)
+        ds.maximum_name_length = np.int32(32)
+        ds.int64_status = np.int32(0)
+        ds.title = title
+        n_elem = sum(len(c) for _, _, c in mesh.blocks)
+        ds.createDimension("len_string", 33)
+        ds.createDimension("len_line", 81)
+        ds.createDimension("four", 4)
+        ds.createDimension("len_name", 33)
+        ds.createDimension("time_step", None)
+        ds.createDimension("num_dim", mesh.dim)
+        ds.createDimension("num_nodes", len(mesh.coords))
+        ds.createDimension("num_elem", n_elem)
+        ds.createDimension("num_el_blk", len(mesh.blocks))
+        ds.createVariable("time_whole", "f8", ("time_step",))
+        for d, axis in enumerate("xyz"[:mesh.dim]):
+            ds.createVariable("coord" + axis, "f8", ("num_nodes",))[:] = mesh.coords[:, d]
+        names_var(ds, "coor_names", "num_dim", ["x", "y", "z"][:mesh.dim])
+        ds.createVariable("eb_status", "i4", ("num_el_blk",))[:] = 1
+        prop = ds.createVariable("eb_prop1", "i4", ("num_el_blk",))
+        prop.setncattr("name", "ID")
+        prop[:] = np.arange(1, len(mesh.blocks) + 1)
+        names_var(ds, "eb_names", "num_el_blk", [b[0] for b in mesh.blocks])
+        for k, (_, topology, conn) in enumerate(mesh.blocks, start=1):
+            ds.createDimension("num_el_in_blk%d" % k, len(conn))
+            ds.createDimension("num_nod_per_el%d" % k, conn.shape[1])
+            v = ds.createVariable("connect%d" % k, "i4", ("num_el_in_blk%d" % k,
+                                                          "num_nod_per_el%d" % k))
+            v.elem_type = topology
+            v[:] = conn + 1
+        if mesh.node_sets:
+            names = sorted(mesh.node_sets)
+            ds.createDimension("num_node_sets", len(names))
+            ds.createVariable("ns_status", "i4", ("num_node_sets",))[:] = 1
+            prop = ds.createVariable("ns_prop1", "i4", ("num_node_sets",))
+            prop.setncattr("name", "ID")
+            prop[:] = np.arange(1, len(names) + 1)
+            names_var(ds, "ns_names", "num_node_sets", names)
+            for k, n in enumerate(names, start=1):
+                nodes = np.asarray(mesh.node_sets[n], dtype=np.int64)
+                ds.createDimension("num_nod_ns%d" % k, len(nodes))
+                ds.createVariable("node_ns%d" % k, "i4", ("num_nod_ns%d" % k,))[:] = nodes + 1
+        if mesh.side_sets:
+            names = sorted(mesh.side_sets)
+            ds.createDimension("num_side_sets", len(names))
+            ds.createVariable("ss_status", "i4", ("num_side_sets",))[:] = 1
+            prop = ds.createVariable("ss_prop1", "i4", ("num_side_sets",))
+            prop.setncattr("name", "ID")
+            prop[:] = np.arange(1, len(names) + 1)
+            names_var(ds, "ss_names", "num_side_sets", names)
+            for k, n in enumerate(names, start=1):
+                sides = sorted(mesh.side_sets[n])
+                ds.createDimension("num_side_ss%d" % k, len(sides))
+                ds.createVariable("elem_ss%d" % k, "i4", ("num_side_ss%d" % k,))[:] = \
+                    [e + 1 for e, _ in sides]
+                ds.createVariable("side_ss%d" % k, "i4", ("num_side_ss%d" % k,))[:] = \
+                    [s for _, s in sides]

@@ -1,0 +1,130 @@
+#!/usr/bin/python3
+"""Gmsh -> Exodus II for grout: converts a .msh file, or (as a module) the current gmsh model.
+
+Usage: tools/gmsh_to_exodus.py INPUT.msh OUTPUT.exo
+
+Physical groups become named Exodus entities (python3-gmsh reads the model):
+  - a physical group of the mesh dimension (surfaces in 2D, volumes in 3D): an element block
+    (QUAD4, TRI3, TETRA4 or HEX8; one element type per group);
+  - a physical group one dimension lower (curves in 2D, surfaces in 3D): a side set (the block
+    element sides its line/face elements lie on) and a node set of its nodes, same name;
+  - a physical group of points: a node set.
+Elements of the mesh dimension outside every physical group are ignored, and so are nodes
+no block element uses. A malformed or unreadable file, an unnamed physical group or a
+boundary element that lies on no block element side stops with the file and what is wrong,
+exit code 2.
+"""
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from exodus_mesh import Mesh, MeshError, write_exodus  # noqa: E402
+
+GMSH_TYPES = {3: "QUAD4", 2: "TRI3", 4: "TETRA4", 5: "HEX8"}  # gmsh element type -> Exodus
+
+
+def model_to_mesh(source="gmsh model"):
+    """Mesh of the current gmsh model (gmsh initialised, model meshed or loaded)."""
+    import gmsh
+
+    dim = gmsh.model.getDimension()
+    if dim not in (2, 3):
+        raise MeshError("%s: mesh dimension %d (need 2 or 3)" % (source, dim))
+    tags, xyz, _ = gmsh.model.mesh.getNodes()
+    if len(tags) == 0:
+        raise MeshError("%s: no nodes (not meshed?)" % source)
+    index = {int(t): k for k, t in enumerate(tags)}
+    coords = np.asarray(xyz).reshape(-1, 3)[:, :dim]
+    mesh = Mesh(coords)
+    groups = gmsh.model.getPhysicalGroups()
+    names = {}
+    for d, tag in groups:
+        name = gmsh.model.getPhysicalName(d, tag)
+        if not name:
+            raise MeshError("%s: physical group (dim %d, tag %d) has no name" % (source, d, tag))
+        names[(d, tag)] = name.lower()
+    for (d, tag), name in names.items():
+        if d != dim:
+            continue
+        conn, topology = [], None
+        for entity in gmsh.model.getEntitiesForPhysicalGroup(d, tag):
+            types, _, nodes = gmsh.model.mesh.getElements(d, entity)
+            for t, n in zip(types, nodes):
+                if t not in GMSH_TYPES:
+                    raise MeshError("%s: block '%s' has gmsh element type %d (supported: "
+                                    "linear quads, triangles, tetrahedra, hexahedra)" %
+                                    (source, name, t))
+                if topology not in (None, GMSH_TYPES[t]):
+                    raise MeshError("%s: block '%s' mixes %s and %s elements" %
+                                    (source, name, topology, GMSH_TYPES[t]))
+                topology = GMSH_TYPES[t]
+                conn += [index[int(v)] for v in n]
+        if topology is None:
+            raise MeshError("%s: block '%s' has no elements" % (source, name))
+        mesh.add_block(name, topology, conn)
+    if not mesh.blocks:
+        raise MeshError("%s: no physical group of dimension %d (element blocks)" % (source, dim))
+    faces = mesh.boundary_faces()
+    for (d, tag), name in names.items():
+        if d == dim:
+            continue
+        nodes = gmsh.model.mesh.getNodesForPhysicalGroup(d, tag)[0]
+        mesh.node_sets[name] = sorted({index[int(v)] for v in nodes})
+        if d != dim - 1:
+            continue
+        sides = []
+        for entity in gmsh.model.getEntitiesForPhysicalGroup(d, tag):
+            types, _, enodes = gmsh.model.mesh.getElements(d, entity)
+            for t, n in zip(types, enodes):
+                k = {1: 2, 2: 3, 3: 4}.get(int(t))
+                if k is None:
+                    raise MeshError("%s: side set '%s' has gmsh element type %d" % (source, name, t))
+                for row in np.asarray(n, dtype=np.int64).reshape(-1, k):
+                    key = frozenset(index[int(v)] for v in row)
+                    if key not in faces:
+                        raise MeshError("%s: side set '%s': element with nodes %s is not on the "
+                                        "boundary of a block" % (source, name, list(row)))
+                    sides.append(faces[key])
+        mesh.side_sets[name] = sorted(set(sides))
+    mesh.drop_unused_nodes()
+    return mesh
+
+
+def convert(path, out):
+    import gmsh
+
+    if not os.path.isfile(path):
+        raise MeshError("%s: no such file" % path)
+    gmsh.initialize()
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        try:
+            gmsh.open(path)
+        except Exception as e:  # gmsh raises plain Exceptions with its last error message
+            raise MeshError("%s: gmsh cannot read it (%s)" % (path, e))
+        mesh = model_to_mesh(path)
+    finally:
+        gmsh.finalize()
+    write_exodus(mesh, out, title="converted from " + os.path.basename(path))
+    return mesh
+
+
+def main(argv):
+    if len(argv) != 3:
+        print("usage: gmsh_to_exodus.py INPUT.msh OUTPUT.exo", file=sys.stderr)
+        return 2
+    try:
+        mesh = convert(argv[1], argv[2])
+    except MeshError as e:
+        print("gmsh_to_exodus: error: %s" % e, file=sys.stderr)
+        return 2
+    print("gmsh_to_exodus: %s -> %s: %d nodes, blocks %s, node sets %s, side sets %s" %
+          (argv[1], argv[2], len(mesh.coords), [b[0] for b in mesh.blocks],
+           sorted(mesh.node_sets), sorted(mesh.side_sets)))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
