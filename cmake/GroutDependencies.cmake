@@ -30,3 +30,9 @@ find_path(EXODUS_INCLUDE_DIR exodusII.h REQUIRED)
 find_library(EXODUS_LIBRARY NAMES exoIIv2c REQUIRED)
 find_path(MUPARSER_INCLUDE_DIR muParser.h REQUIRED)
 find_library(MUPARSER_LIBRARY NAMES muparser REQUIRED)
+
+# MUMPS, Debian's PT-SCOTCH build (libmumps-ptscotch-dev: SCOTCH and PT-SCOTCH orderings; the
+# plain libmumps-dev has PORD/AMD only). No CMake or pkg-config file either.
+find_path(MUMPS_INCLUDE_DIR dmumps_c.h REQUIRED)
+find_library(MUMPS_DMUMPS_LIBRARY NAMES dmumps_ptscotch REQUIRED)
+find_library(MUMPS_COMMON_LIBRARY NAMES mumps_common_ptscotch REQUIRED)

@@ -22,6 +22,7 @@
 #include "assembly/agree_on_errors.hpp"
 #include "assembly/distribute_mesh.hpp"
 #include "assembly/solid_problem.hpp"
+#include "drivers/mpi_startup.hpp"
 #include "drivers/results_output.hpp"
 #include "io/errors.hpp"
 #include "io/exodus.hpp"
@@ -112,6 +113,7 @@ void run(const std::string& input_path, const std::string& output_dir,
 }  // namespace
 
 int main(int argc, char** argv) {
+  grout::prefer_local_mpi_startup();  // a run without mpirun starts in 0.02 s, not 0.3 s
   Tpetra::ScopeGuard tpetra(&argc, &argv);
   const auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;

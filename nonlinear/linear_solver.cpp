@@ -9,6 +9,7 @@
 
 #include "io/errors.hpp"
 #include "nonlinear/condensed_solve.hpp"
+#include "nonlinear/mumps_solver.hpp"
 
 namespace grout {
 
@@ -17,6 +18,7 @@ struct LinearSolver::Impl {
   Teuchos::ParameterList belos;
   Teuchos::ParameterList muelu;
   std::string belos_type = "CG";
+  std::unique_ptr<MumpsSolver> mumps;  // type: mumps
   // --- condensed multipliers ---
   bool belos_type_given = false;
   bool condense = false;
@@ -27,10 +29,15 @@ struct LinearSolver::Impl {
 
 LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::string& where)
     : impl_(std::make_unique<Impl>()) {
-  impl_->type = params.isParameter("type") ? params.get<std::string>("type") : "amesos2";
-  if (impl_->type != "amesos2" && impl_->type != "belos") {
+  impl_->type = params.isParameter("type") ? params.get<std::string>("type") : "mumps";
+  if (impl_->type != "mumps" && impl_->type != "amesos2" && impl_->type != "belos") {
     throw InputError(where + "/type: unknown linear solver '" + impl_->type +
-                     "' (expected: amesos2, belos)");
+                     "' (expected: mumps, amesos2, belos)");
+  }
+  if (impl_->type == "mumps") {
+    impl_->mumps = std::make_unique<MumpsSolver>(mumps_options_from(
+        params.isSublist("MUMPS") ? params.sublist("MUMPS") : Teuchos::ParameterList(),
+        where + "/MUMPS"));
   }
   if (params.isSublist("Belos")) impl_->belos = params.sublist("Belos");
   if (params.isSublist("MueLu")) impl_->muelu = params.sublist("MueLu");
@@ -146,6 +153,10 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
 int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
                                const std::string& belos_type) {
   if (impl_->type == "amesos2") return solve_direct(K, b, x);
+  if (impl_->type == "mumps") {
+    impl_->mumps->solve(K, b, x);
+    return 1;
+  }
 
   // Belos + MueLu.
   Teuchos::ParameterList muelu = impl_->muelu;

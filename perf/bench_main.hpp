@@ -27,6 +27,8 @@
 #include <string>
 #include <vector>
 
+#include "drivers/mpi_startup.hpp"
+
 namespace grout::bench {
 
 /// Functions run after the benchmarks, before Kokkos is finalised: free cached problems
@@ -95,6 +97,7 @@ inline int strip_arguments(int argc, char** argv, int rank) {
 /// Initialise MPI, Kokkos and Tpetra, register with `register_benchmarks()` (which may
 /// depend on the number of ranks) and run the benchmarks on every rank, reporting on rank 0.
 inline int run(int argc, char** argv, void (*register_benchmarks)()) {
+  prefer_local_mpi_startup();
   Tpetra::ScopeGuard tpetra(&argc, &argv);
   const int rank = world_rank();
   argc = strip_arguments(argc, argv, rank);

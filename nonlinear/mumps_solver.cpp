@@ -1,0 +1,328 @@
+#include "nonlinear/mumps_solver.hpp"
+
+#include <dlfcn.h>
+#include <dmumps_c.h>
+#include <mpi.h>
+
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Teuchos_TimeMonitor.hpp>
+#include <algorithm>
+#include <climits>
+#include <cstdlib>
+#include <stdexcept>
+#include <vector>
+
+#include "io/errors.hpp"
+
+namespace grout {
+
+MumpsOptions mumps_options_from(const Teuchos::ParameterList& params, const std::string& where) {
+  MumpsOptions options;
+  for (auto it = params.begin(); it != params.end(); ++it) {
+    const std::string& key = params.name(it);
+    if (key == "ordering") {
+      if (!params.isType<std::string>(key)) throw InputError(where + "/ordering: expected a name");
+      options.ordering = params.get<std::string>(key);
+      if (options.ordering != "scotch" && options.ordering != "ptscotch" &&
+          options.ordering != "amd" && options.ordering != "pord") {
+        throw InputError(where + "/ordering: unknown ordering '" + options.ordering +
+                         "' (expected: scotch, ptscotch, amd, pord)");
+      }
+    } else if (key == "symmetric") {
+      if (!params.isType<bool>(key)) throw InputError(where + "/symmetric: expected true or false");
+      options.symmetric = params.get<bool>(key);
+    } else {
+      throw InputError("unknown key " + where + "/" + key + " (expected: ordering, symmetric)");
+    }
+  }
+  return options;
+}
+
+void limit_blas_threads_under_mpi(int num_ranks) {
+  if (num_ranks < 2) return;
+  for (const char* user : {"OPENBLAS_NUM_THREADS", "GOTO_NUM_THREADS", "OMP_NUM_THREADS"})
+    if (std::getenv(user)) return;
+  // OpenBLAS read its environment when it was loaded: set the count through its API, found
+  // at run time (absent with another BLAS, which then keeps its own setting).
+  using SetThreads = void (*)(int);
+  if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
+    set(1);
+}
+
+namespace {
+
+// MUMPS documents its controls and diagnostics 1-based: ICNTL(i), INFOG(i).
+MUMPS_INT& icntl(DMUMPS_STRUC_C& m, int i) {
+  return m.icntl[i - 1];
+}
+MUMPS_INT infog(const DMUMPS_STRUC_C& m, int i) {
+  return m.infog[i - 1];
+}
+
+MPI_Comm raw_comm(const Comm& comm) {
+  if (const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm))
+    return (*mpi->getRawMpiComm())();
+  return MPI_COMM_SELF;
+}
+
+std::string describe(int code) {
+  switch (code) {
+    case -5:
+    case -7:
+    case -13:
+      return " (out of memory)";
+    case -8:
+    case -9:
+    case -14:
+    case -15:
+      return " (workspace too small)";
+    case -10:
+      return " (numerically singular matrix)";
+    default:
+      return "";
+  }
+}
+
+}  // namespace
+
+struct MumpsSolver::Impl {
+  MumpsOptions options;
+  DMUMPS_STRUC_C m{};
+  MPI_Comm comm = MPI_COMM_NULL;
+  bool initialised = false;
+  bool analysed = false;
+  bool factorised = false;
+  MumpsStatistics stats;
+
+  // This rank's entries in MUMPS's form: 1-based indices of the contiguous renumbering.
+  GO n = -1;
+  std::vector<MUMPS_INT> irn, jcn;
+  std::vector<double> values;
+
+  // b gathered to rank 0 and x scattered back, in the contiguous numbering.
+  Teuchos::RCP<const Map> contiguous, root;
+  Teuchos::RCP<Export> to_root;
+  std::vector<double> rhs;
+
+  ~Impl() { finish(); }
+
+  void start(MPI_Comm c, int num_ranks) {
+    finish();
+    limit_blas_threads_under_mpi(num_ranks);
+    comm = c;
+    m = DMUMPS_STRUC_C{};
+    m.comm_fortran = MUMPS_INT(MPI_Comm_c2f(c));
+    m.par = 1;  // rank 0 works too
+    m.sym = options.symmetric ? 2 : 0;
+    m.job = -1;
+    dmumps_c(&m);
+    if (infog(m, 1) < 0)
+      throw std::runtime_error("MUMPS initialisation failed: INFOG(1) = " +
+                               std::to_string(infog(m, 1)));
+    initialised = true;
+    icntl(m, 1) = -1;  // no error, diagnostic, global-information output
+    icntl(m, 2) = -1;
+    icntl(m, 3) = -1;
+    icntl(m, 4) = 0;
+    icntl(m, 5) = 0;   // assembled matrix
+    icntl(m, 18) = 3;  // distributed: each rank gives its entries
+    icntl(m, 20) = 0;  // dense right-hand side on rank 0
+    icntl(m, 21) = 0;  // solution returned on rank 0
+    // One step of iterative refinement x += A⁻¹(b − A x) (CNTL(2): stop below a componentwise
+    // backward error of 1e-15): the (u, λ) system mixes force and gap rows of very different
+    // scales, and one step takes |b − A x|/|b| from ~1e-14..1e-12 to ~1e-16 for the price of
+    // a matrix-vector product and a second forward/backward substitution.
+    icntl(m, 10) = 1;
+    m.cntl[1] = 1e-15;
+    if (options.ordering == "ptscotch" && num_ranks > 1) {
+      icntl(m, 28) = 2;  // parallel analysis
+      icntl(m, 29) = 1;  // PT-SCOTCH
+    } else {
+      icntl(m, 28) = 1;  // sequential analysis
+      icntl(m, 7) = options.ordering == "amd" ? 0 : options.ordering == "pord" ? 4 : 3;
+    }
+    analysed = factorised = false;
+    n = -1;
+  }
+
+  void finish() {
+    if (!initialised) return;
+    int finalized = 0;
+    MPI_Finalized(&finalized);
+    if (!finalized) {
+      m.job = -2;
+      dmumps_c(&m);
+    }
+    initialised = analysed = factorised = false;
+  }
+
+  // Run MUMPS job `job`; a negative INFOG(1) throws (the same on every rank).
+  void run(int job, const char* what) {
+    m.irn_loc = irn.data();
+    m.jcn_loc = jcn.data();
+    m.a_loc = values.data();
+    m.job = job;
+    dmumps_c(&m);
+    const int status = infog(m, 1);
+    if (status < 0) {
+      throw std::runtime_error(std::string("MUMPS ") + what +
+                               " failed: INFOG(1) = " + std::to_string(status) +
+                               ", INFOG(2) = " + std::to_string(infog(m, 2)) + describe(status));
+    }
+  }
+
+  // Numeric factorisation; on a workspace shortfall (INFOG(1) = -8 or -9) raise the
+  // workspace relaxation ICNTL(14) (percent over the analysis estimate) and retry.
+  void factorise() {
+    for (int attempt = 0;; ++attempt) {
+      m.irn_loc = irn.data();
+      m.jcn_loc = jcn.data();
+      m.a_loc = values.data();
+      m.job = 2;
+      dmumps_c(&m);
+      ++stats.factorisations;
+      const int status = infog(m, 1);
+      if ((status == -8 || status == -9) && attempt < 6) {
+        icntl(m, 14) = 2 * std::max<MUMPS_INT>(icntl(m, 14), 20);
+        ++stats.workspace_retries;
+        continue;
+      }
+      if (status < 0) {
+        factorised = false;
+        throw std::runtime_error(
+            "MUMPS factorisation failed: INFOG(1) = " + std::to_string(status) +
+            ", INFOG(2) = " + std::to_string(infog(m, 2)) + describe(status));
+      }
+      factorised = true;
+      return;
+    }
+  }
+};
+
+MumpsSolver::MumpsSolver(MumpsOptions options) : impl_(std::make_unique<Impl>()) {
+  impl_->options = std::move(options);
+}
+
+MumpsSolver::~MumpsSolver() = default;
+
+const MumpsStatistics& MumpsSolver::statistics() const {
+  return impl_->stats;
+}
+
+void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x) {
+  Impl& s = *impl_;
+  const auto& comm = *K->getRowMap()->getComm();
+  const MPI_Comm mpi_comm = raw_comm(comm);
+  if (!s.initialised || s.comm != mpi_comm) s.start(mpi_comm, comm.getSize());
+
+  const auto row_map = K->getRowMap();
+  const LO n_local = LO(row_map->getNodeNumElements());
+  const GO n = GO(row_map->getGlobalNumElements());
+  if (n >= GO(INT_MAX)) throw std::runtime_error("MUMPS: more than 2^31 unknowns");
+  if (LO(b.getLocalLength()) != n_local || LO(x.getLocalLength()) != n_local)
+    throw std::logic_error("MumpsSolver::solve: b and x must be on the matrix's row map");
+
+  // The contiguous numbering: this rank's rows are offset .. offset + n_local - 1, in the
+  // row map's local order. Rebuilt only when a rank's row count changes.
+  int same_layout = s.contiguous.is_null()
+                        ? 0
+                        : int(s.n == n && LO(s.contiguous->getNodeNumElements()) == n_local);
+  MPI_Allreduce(MPI_IN_PLACE, &same_layout, 1, MPI_INT, MPI_MIN, mpi_comm);
+  if (!same_layout) {
+    s.contiguous = Teuchos::rcp(new Map(n, std::size_t(n_local), 0, K->getRowMap()->getComm()));
+    s.root = Teuchos::rcp(
+        new Map(n, std::size_t(comm.getRank() == 0 ? n : 0), 0, K->getRowMap()->getComm()));
+    s.to_root = Teuchos::rcp(new Export(s.contiguous, s.root));
+  }
+  const GO offset = s.contiguous->getMinGlobalIndex();
+
+  // Contiguous index of every column of K: the owned rows' indices imported to the columns.
+  std::vector<double> column_index(K->getColMap()->getNodeNumElements());
+  {
+    Vector row_index(row_map), col_index(K->getColMap());
+    {
+      auto r = row_index.getLocalViewHost(Tpetra::Access::OverwriteAll);
+      for (LO i = 0; i < n_local; ++i) r(i, 0) = double(offset + i);
+    }
+    const auto importer = K->getGraph()->getImporter();
+    if (!importer.is_null() && K->getDomainMap()->isSameAs(*row_map)) {
+      col_index.doImport(row_index, *importer, Tpetra::INSERT);
+    } else {
+      col_index.doImport(row_index, Import(row_map, K->getColMap()), Tpetra::INSERT);
+    }
+    auto c = col_index.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (std::size_t j = 0; j < column_index.size(); ++j) column_index[j] = c(j, 0);
+  }
+
+  // This rank's entries (lower triangle only when symmetric), and whether the pattern or the
+  // values differ from the last solve on any rank.
+  const auto local = K->getLocalMatrixHost();
+  std::vector<MUMPS_INT> irn, jcn;
+  std::vector<double> values;
+  irn.reserve(local.nnz());
+  jcn.reserve(local.nnz());
+  values.reserve(local.nnz());
+  for (LO i = 0; i < n_local; ++i) {
+    const MUMPS_INT row = MUMPS_INT(offset + i) + 1;
+    for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p) {
+      const MUMPS_INT col = MUMPS_INT(column_index[local.graph.entries(p)]) + 1;
+      if (s.options.symmetric && col > row) continue;
+      irn.push_back(row);
+      jcn.push_back(col);
+      values.push_back(local.values(p));
+    }
+  }
+  int changed[2] = {int(!s.analysed || s.n != n || irn != s.irn || jcn != s.jcn), 0};
+  changed[1] = int(changed[0] || !s.factorised || values != s.values);
+  MPI_Allreduce(MPI_IN_PLACE, changed, 2, MPI_INT, MPI_MAX, mpi_comm);
+  s.values.swap(values);
+
+  if (changed[0]) {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: MUMPS analysis"));
+    s.irn.swap(irn);
+    s.jcn.swap(jcn);
+    s.n = n;
+    s.analysed = s.factorised = false;
+    s.m.n = MUMPS_INT(n);
+    s.m.nz_loc = MUMPS_INT(s.irn.size());
+    s.m.nnz_loc = MUMPS_INT8(s.irn.size());
+    s.run(1, "analysis");
+    ++s.stats.analyses;
+    s.analysed = true;
+  }
+  if (changed[1]) {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: MUMPS factorisation"));
+    s.factorise();
+  }
+
+  // Solve with b gathered on rank 0; scatter x back.
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: MUMPS solve"));
+  Vector b_contiguous(s.contiguous), b_root(s.root);
+  {
+    auto from = b.getLocalViewHost(Tpetra::Access::ReadOnly);
+    auto to = b_contiguous.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (LO i = 0; i < n_local; ++i) to(i, 0) = from(i, 0);
+  }
+  b_root.doExport(b_contiguous, *s.to_root, Tpetra::INSERT);
+  const bool is_root = comm.getRank() == 0;
+  if (is_root) {
+    auto r = b_root.getLocalViewHost(Tpetra::Access::ReadOnly);
+    s.rhs.assign(std::size_t(n), 0.0);
+    for (GO i = 0; i < n; ++i) s.rhs[std::size_t(i)] = r(i, 0);
+  }
+  s.m.rhs = is_root ? s.rhs.data() : nullptr;
+  s.m.nrhs = 1;
+  s.m.lrhs = MUMPS_INT(n);
+  s.run(3, "solve");
+  ++s.stats.solves;
+  if (is_root) {
+    auto r = b_root.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (GO i = 0; i < n; ++i) r(i, 0) = s.rhs[std::size_t(i)];
+  }
+  b_contiguous.doImport(b_root, *s.to_root, Tpetra::INSERT);
+  auto from = b_contiguous.getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto to = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  for (LO i = 0; i < n_local; ++i) to(i, 0) = from(i, 0);
+}
+
+}  // namespace grout

@@ -1,0 +1,203 @@
+// MUMPS direct solves (nonlinear/mumps_solver.hpp) on 1 and 2 ranks (registered for both):
+// |b − A x| / |b| at round-off for a nonsymmetric saddle-point system (zero diagonal in the
+// constraint rows, like the (u, λ) contact system) on a row map that is neither contiguous
+// nor ordered by rank; the analysis is reused while only values change, the factorisation
+// while values do not change either, and both are redone when the sparsity pattern changes.
+// The answer agrees with Amesos2 KLU2 (independent solver).
+
+#include <gtest/gtest.h>
+
+#include <Tpetra_Core.hpp>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "io/errors.hpp"
+#include "nonlinear/linear_solver.hpp"
+#include "nonlinear/mumps_solver.hpp"
+
+namespace grout {
+namespace {
+
+// Grid of g × g "displacement" unknowns with a nonsymmetric 5-point stencil, plus
+// `constraints` multiplier unknowns: constraint k ties u(a_k) − u(b_k) = 0 (row of B, zero
+// diagonal) and adds B^T λ to the equilibrium rows. Row GIDs are spread cyclically over
+// the ranks and numbered backwards (a non-contiguous map). `scale` changes the values only.
+Teuchos::RCP<Matrix> saddle_point(int g, int constraints, double scale = 1.0,
+                                  bool symmetric = false) {
+  const auto comm = Tpetra::getDefaultComm();
+  const GO n_u = GO(g) * g, n = n_u + constraints;
+  std::vector<GO> mine;
+  for (GO i = n - 1; i >= 0; --i)
+    if (i % comm->getSize() == comm->getRank()) mine.push_back(i);
+  const auto map =
+      Teuchos::rcp(new Map(Tpetra::global_size_t(n), mine.data(), mine.size(), 0, comm));
+  const double skew = symmetric ? 0.0 : 0.3;
+  std::map<GO, std::map<GO, double>> rows;
+  for (GO i = 0; i < n_u; ++i) {
+    const GO x = i % g, y = i / g;
+    rows[i][i] = scale * (4.5 + 0.01 * double(i % 7));
+    if (x > 0) rows[i][i - 1] = scale * (-1.0 - skew);
+    if (x + 1 < g) rows[i][i + 1] = scale * (-1.0 + skew);
+    if (y > 0) rows[i][i - g] = scale * (-1.0 + 0.5 * skew);
+    if (y + 1 < g) rows[i][i + g] = scale * (-1.0 - 0.5 * skew);
+  }
+  for (int k = 0; k < constraints; ++k) {
+    const GO lambda = n_u + k, a = (7 * GO(k) + 3) % n_u, b = (13 * GO(k) + 5 * g + 1) % n_u;
+    if (a == b) continue;
+    rows[lambda][a] += 1.0;
+    rows[lambda][b] -= 1.0;
+    rows[a][lambda] += 1.0;
+    rows[b][lambda] -= 1.0;
+  }
+  auto A = Teuchos::rcp(new Matrix(map, 8));
+  for (GO row : mine) {
+    std::vector<GO> cols;
+    std::vector<double> vals;
+    for (const auto& [c, v] : rows[row]) cols.push_back(c), vals.push_back(v);
+    A->insertGlobalValues(row, Teuchos::ArrayView<const GO>(cols),
+                          Teuchos::ArrayView<const double>(vals));
+  }
+  A->fillComplete();
+  return A;
+}
+
+double relative_residual(const Matrix& A, const Vector& x, const Vector& b) {
+  Vector r(b.getMap());
+  A.apply(x, r);
+  r.update(1.0, b, -1.0);
+  return r.norm2() / b.norm2();
+}
+
+double relative_difference(const Vector& x, const Vector& y) {
+  Vector d(x.getMap());
+  d.update(1.0, x, -1.0, y, 0.0);
+  return d.normInf() / x.normInf();
+}
+
+TEST(MumpsSolver, SaddlePointSolveReachesRoundOff) {
+  const auto A = saddle_point(12, 10);
+  Vector b(A->getRowMap()), x(A->getRowMap());
+  b.randomize();
+  MumpsSolver solver;
+  solver.solve(A, b, x);
+  EXPECT_LT(relative_residual(*A, x, b), 1e-13);
+  EXPECT_EQ(solver.statistics().analyses, 1);
+  EXPECT_EQ(solver.statistics().factorisations, 1);
+}
+
+TEST(MumpsSolver, AgreesWithKlu2) {
+  const auto A = saddle_point(10, 8);
+  Vector b(A->getRowMap()), x_mumps(A->getRowMap()), x_klu(A->getRowMap());
+  b.randomize();
+  Teuchos::ParameterList mumps, klu;
+  klu.set("type", "amesos2");
+  LinearSolver(mumps, "test").solve(A, b, x_mumps);  // mumps is the default
+  LinearSolver(klu, "test").solve(A, b, x_klu);
+  EXPECT_LT(relative_difference(x_klu, x_mumps), 1e-10);
+}
+
+TEST(MumpsSolver, AnalysisReusedWhileOnlyValuesChange) {
+  MumpsSolver solver;
+  for (double scale : {1.0, 2.0, 0.5}) {
+    const auto A = saddle_point(12, 10, scale);
+    Vector b(A->getRowMap()), x(A->getRowMap());
+    b.randomize();
+    solver.solve(A, b, x);
+    EXPECT_LT(relative_residual(*A, x, b), 1e-13) << "scale " << scale;
+  }
+  EXPECT_EQ(solver.statistics().analyses, 1);
+  EXPECT_EQ(solver.statistics().factorisations, 3);
+  EXPECT_EQ(solver.statistics().solves, 3);
+}
+
+TEST(MumpsSolver, FactorisationReusedWhileValuesDoNotChange) {
+  const auto A = saddle_point(12, 10);
+  MumpsSolver solver;
+  for (int i = 0; i < 3; ++i) {
+    Vector b(A->getRowMap()), x(A->getRowMap());
+    b.randomize();
+    solver.solve(A, b, x);
+    EXPECT_LT(relative_residual(*A, x, b), 1e-13);
+  }
+  EXPECT_EQ(solver.statistics().analyses, 1);
+  EXPECT_EQ(solver.statistics().factorisations, 1);
+  EXPECT_EQ(solver.statistics().solves, 3);
+}
+
+TEST(MumpsSolver, NewPatternIsAnalysedAgain) {
+  MumpsSolver solver;
+  // More constraints (an active set growing), new values only, fewer constraints.
+  const std::vector<std::pair<int, double>> steps = {{10, 1.0}, {14, 1.0}, {14, 2.0}, {6, 1.0}};
+  for (const auto& [constraints, scale] : steps) {
+    const auto A = saddle_point(12, constraints, scale);
+    Vector b(A->getRowMap()), x(A->getRowMap());
+    b.randomize();
+    solver.solve(A, b, x);
+    EXPECT_LT(relative_residual(*A, x, b), 1e-13) << constraints << " constraints";
+  }
+  EXPECT_EQ(solver.statistics().analyses, 3);
+  EXPECT_EQ(solver.statistics().factorisations, 4);
+}
+
+TEST(MumpsSolver, EveryOrderingAndSymmetricLdlt) {
+  for (const char* ordering : {"scotch", "ptscotch", "amd", "pord"}) {
+    for (bool symmetric : {false, true}) {
+      const auto A = saddle_point(9, 6, 1.0, symmetric);
+      Vector b(A->getRowMap()), x(A->getRowMap());
+      b.randomize();
+      MumpsOptions options;
+      options.ordering = ordering;
+      options.symmetric = symmetric;
+      MumpsSolver solver(options);
+      solver.solve(A, b, x);
+      EXPECT_LT(relative_residual(*A, x, b), 1e-13) << ordering << " symmetric " << symmetric;
+    }
+  }
+}
+
+TEST(MumpsSolver, SingularMatrixThrowsOnEveryRank) {
+  // Constraint rows that tie the same pair twice: two identical rows.
+  const auto comm = Tpetra::getDefaultComm();
+  const GO n = 6;
+  const auto map = Teuchos::rcp(new Map(Tpetra::global_size_t(n), 0, comm));
+  auto A = Teuchos::rcp(new Matrix(map, 3));
+  for (LO i = 0; i < LO(map->getNodeNumElements()); ++i) {
+    const GO g = map->getGlobalElement(i);
+    const GO cols[2] = {g < 3 ? g : GO(0), 1};
+    const double vals[2] = {g < 3 ? 2.0 : 1.0, g < 3 ? 0.5 : 1.0};
+    A->insertGlobalValues(g, Teuchos::ArrayView<const GO>(cols, g == 1 ? 1 : 2),
+                          Teuchos::ArrayView<const double>(vals, g == 1 ? 1 : 2));
+  }
+  A->fillComplete();
+  Vector b(map), x(map);
+  b.putScalar(1.0);
+  MumpsSolver solver;
+  EXPECT_THROW(solver.solve(A, b, x), std::runtime_error);
+  // The solver stays usable.
+  const auto B = saddle_point(6, 3);
+  Vector c(B->getRowMap()), y(B->getRowMap());
+  c.randomize();
+  solver.solve(B, c, y);
+  EXPECT_LT(relative_residual(*B, y, c), 1e-13);
+}
+
+TEST(MumpsSolver, BadOptionsAreInputErrors) {
+  const std::string where = "case.yaml: grout/solver/Linear Solver/MUMPS";
+  Teuchos::ParameterList unknown_ordering, unknown_key;
+  unknown_ordering.set("ordering", "metis");
+  unknown_key.set("pivoting", 0.1);
+  for (const auto* params : {&unknown_ordering, &unknown_key}) {
+    try {
+      mumps_options_from(*params, where);
+      FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(where), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace grout
