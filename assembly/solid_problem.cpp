@@ -113,6 +113,7 @@ void SolidProblem::build_blocks(const Partition& partition) {
     lb.constants =
         elastic_constants(material.youngs_modulus, material.poissons_ratio, dim_, plane_stress);
     lb.poissons_ratio = material.poissons_ratio;
+    lb.density = material.density;
     lb.nodes = Kokkos::View<int**>("grout::block_nodes", local.size(), npe);
     lb.global = Kokkos::View<GlobalIndex*>("grout::block_elements", local.size());
     lb.owned = Kokkos::View<bool*>("grout::block_owned", local.size());

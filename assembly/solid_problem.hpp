@@ -27,6 +27,7 @@ struct LocalBlock {
   int nodes_per_element = 0;
   ElasticConstants constants{};
   double poissons_ratio = 0.0;
+  double density = 0.0;
   Kokkos::View<int**> nodes;          ///< [element][a] column-map node index
   Kokkos::View<GlobalIndex*> global;  ///< global element index
   Kokkos::View<bool*> owned;          ///< element belongs to this rank's partition
@@ -74,6 +75,13 @@ class SolidProblem {
   std::vector<std::string> stress_names() const;
 
   GlobalIndex num_global_nodes() const { return num_nodes_; }
+  /// The element blocks this rank assembles (own elements plus a ghost layer), column-map
+  /// node indices, and the reference coordinates of the column-map nodes.
+  const std::vector<LocalBlock>& local_blocks() const { return blocks_; }
+  Kokkos::View<const double**> column_coordinates() const { return column_coordinates_; }
+  /// Global node of a column-map node.
+  GlobalIndex column_node(int k) const { return column_nodes_[k]; }
+  int num_owned_nodes() const { return num_owned_nodes_; }
 
  private:
   void build_maps(const Partition& partition);

@@ -21,12 +21,15 @@
 
 #include "assembly/agree_on_errors.hpp"
 #include "assembly/distribute_mesh.hpp"
+#include "assembly/initial_conditions.hpp"
+#include "assembly/mass_matrix.hpp"
 #include "assembly/solid_problem.hpp"
 #include "drivers/mpi_startup.hpp"
 #include "drivers/results_output.hpp"
 #include "io/errors.hpp"
 #include "io/exodus.hpp"
 #include "io/input.hpp"
+#include "nonlinear/dynamic_stepping.hpp"
 #include "nonlinear/linear_solver.hpp"
 #include "nonlinear/load_stepping.hpp"
 #include "nonlinear/mechanics_problem.hpp"
@@ -92,7 +95,7 @@ void run(const std::string& input_path, const std::string& output_dir,
   stepping.steps = input.time.steps;
 
   // Solve, writing and flushing every converged step at once.
-  solve_load_steps(problem, linear, newton, stepping, [&](const ConvergedStep& step) {
+  const auto write_step = [&](const ConvergedStep& step) {
     agree_on_errors(*comm, [&] { output->write(step); });
     if (root) {
       std::printf(
@@ -101,7 +104,18 @@ void run(const std::string& input_path, const std::string& output_dir,
           step.newton->residual_history.empty() ? 0.0 : step.newton->residual_history.back());
       std::fflush(stdout);
     }
-  });
+  };
+  if (input.dynamics.enabled) {
+    // Implicit dynamics: the same problem with inertia, one time step after the other.
+    DynamicProblem dynamic(problem, mesh.dimension,
+                           assemble_mass_matrix(solid, input.dynamics.mass == MassKind::lumped),
+                           time_integrator_from(input.dynamics), input.gravity,
+                           *initial_velocity(solid, mesh, input), input.dynamics.velocity_update);
+    LinearSolver mass_solver(Teuchos::ParameterList(), input.file + ": mass matrix");
+    solve_time_steps(dynamic, linear, mass_solver, newton, stepping, write_step);
+  } else {
+    solve_load_steps(problem, linear, newton, stepping, write_step);
+  }
   if (root) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

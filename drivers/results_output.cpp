@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "io/errors.hpp"
+#include "nonlinear/dynamic_problem.hpp"
 
 namespace grout {
 
@@ -30,6 +31,10 @@ ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidPr
     for (int d = 0; d < dim; ++d) nodal.push_back(std::string("lm_") + axis[d]);
     for (int d = 0; d < dim; ++d) nodal.push_back(std::string("slip_") + axis[d]);
   }
+  if (input.dynamics.enabled) {
+    for (int d = 0; d < dim; ++d) nodal.push_back(std::string("velocity_") + axis[d]);
+    for (int d = 0; d < dim; ++d) nodal.push_back(std::string("acceleration_") + axis[d]);
+  }
   global_names_ = {"newton_iterations", "linear_iterations", "residual", "active_nodes"};
   for (const auto& bc : input.dirichlet)
     for (int d = 0; d < dim; ++d)
@@ -38,6 +43,13 @@ ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidPr
   std::sort(global_names_.begin() + first_reaction, global_names_.end());
   global_names_.erase(std::unique(global_names_.begin() + first_reaction, global_names_.end()),
                       global_names_.end());
+  reaction_globals_end_ = global_names_.size();
+  if (input.dynamics.enabled) {
+    for (const char* name :
+         {"kinetic_energy", "strain_energy", "external_work", "contact_work", "total_energy"})
+      global_names_.push_back(name);
+    for (int d = 0; d < dim; ++d) global_names_.push_back(std::string("momentum_") + axis[d]);
+  }
   if (!root_) return;
   const std::vector<OutputFile> files = output_files(input, problem.has_contact() && dim == 2);
   check_output_files(input, files);
@@ -109,13 +121,22 @@ void ResultsOutput::write(const ConvergedStep& step) {
       double(newton.iterations), double(newton.linear_iterations),
       newton.residual_history.empty() ? 0.0 : newton.residual_history.back(),
       double(contact.active_nodes)};
-  for (std::size_t g = first_reaction; g < global_names_.size(); ++g) {
+  for (std::size_t g = first_reaction; g < reaction_globals_end_; ++g) {
     const std::string& name = global_names_[g];
     const std::string set_name = name.substr(9, name.size() - 11);  // reaction_<set>_<axis>
     const int d = name.back() - 'x';
     double sum = 0.0;
     for (GlobalIndex node : mesh_.find_node_set(set_name)->nodes) sum += reaction[d][node];
     globals.push_back(sum);
+  }
+  std::vector<std::vector<double>> velocity, acceleration;
+  if (step.dynamics) {
+    velocity = gather_nodal(step.dynamics->velocity());
+    acceleration = gather_nodal(step.dynamics->acceleration());
+    const EnergyBalance& b = step.dynamics->balance();
+    for (double value : {b.kinetic, b.strain, b.external_work, b.contact_work, b.total})
+      globals.push_back(value);
+    for (int d = 0; d < dim; ++d) globals.push_back(b.momentum[d]);
   }
   if (!root_) return;
   for (int d = 0; d < dim; ++d) nodal.push_back(std::move(reaction[d]));
@@ -126,6 +147,8 @@ void ResultsOutput::write(const ConvergedStep& step) {
     for (int d = 0; d < dim; ++d) nodal.push_back(contact.lm[d]);
     for (int d = 0; d < dim; ++d) nodal.push_back(contact.slip[d]);
   }
+  for (auto& field : velocity) nodal.push_back(std::move(field));
+  for (auto& field : acceleration) nodal.push_back(std::move(field));
   exodus_->write_step(step.time, nodal, stress, globals);
   if (summary_.is_open()) {
     std::ostringstream row;

@@ -31,6 +31,7 @@ class ResultsOutput {
   const MechanicsProblem& problem_;
   bool root_ = false;
   std::vector<std::string> global_names_;
+  std::size_t reaction_globals_end_ = 0;  ///< reaction sums are [first_reaction, this)
   std::unique_ptr<ExodusWriter> exodus_;
   std::unique_ptr<OutputCommit> commit_;  ///< temporary names -> final names
   CheckedTextFile summary_;

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "io/errors.hpp"
+#include "io/input_dynamics.hpp"
 #include "io/input_schema.hpp"
 
 namespace grout {
@@ -330,7 +331,8 @@ Input read_input_text(const std::string& raw, const std::string& path) {
                       {Key::section("mesh").required(), Key::section("model").required(),
                        Key::section("materials").required(), Key::section("dirichlet"),
                        Key::section("loads"), Key::section("contact"), Key::section("time"),
-                       Key::section("solver"), Key::section("output")});
+                       Key::section("solver"), Key::section("output"), Key::section("dynamics"),
+                       Key::section("gravity"), Key::section("initial_velocity")});
   Input input;
   input.file = path;
   input.directory = std::filesystem::path(path).parent_path().string();
@@ -348,6 +350,7 @@ Input read_input_text(const std::string& raw, const std::string& path) {
                                               Key::integer("steps").at_least(1).defaults("1")});
   input.time.end = time.number("end");
   input.time.steps = time.integer("steps");
+  read_dynamics(grout, input);
 
   input.solver = Teuchos::rcp(new Teuchos::ParameterList(grout.raw_section("solver")));
   input.solver->setName("solver");

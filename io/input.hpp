@@ -79,6 +79,26 @@ struct TimeInput {
   int steps = 1;
 };
 
+/// Implicit dynamics (`grout/dynamics`); absent: quasi-static.
+enum class DynamicsScheme { newmark, hht, bossak, generalized_alpha };
+enum class MassKind { consistent, lumped };
+
+struct DynamicsInput {
+  bool enabled = false;
+  DynamicsScheme scheme = DynamicsScheme::newmark;
+  double rho_infinity = 1.0;        ///< hht, bossak, generalized_alpha
+  double beta = 0.25, gamma = 0.5;  ///< newmark
+  MassKind mass = MassKind::consistent;
+  bool velocity_update = true;  ///< contact_treatment: velocity_update (true) or none
+};
+
+/// An initial velocity field on the nodes of one element block (`grout/initial_velocity`).
+struct InitialVelocityInput {
+  std::string name;
+  std::string block;
+  std::vector<Expression> components;  ///< v_i(x, y, z) at t = 0, one per dimension
+};
+
 struct OutputInput {
   std::string file;     ///< Exodus results, resolved against the input file's folder
   std::string summary;  ///< CSV per step, resolved likewise (empty: none)
@@ -94,6 +114,9 @@ struct Input {
   std::vector<LoadInput> loads;
   std::vector<ContactInput> contact;
   TimeInput time;
+  DynamicsInput dynamics;
+  std::array<double, 3> gravity = {0.0, 0.0, 0.0};  ///< acceleration of gravity
+  std::vector<InitialVelocityInput> initial_velocity;
   Teuchos::RCP<Teuchos::ParameterList> solver;  ///< `solver` sublist, passed through
   OutputInput output;
 };

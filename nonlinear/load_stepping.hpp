@@ -15,12 +15,15 @@ struct SteppingOptions {
   int max_cuts = 6;  ///< halvings of the step size before giving up
 };
 
+class DynamicProblem;
+
 /// What a converged step hands to the output.
 struct ConvergedStep {
   int step = 0;
   double time = 0.0;
   const NewtonReport* newton = nullptr;
-  const Vector* state = nullptr;  ///< (u, λ)
+  const Vector* state = nullptr;             ///< (u, λ)
+  const DynamicProblem* dynamics = nullptr;  ///< velocity, acceleration, energies (dynamics)
 };
 
 /// Thrown when a step fails after every cut-back: names the time and the reason.

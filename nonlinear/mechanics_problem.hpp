@@ -63,6 +63,13 @@ class MechanicsProblem : public NonlinearProblem {
   void displacement(const Vector& x, Vector& u) const;
   /// f_int − f_ext + f_c on the prescribed dofs at the last residual evaluation, 0 elsewhere.
   const Vector& reactions() const { return *reaction_; }
+  /// f_int and f_ext (owned rows) at the last residual evaluation / begin_step.
+  const Vector& internal_force() const { return *f_int_; }
+  const Vector& external_force() const { return *f_ext_; }
+  /// Prescribed value of each global displacement dof at the current step (NaN where free).
+  const std::vector<double>& prescribed() const { return prescribed_; }
+  /// Global displacement dofs (the u part of the map: GIDs 0 .. num_u − 1, owned first locally).
+  GO num_displacement_dofs() const { return num_u_; }
   /// Contact results at the last residual evaluation (empty without contact).
   ContactFields contact_fields() const;
   bool has_contact() const { return !interfaces_.empty(); }

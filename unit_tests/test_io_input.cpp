@@ -545,3 +545,60 @@ TEST(InputMeshCheck, DimensionsMustAgree) {
 
 }  // namespace
 }  // namespace grout
+
+namespace grout {
+namespace {
+
+const std::string dynamic_input = R"yaml(grout:
+  mesh: {file: m.exo}
+  model: {dimension: 2}
+  materials:
+    steel: {block: b, law: linear_elastic, youngs_modulus: 1.0, poissons_ratio: 0.3, density: 7.8}
+  gravity: {y: -9.81}
+  initial_velocity:
+    spin: {block: b, x: "-y", y: "x"}
+  dynamics: {scheme: generalized_alpha, rho_infinity: 0.8, mass: lumped}
+)yaml";
+
+TEST(InputDynamics, ReadsSchemeGravityAndInitialVelocity) {
+  const Input input = read_input(write_file("dynamics.yaml", dynamic_input));
+  EXPECT_TRUE(input.dynamics.enabled);
+  EXPECT_EQ(input.dynamics.scheme, DynamicsScheme::generalized_alpha);
+  EXPECT_DOUBLE_EQ(input.dynamics.rho_infinity, 0.8);
+  EXPECT_EQ(input.dynamics.mass, MassKind::lumped);
+  EXPECT_TRUE(input.dynamics.velocity_update);
+  EXPECT_DOUBLE_EQ(input.gravity[1], -9.81);
+  ASSERT_EQ(input.initial_velocity.size(), 1u);
+  EXPECT_EQ(input.initial_velocity[0].block, "b");
+  EXPECT_DOUBLE_EQ(input.initial_velocity[0].components[0](0.0, 2.0, 3.0, 0.0), -3.0);
+  EXPECT_FALSE(read_input(write_file("static.yaml", minimal)).dynamics.enabled);
+}
+
+TEST(InputDynamics, ErrorsNameTheKey) {
+  expect_bad_input("no_density", replaced(dynamic_input, ", density: 7.8", ""),
+                   {"grout/materials/steel/density: required > 0"});
+  expect_bad_input("gravity_quasi_static",
+                   replaced(dynamic_input,
+                            "  dynamics: {scheme: generalized_alpha, rho_infinity: "
+                            "0.8, mass: lumped}\n",
+                            ""),
+                   {"grout/initial_velocity: needs a 'dynamics' section"});
+  expect_bad_input("newmark_rho", replaced(dynamic_input, "generalized_alpha", "newmark"),
+                   {"grout/dynamics/rho_infinity: only for the schemes"});
+  expect_bad_input(
+      "hht_beta", replaced(dynamic_input, "generalized_alpha, rho_infinity: 0.8", "hht, beta: 0.3"),
+      {"grout/dynamics/beta: only for scheme newmark"});
+  expect_bad_input(
+      "hht_rho",
+      replaced(dynamic_input, "generalized_alpha, rho_infinity: 0.8", "hht, rho_infinity: 0.3"),
+      {"grout/dynamics/rho_infinity: must be >= 0.5 for hht"});
+  expect_bad_input("bad_scheme", replaced(dynamic_input, "generalized_alpha", "verlet"),
+                   {"grout/dynamics/scheme", "verlet"});
+  expect_bad_input("unstable_newmark",
+                   replaced(dynamic_input, "generalized_alpha, rho_infinity: 0.8",
+                            "newmark, gamma: 0.9, beta: 0.25"),
+                   {"grout/dynamics/beta: must be >= (gamma + 1/2)^2 / 4"});
+}
+
+}  // namespace
+}  // namespace grout

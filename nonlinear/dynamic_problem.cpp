@@ -1,0 +1,236 @@
+#include "nonlinear/dynamic_problem.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <cmath>
+#include <limits>
+
+#include "nonlinear/contact_velocity_update.hpp"
+#include "nonlinear/dirichlet.hpp"
+#include "nonlinear/linear_solver.hpp"
+
+namespace grout {
+
+DynamicProblem::DynamicProblem(MechanicsProblem& problem, int dimension,
+                               Teuchos::RCP<const Matrix> mass, const TimeIntegrator& integrator,
+                               const std::array<double, 3>& gravity, const Vector& v0,
+                               bool velocity_update)
+    : problem_(problem),
+      mass_(std::move(mass)),
+      integrator_(integrator),
+      dim_(dimension),
+      velocity_update_(velocity_update) {
+  const auto u_map = mass_->getRowMap();
+  num_owned_u_ = int(u_map->getNodeNumElements());
+  auto make = [&] { return Teuchos::rcp(new Vector(u_map)); };
+  u_ = make(), v_ = make(), a_ = make();
+  f_static_n_ = make(), f_ext_n_ = make(), f_contact_n_ = make(), f_gravity_ = make();
+  f_static_last_ = make(), work_ = make(), work2_ = make();
+  v_->assign(v0);
+  Vector g(u_map);
+  {
+    auto gv = g.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (int i = 0; i < num_owned_u_; ++i) gv(i, 0) = gravity[u_map->getGlobalElement(i) % dim_];
+  }
+  mass_->apply(g, *f_gravity_);
+  lumped_mass_ = make();
+  g.putScalar(1.0);
+  mass_->apply(g, *lumped_mass_);
+  free_.assign(num_owned_u_, 1);
+}
+
+void DynamicProblem::acceleration_of(const Vector& u, Vector& a_next) const {
+  const auto uv = u.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto un = u_->getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto vn = v_->getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto an = a_->getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto out = a_next.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  for (int i = 0; i < num_owned_u_; ++i)
+    out(i, 0) = integrator_.acceleration(uv(i, 0) - un(i, 0), vn(i, 0), an(i, 0), dt_);
+}
+
+void DynamicProblem::static_force(Vector& out) const {
+  const auto fs = f_static_last_->getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto r = problem_.reactions().getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto o = out.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  for (int i = 0; i < num_owned_u_; ++i) o(i, 0) = free_[i] ? fs(i, 0) : r(i, 0);
+}
+
+bool DynamicProblem::residual(const Vector& x, Vector& F) {
+  const bool ok = problem_.residual(x, F);
+  {
+    const auto Fv = F.getLocalViewHost(Tpetra::Access::ReadOnly);
+    auto fs = f_static_last_->getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (int i = 0; i < num_owned_u_; ++i) fs(i, 0) = Fv(i, 0);
+  }
+  // M a_{n+1−αm}(u_{n+1}).
+  problem_.displacement(x, *work_);
+  acceleration_of(*work_, *work2_);
+  const double am = integrator_.alpha_m, af = integrator_.alpha_f;
+  work2_->update(am, *a_, 1.0 - am);
+  mass_->apply(*work2_, *work_);
+  {
+    auto Fv = F.getLocalViewHost(Tpetra::Access::ReadWrite);
+    const auto fn = f_static_n_->getLocalViewHost(Tpetra::Access::ReadOnly);
+    const auto ma = work_->getLocalViewHost(Tpetra::Access::ReadOnly);
+    const auto fg = f_gravity_->getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (int i = 0; i < num_owned_u_; ++i)
+      if (free_[i]) Fv(i, 0) = (1.0 - af) * Fv(i, 0) + af * fn(i, 0) + ma(i, 0) - fg(i, 0);
+  }
+  const double inertia_floor = std::numeric_limits<double>::epsilon() * work_->norm2();
+  residual_floor_ = std::hypot(problem_.residual_floor(), inertia_floor);
+  const double norm = F.norm2();  // collective
+  return ok && std::isfinite(norm);
+}
+
+bool DynamicProblem::jacobian(const Vector& x, Teuchos::RCP<Matrix>& J) {
+  if (!problem_.jacobian(x, J)) return false;
+  const double c = integrator_.mass_factor(dt_), scale = 1.0 - integrator_.alpha_f;
+  const auto& prescribed = problem_.prescribed();
+  const auto& row_map = *J->getRowMap();
+  J->resumeFill();
+  {
+    const auto local = J->getLocalMatrixHost();
+    for (int i = 0; i < num_owned_u_; ++i) {
+      if (!free_[i]) continue;
+      for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p)
+        local.values(p) *= scale;
+    }
+  }
+  const auto& mass_cols = *mass_->getColMap();
+  std::vector<GO> cols;
+  std::vector<double> vals;
+  for (int i = 0; i < num_owned_u_; ++i) {
+    if (!free_[i]) continue;
+    typename Matrix::local_inds_host_view_type indices;
+    typename Matrix::values_host_view_type values;
+    mass_->getLocalRowView(i, indices, values);
+    cols.clear(), vals.clear();
+    for (std::size_t k = 0; k < indices.extent(0); ++k) {
+      const GO col = mass_cols.getGlobalElement(indices(k));
+      if (!std::isnan(prescribed[col]) || values(k) == 0.0) continue;
+      cols.push_back(col);
+      vals.push_back(c * values(k));
+    }
+    J->sumIntoGlobalValues(row_map.getGlobalElement(i), Teuchos::ArrayView<const GO>(cols),
+                           Teuchos::ArrayView<const double>(vals));
+  }
+  J->fillComplete(J->getDomainMap(), J->getRangeMap());
+  return true;
+}
+
+void DynamicProblem::begin_step(double t, Vector& x) {
+  t_next_ = t;
+  dt_ = t - t_;
+  problem_.begin_step(t, x);
+  const auto& prescribed = problem_.prescribed();
+  const auto& u_map = *mass_->getRowMap();
+  for (int i = 0; i < num_owned_u_; ++i)
+    free_[i] = std::isnan(prescribed[u_map.getGlobalElement(i)]) ? 1 : 0;
+}
+
+void DynamicProblem::start(Vector& x0, LinearSolver& linear) {
+  solver_ = &linear;
+  begin_step(0.0, x0);
+  dt_ = 0.0;
+  Vector F(problem_.map());
+  problem_.residual(x0, F);
+  {
+    const auto Fv = F.getLocalViewHost(Tpetra::Access::ReadOnly);
+    auto fs = f_static_last_->getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (int i = 0; i < num_owned_u_; ++i) fs(i, 0) = Fv(i, 0);
+  }
+  static_force(*f_static_n_);
+  f_ext_n_->assign(problem_.external_force());
+  problem_.displacement(x0, *u_);
+  // M a_0 = M g − F_s(x0) on the free dofs, a_0 = 0 on the prescribed ones.
+  Vector rhs(mass_->getRowMap());
+  {
+    auto b = rhs.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    const auto fg = f_gravity_->getLocalViewHost(Tpetra::Access::ReadOnly);
+    const auto fs = f_static_n_->getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (int i = 0; i < num_owned_u_; ++i) b(i, 0) = free_[i] ? fg(i, 0) - fs(i, 0) : 0.0;
+  }
+  a_->putScalar(0.0);
+  if (rhs.normInf() > 0.0) {
+    auto M = Teuchos::rcp(new Matrix(*mass_, Teuchos::Copy));
+    const auto& cols = *M->getColMap();
+    std::vector<double> delta(cols.getNodeNumElements(), std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t k = 0; k < delta.size(); ++k)
+      if (!std::isnan(problem_.prescribed()[cols.getGlobalElement(LO(k))])) delta[k] = 0.0;
+    apply_dirichlet(*M, rhs, delta);
+    linear.solve(M, rhs, *a_);
+  }
+  // f_c = F_s − f_int + f_ext, and the energies of the initial state.
+  f_contact_n_->update(1.0, *f_static_n_, -1.0, problem_.internal_force(), 0.0);
+  f_contact_n_->update(1.0, *f_ext_n_, 1.0);
+  balance_ = EnergyBalance();
+  measure_state(*u_, *v_);
+}
+
+void DynamicProblem::measure_state(const Vector& u, const Vector& v) {
+  mass_->apply(v, *work_);
+  balance_.kinetic = 0.5 * v.dot(*work_);
+  balance_.strain = 0.5 * u.dot(problem_.internal_force());
+  balance_.total = balance_.kinetic + balance_.strain - balance_.external_work;
+  double p_local[3] = {0.0, 0.0, 0.0};
+  {
+    const auto mv = work_->getLocalViewHost(Tpetra::Access::ReadOnly);
+    const auto& u_map = *mass_->getRowMap();
+    for (int i = 0; i < num_owned_u_; ++i) p_local[u_map.getGlobalElement(i) % dim_] += mv(i, 0);
+  }
+  Teuchos::reduceAll(*mass_->getRowMap()->getComm(), Teuchos::REDUCE_SUM, 3, p_local,
+                     balance_.momentum.data());
+}
+
+void DynamicProblem::commit_step(const Vector& x) {
+  const auto u_map = mass_->getRowMap();
+  Vector u_next(u_map), a_next(u_map), v_next(u_map), f_static(u_map), f_contact(u_map);
+  problem_.displacement(x, u_next);
+  acceleration_of(u_next, a_next);
+  v_next.assign(*v_);
+  v_next.update(dt_ * (1.0 - integrator_.gamma), *a_, dt_ * integrator_.gamma, a_next, 1.0);
+  static_force(f_static);
+  const Vector& f_ext = problem_.external_force();
+  f_contact.update(1.0, f_static, -1.0, problem_.internal_force(), 0.0);
+  f_contact.update(1.0, f_ext, 1.0);
+
+  // Work over the step by the trapezoidal rule, Δu = u_{n+1} − u_n:
+  //   loads and gravity  ½ (f_ext,n + f_ext,n+1)·Δu + (M g)·Δu,
+  //   supports           ½ (R_n + R_{n+1})·Δu on prescribed dofs, R = M a + F_s − M g,
+  //   contact            −½ (f_c,n + f_c,n+1)·Δu (f_c enters F_s with a plus sign).
+  Vector du(u_map), reaction(u_map), reaction_n(u_map);
+  du.update(1.0, u_next, -1.0, *u_, 0.0);
+  mass_->apply(a_next, reaction);
+  reaction.update(1.0, f_static, -1.0, *f_gravity_, 1.0);
+  mass_->apply(*a_, reaction_n);
+  reaction_n.update(1.0, *f_static_n_, -1.0, *f_gravity_, 1.0);
+  {
+    auto r = reaction.getLocalViewHost(Tpetra::Access::ReadWrite);
+    auto rn = reaction_n.getLocalViewHost(Tpetra::Access::ReadWrite);
+    for (int i = 0; i < num_owned_u_; ++i)
+      if (free_[i]) r(i, 0) = rn(i, 0) = 0.0;
+  }
+  balance_.external_work += 0.5 * (f_ext_n_->dot(du) + f_ext.dot(du)) + f_gravity_->dot(du) +
+                            0.5 * (reaction_n.dot(du) + reaction.dot(du));
+  balance_.contact_work -= 0.5 * (f_contact_n_->dot(du) + f_contact.dot(du));
+
+  // Velocity update on the closed contacts; its (non-positive) work is the contact's.
+  if (velocity_update_ && problem_.has_contact() && solver_) {
+    mass_->apply(v_next, *work_);
+    const double before = 0.5 * v_next.dot(*work_);
+    if (project_contact_velocities(problem_, x, *lumped_mass_, *solver_, v_next) > 0) {
+      mass_->apply(v_next, *work_);
+      balance_.contact_work += 0.5 * v_next.dot(*work_) - before;
+    }
+  }
+  u_->assign(u_next);
+  v_->assign(v_next);
+  a_->assign(a_next);
+  f_static_n_->assign(f_static);
+  f_ext_n_->assign(f_ext);
+  f_contact_n_->assign(f_contact);
+  t_ = t_next_;
+  measure_state(*u_, *v_);
+}
+
+}  // namespace grout

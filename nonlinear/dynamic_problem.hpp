@@ -1,0 +1,94 @@
+#pragma once
+// The time-discrete problem of one step of implicit dynamics, wrapped around the quasi-static
+// MechanicsProblem F_s(u, λ; t) = f_int(u) − f_ext(t) + f_c(u, λ) (its u rows) and its contact
+// rows, with the generalised-α coefficients of TimeIntegrator (Chung & Hulbert 1993):
+//
+//   u rows:  M a_{n+1−αm}(u) + (1 − αf) F_s(u_{n+1}, λ_{n+1}; t_{n+1}) + αf F_s(u_n, λ_n; t_n)
+//            − M g = 0,
+//            a_{n+1−αm} = (1 − αm) a_{n+1}(u) + αm a_n,  a_{n+1}(u) from TimeIntegrator;
+//   λ rows:  the contact conditions of MechanicsProblem at t_{n+1}, unchanged (dual-mortar
+//            semi-smooth Newton: the active set is decided at the end of the step).
+//
+// For a linear f_int, (1 − αf) F_s(n+1) + αf F_s(n) is F_s at u_{n+1−αf} exactly.
+// Jacobian: the u rows of J_s scaled by (1 − αf), plus (1 − αm)/(β Δt²) M on the free dofs.
+// Prescribed dofs stay eliminated (MechanicsProblem); g is the gravity acceleration.
+
+#include <array>
+#include <vector>
+
+#include "nonlinear/linear_solver.hpp"
+#include "nonlinear/mechanics_problem.hpp"
+#include "nonlinear/time_integrator.hpp"
+
+namespace grout {
+
+/// Energies and momentum of the state (DynamicProblem::balance): totals over all ranks.
+struct EnergyBalance {
+  double kinetic = 0.0;        ///< ½ vᵀ M v
+  double strain = 0.0;         ///< ½ uᵀ f_int(u) (small strain: the stored energy)
+  double external_work = 0.0;  ///< Σ_steps ½ (f_n + f_{n+1})·Δu: loads, gravity, supports
+  double contact_work = 0.0;   ///< Σ_steps ½ (f_c,n + f_c,n+1)·Δu done by the contact forces
+  double total = 0.0;          ///< kinetic + strain − external_work
+  std::array<double, 3> momentum = {0.0, 0.0, 0.0};  ///< Σ (M v) per axis
+};
+
+class DynamicProblem : public NonlinearProblem {
+ public:
+  /// M on the solid's owned map (assemble_mass_matrix); v0 the initial velocity there.
+  /// velocity_update: project the velocities on the closed contacts at the end of every step
+  /// (nonlinear/contact_velocity_update.hpp).
+  DynamicProblem(MechanicsProblem& problem, int dimension, Teuchos::RCP<const Matrix> mass,
+                 const TimeIntegrator& integrator, const std::array<double, 3>& gravity,
+                 const Vector& v0, bool velocity_update = true);
+
+  MechanicsProblem& quasi_static() { return problem_; }
+  Teuchos::RCP<const Map> map() const override { return problem_.map(); }
+  bool residual(const Vector& x, Vector& F) override;
+  bool jacobian(const Vector& x, Teuchos::RCP<Matrix>& J) override;
+  int active_set_size() const override { return problem_.active_set_size(); }
+  int active_set_changes() const override { return problem_.active_set_changes(); }
+  double residual_floor() const override { return residual_floor_; }
+
+  /// Initial acceleration from M a_0 = f_ext(0) + M g − F_s(x0) on the free dofs (a_0 = 0 on
+  /// prescribed dofs), and the initial energies. Call once; `linear` (kept) also solves the
+  /// velocity update.
+  void start(Vector& x0, LinearSolver& linear);
+  /// Set t_{n+1} = t, Δt = t − t_n, and the prescribed values into x (the predictor u_n).
+  void begin_step(double t, Vector& x);
+  /// Accept x (after a residual evaluation at x): u, v, a, energies and work move to n+1.
+  void commit_step(const Vector& x);
+
+  const Vector& velocity() const { return *v_; }
+  const Vector& acceleration() const { return *a_; }
+  const EnergyBalance& balance() const { return balance_; }
+  const TimeIntegrator& integrator() const { return integrator_; }
+
+ private:
+  void acceleration_of(const Vector& u, Vector& a_next) const;
+  /// Full static u-row force at the last evaluation: F_s on free rows, the reaction on
+  /// prescribed rows (MechanicsProblem zeroes those rows in F).
+  void static_force(Vector& out) const;
+  /// Kinetic and strain energy, momentum and total of the state (u, v); collective.
+  void measure_state(const Vector& u, const Vector& v);
+
+  MechanicsProblem& problem_;
+  Teuchos::RCP<const Matrix> mass_;
+  TimeIntegrator integrator_;
+  double t_ = 0.0, t_next_ = 0.0, dt_ = 0.0;
+  int dim_ = 2;
+  int num_owned_u_ = 0;
+  std::vector<char> free_;           ///< per owned u dof, at the current step
+  Teuchos::RCP<Vector> u_, v_, a_;   ///< state at t_n (owned u map)
+  Teuchos::RCP<Vector> f_static_n_;  ///< static u-row force at t_n (static_force)
+  Teuchos::RCP<Vector> f_ext_n_, f_contact_n_;
+  Teuchos::RCP<Vector> f_gravity_;      ///< M g
+  Teuchos::RCP<Vector> f_static_last_;  ///< F_s u rows of the last residual evaluation
+  Teuchos::RCP<Vector> work_, work2_;
+  Teuchos::RCP<Vector> lumped_mass_;  ///< row sums of M
+  bool velocity_update_ = true;
+  LinearSolver* solver_ = nullptr;
+  double residual_floor_ = 0.0;
+  EnergyBalance balance_;
+};
+
+}  // namespace grout
