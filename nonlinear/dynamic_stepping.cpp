@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "nonlinear/step_times.hpp"
+
 namespace grout {
 
 void solve_time_steps(DynamicProblem& problem, LinearSolver& linear, LinearSolver& mass_solver,
@@ -16,11 +18,10 @@ void solve_time_steps(DynamicProblem& problem, LinearSolver& linear, LinearSolve
   const double E0 = problem.balance().total;
   double E_scale = problem.balance().kinetic + problem.balance().strain, drift_max = 0.0;
 
-  // Time t = end · num / den: den = steps · 2^level after `level` halvings.
-  long long num = 0, den = stepping.steps;
-  int step = 0, cuts = 0, level = 0;
-  while (num < den) {
-    const double t_next = stepping.end_time * double(num + 1) / double(den);
+  StepTimes times(stepping.end_time, stepping.steps);  // t = t_end·k/den, never a sum of Δt
+  int step = 0, cuts = 0;
+  while (!times.finished()) {
+    const double t_next = times.next_time();
     trial.assign(x);
     problem.begin_step(t_next, trial);
     std::ostringstream prefix;
@@ -33,22 +34,20 @@ void solve_time_steps(DynamicProblem& problem, LinearSolver& linear, LinearSolve
              << ", after " << cuts << " cut-backs of the time step";
         throw ConvergenceError(what.str());
       }
-      ++cuts, ++level;
-      num *= 2, den *= 2;
+      ++cuts;
+      times.halve();
       if (root) {
         std::printf("  step %d t = %g: %s; cutting the time step to dt = %g (%d/%d)\n", step + 1,
-                    t_next, report.reason.c_str(), stepping.end_time / double(den), cuts,
-                    stepping.max_cuts);
+                    t_next, report.reason.c_str(), times.step_size(), cuts, stepping.max_cuts);
         std::fflush(stdout);
       }
       continue;
     }
     x.assign(trial);
-    ++num, ++step;
+    times.advance();
+    ++step;
     cuts = 0;
-    while (level > 0 && num % 2 == 0 && report.iterations < 5) {  // back to the coarser step
-      num /= 2, den /= 2, --level;
-    }
+    if (report.iterations < 5) times.grow();  // back towards t_end / n
     problem.residual(x, F);  // reactions and contact results at the converged state
     problem.quasi_static().commit_step();
     problem.commit_step(x);
