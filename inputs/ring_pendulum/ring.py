@@ -1,0 +1,71 @@
+#!/usr/bin/python3
+"""Cylinder in a ring (benchmark #13, plane strain), meshed by gmsh (all quads), as Exodus.
+
+Usage: ring.py OUTPUT.exo [--size H]
+
+Ring: annulus about the origin, inner radius 0.9, outer radius 1.0 (block "ring"; outer
+circle "ring_outer", inner circle "ring_inner"). Cylinder: disc of radius 0.2 centred at
+(0.699, 0) (block "cylinder", circle "cylinder_surface"), 0.001 from the ring's inner
+surface: released there, it swings as a pendulum of length 0.7 about the ring centre.
+Element size H (default 0.025) on the ring and the cylinder surface.
+"""
+import argparse
+import os
+import sys
+
+import gmsh
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from exodus_mesh import MeshError, write_exodus  # noqa: E402
+from gmsh_to_exodus import model_to_mesh  # noqa: E402
+
+
+def circle(g, cx, cy, r):
+    """Four arcs of the circle of centre (cx, cy) and radius r (counter-clockwise)."""
+    c = g.addPoint(cx, cy, 0)
+    p = [g.addPoint(cx + r, cy, 0), g.addPoint(cx, cy + r, 0), g.addPoint(cx - r, cy, 0),
+         g.addPoint(cx, cy - r, 0)]
+    return [g.addCircleArc(p[k], c, p[(k + 1) % 4]) for k in range(4)]
+
+
+def build(h):
+    g = gmsh.model.geo
+    outer, inner = circle(g, 0.0, 0.0, 1.0), circle(g, 0.0, 0.0, 0.9)
+    disc = circle(g, 0.699, 0.0, 0.2)
+    ring = g.addPlaneSurface([g.addCurveLoop(outer), g.addCurveLoop(inner)])
+    cylinder = g.addPlaneSurface([g.addCurveLoop(disc)])
+    g.synchronize()
+    for dim, tags, name in [(2, [ring], "ring"), (2, [cylinder], "cylinder"),
+                            (1, outer, "ring_outer"), (1, inner, "ring_inner"),
+                            (1, disc, "cylinder_surface")]:
+        gmsh.model.setPhysicalName(dim, gmsh.model.addPhysicalGroup(dim, tags), name)
+    gmsh.option.setNumber("Mesh.MeshSizeMax", 2 * h)  # halved by the subdivision into quads
+    gmsh.option.setNumber("Mesh.RecombineAll", 1)
+    gmsh.option.setNumber("Mesh.SubdivisionAlgorithm", 1)  # all quads
+    gmsh.option.setNumber("Mesh.Algorithm", 6)
+    gmsh.model.mesh.generate(2)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("output")
+    ap.add_argument("--size", type=float, default=0.025)
+    a = ap.parse_args()
+    if not a.size > 0:
+        print("ring.py: error: --size must be > 0", file=sys.stderr)
+        return 2
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    try:
+        build(a.size)
+        write_exodus(model_to_mesh("ring.py"), a.output)
+    except MeshError as e:
+        print("ring.py: error: %s" % e, file=sys.stderr)
+        return 2
+    finally:
+        gmsh.finalize()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
