@@ -223,7 +223,6 @@ WriteFile create_mesh_file(const std::string& path, const Mesh& mesh,
                          int64_t(mesh.blocks.size()), int64_t(mesh.node_sets.size()),
                          int64_t(mesh.side_sets.size())),
              "the header");
-  write_provenance(file, provenance);
   write_coordinates(file, mesh);
   write_blocks(file, mesh, block_ids);
   write_side_sets(file, mesh, entity_ids(mesh.side_sets));
@@ -239,6 +238,7 @@ WriteFile create_mesh_file(const std::string& path, const Mesh& mesh,
                                   int(element_vars.size()), truth.data()),
                "the element variable truth table");
   }
+  write_provenance(file, provenance);
   file.check(ex_update(file.id()), "the mesh");
   return file;
 }

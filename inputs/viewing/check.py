@@ -6,6 +6,8 @@
   tensor: 2D stress_xx yy zz xy, 3D stress_xx yy zz xy yz zx;
 - set names: no node set shares its name with a side set; side set X has node set X_nodes;
 - a QA record (grout, version, mm/dd/yy, hh:mm:ss) and an info record naming the input;
+- every name and text row is NUL-padded after its end (readers that decode whole rows, such
+  as netCDF4.chartostring, fail on stray bytes there);
 - values at every step: the uniform-stress contact patch (contact_2d.yaml, contact_3d.yaml),
   sigma_yy (sigma_zz in 3D) = -p, sigma_zz = -nu p in 2D plane strain, other components 0,
   contact_pressure = p at every slave node, p = 4 t, to 1e-8 relative; 1 vs 2 ranks 1e-10.
@@ -66,6 +68,15 @@ def check_file(path, stem, dim):
     if "grout input: %s.yaml" % stem not in info:
         failures.append("%s: info records %s do not name the input %s.yaml" % (path, info, stem))
 
+    for name, var in ds.variables.items():
+        if var.dtype != "S1":
+            continue
+        rows = np.asarray(var[:].data).view("uint8").reshape(-1, var.shape[-1])
+        for row in rows:
+            end = np.flatnonzero(row == 0)
+            if end.size and np.any(row[end[0]:] != 0):
+                failures.append("%s: %s has bytes after the end of a name: %r" % (path, name, bytes(row)))
+                break
     slave = cc.side_set_nodes(r, "upper_bottom")
     worst = 0.0
     for k, t in enumerate(times):
