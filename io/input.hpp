@@ -89,7 +89,7 @@ struct DynamicsInput {
   double rho_infinity = 1.0;        ///< hht, bossak, generalized_alpha
   double beta = 0.25, gamma = 0.5;  ///< newmark
   MassKind mass = MassKind::consistent;
-  bool velocity_update = true;  ///< contact_treatment: velocity_update (true) or none
+  bool stabilized_contact = true;  ///< contact_treatment: stabilized (true) or standard
 };
 
 /// An initial velocity field on the nodes of one element block (`grout/initial_velocity`).

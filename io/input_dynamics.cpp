@@ -44,8 +44,8 @@ void read_dynamics(const Section& grout, Input& input) {
        Key::number("beta").above(0).defaults("0.25"),
        Key::number("gamma").at_least(0.5).defaults("0.5"),
        Key::choice("mass", {"consistent", "lumped"}, "mass matrix").defaults("consistent"),
-       Key::choice("contact_treatment", {"velocity_update", "none"}, "contact treatment")
-           .defaults("velocity_update")});
+       Key::choice("contact_treatment", {"stabilized", "standard"}, "contact treatment")
+           .defaults("stabilized")});
   DynamicsInput& dyn = input.dynamics;
   dyn.enabled = true;
   const std::string scheme = d.string("scheme");
@@ -68,7 +68,7 @@ void read_dynamics(const Section& grout, Input& input) {
   if (dyn.beta < 0.25 * (dyn.gamma + 0.5) * (dyn.gamma + 0.5) * (1.0 - 1e-12))
     d.fail("beta", "must be >= (gamma + 1/2)^2 / 4 for unconditional stability");
   dyn.mass = d.string("mass") == "lumped" ? MassKind::lumped : MassKind::consistent;
-  dyn.velocity_update = d.string("contact_treatment") == "velocity_update";
+  dyn.stabilized_contact = d.string("contact_treatment") == "stabilized";
   for (const MaterialInput& m : input.materials) {
     if (!(m.density > 0.0)) {
       throw InputError(input.file + ": grout/materials/" + m.name +

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "nonlinear/contact_velocity_update.hpp"
 #include "nonlinear/dirichlet.hpp"
 #include "nonlinear/linear_solver.hpp"
 
@@ -13,12 +12,12 @@ namespace grout {
 DynamicProblem::DynamicProblem(MechanicsProblem& problem, int dimension,
                                Teuchos::RCP<const Matrix> mass, const TimeIntegrator& integrator,
                                const std::array<double, 3>& gravity, const Vector& v0,
-                               bool velocity_update)
+                               bool stabilized_contact)
     : problem_(problem),
       mass_(std::move(mass)),
       integrator_(integrator),
       dim_(dimension),
-      velocity_update_(velocity_update) {
+      stabilized_contact_(stabilized_contact) {
   const auto u_map = mass_->getRowMap();
   num_owned_u_ = int(u_map->getNodeNumElements());
   auto make = [&] { return Teuchos::rcp(new Vector(u_map)); };
@@ -32,9 +31,6 @@ DynamicProblem::DynamicProblem(MechanicsProblem& problem, int dimension,
     for (int i = 0; i < num_owned_u_; ++i) gv(i, 0) = gravity[u_map->getGlobalElement(i) % dim_];
   }
   mass_->apply(g, *f_gravity_);
-  lumped_mass_ = make();
-  g.putScalar(1.0);
-  mass_->apply(g, *lumped_mass_);
   free_.assign(num_owned_u_, 1);
 }
 
@@ -151,15 +147,15 @@ void DynamicProblem::start(Vector& x0, LinearSolver& linear) {
     for (int i = 0; i < num_owned_u_; ++i) b(i, 0) = free_[i] ? fg(i, 0) - fs(i, 0) : 0.0;
   }
   a_->putScalar(0.0);
-  if (rhs.normInf() > 0.0) {
-    auto M = Teuchos::rcp(new Matrix(*mass_, Teuchos::Copy));
-    const auto& cols = *M->getColMap();
+  mass_free_ = Teuchos::rcp(new Matrix(*mass_, Teuchos::Copy));
+  {
+    const auto& cols = *mass_free_->getColMap();
     std::vector<double> delta(cols.getNodeNumElements(), std::numeric_limits<double>::quiet_NaN());
     for (std::size_t k = 0; k < delta.size(); ++k)
       if (!std::isnan(problem_.prescribed()[cols.getGlobalElement(LO(k))])) delta[k] = 0.0;
-    apply_dirichlet(*M, rhs, delta);
-    linear.solve(M, rhs, *a_);
+    apply_dirichlet(*mass_free_, rhs, delta);
   }
+  if (rhs.normInf() > 0.0) linear.solve(mass_free_, rhs, *a_);
   // f_c = F_s − f_int + f_ext, and the energies of the initial state.
   f_contact_n_->update(1.0, *f_static_n_, -1.0, problem_.internal_force(), 0.0);
   f_contact_n_->update(1.0, *f_ext_n_, 1.0);
@@ -214,21 +210,29 @@ void DynamicProblem::commit_step(const Vector& x) {
                             0.5 * (reaction_n.dot(du) + reaction.dot(du));
   balance_.contact_work -= 0.5 * (f_contact_n_->dot(du) + f_contact.dot(du));
 
-  // Velocity update on the closed contacts; its (non-positive) work is the contact's.
-  if (velocity_update_ && problem_.has_contact() && solver_) {
-    mass_->apply(v_next, *work_);
-    const double before = 0.5 * v_next.dot(*work_);
-    if (project_contact_velocities(problem_, x, *lumped_mass_, *solver_, v_next) > 0) {
-      mass_->apply(v_next, *work_);
-      balance_.contact_work += 0.5 * v_next.dot(*work_) - before;
-    }
-  }
   u_->assign(u_next);
   v_->assign(v_next);
   a_->assign(a_next);
   f_static_n_->assign(f_static);
   f_ext_n_->assign(f_ext);
   f_contact_n_->assign(f_contact);
+  if (stabilized_contact_ && problem_.has_contact()) {
+    // The contact force acted on this step only: a*_{n+1} = a_{n+1} + M⁻¹ f_c,n+1, and
+    // neither it nor f_c,n+1 is carried into the next step (file comment).
+    Vector rhs(u_map), da(u_map);
+    rhs.assign(f_contact);
+    {
+      auto r = rhs.getLocalViewHost(Tpetra::Access::ReadWrite);
+      for (int i = 0; i < num_owned_u_; ++i)
+        if (!free_[i]) r(i, 0) = 0.0;
+    }
+    if (rhs.normInf() > 0.0) {
+      solver_->solve(mass_free_, rhs, da);
+      a_->update(1.0, da, 1.0);
+    }
+    f_static_n_->update(-1.0, f_contact, 1.0);
+    f_contact_n_->putScalar(0.0);
+  }
   t_ = t_next_;
   measure_state(*u_, *v_);
 }

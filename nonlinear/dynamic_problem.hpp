@@ -10,6 +10,19 @@
 //            semi-smooth Newton: the active set is decided at the end of the step).
 //
 // For a linear f_int, (1 − αf) F_s(n+1) + αf F_s(n) is F_s at u_{n+1−αf} exactly.
+//
+// Stabilised contact (the default): the contact force of a step acts on that step only. It
+// enters a_{n+1} and v_{n+1} through the step's equation, but the acceleration carried into
+// the next step is a*_{n+1} = a_{n+1} + M⁻¹ f_c,n+1 (without it), and F_s(n) above excludes
+// f_c,n. For the average-acceleration rule the step's energy balance is then (Δ over the step)
+//   Δ(½ vᵀMv + ½ uᵀKu) = W_ext − ½ f_c,n+1·Δu = W_ext + ½ λ_{n+1}·Δg̃,
+// and λ_{n+1} > 0 only where g̃_{n+1} = 0, so Δg̃ = −g̃_n ≤ 0: contact never adds energy, and
+// removes ½ λ_{n+1} g̃_n at a closing step (none while a contact stays closed). A contact force
+// carried into the next step (contact_treatment: standard) adds ½ λ_n Δg̃ > 0 at every
+// release instead, and impacts chatter. This keeps contact forces out of the next step's
+// predictor, the idea of the contact-stabilised Newmark method (Deuflhard, Krause & Ertel,
+// IJNME 73 (2008) 1274). A closed contact's multiplier is then the force of its step alone:
+// for the average-acceleration rule twice the mean force over the step.
 // Jacobian: the u rows of J_s scaled by (1 − αf), plus (1 − αm)/(β Δt²) M on the free dofs.
 // Prescribed dofs stay eliminated (MechanicsProblem); g is the gravity acceleration.
 
@@ -35,11 +48,10 @@ struct EnergyBalance {
 class DynamicProblem : public NonlinearProblem {
  public:
   /// M on the solid's owned map (assemble_mass_matrix); v0 the initial velocity there.
-  /// velocity_update: project the velocities on the closed contacts at the end of every step
-  /// (nonlinear/contact_velocity_update.hpp).
+  /// stabilized_contact: contact forces act on their own step only (file comment).
   DynamicProblem(MechanicsProblem& problem, int dimension, Teuchos::RCP<const Matrix> mass,
                  const TimeIntegrator& integrator, const std::array<double, 3>& gravity,
-                 const Vector& v0, bool velocity_update = true);
+                 const Vector& v0, bool stabilized_contact = true);
 
   MechanicsProblem& quasi_static() { return problem_; }
   Teuchos::RCP<const Map> map() const override { return problem_.map(); }
@@ -50,8 +62,7 @@ class DynamicProblem : public NonlinearProblem {
   double residual_floor() const override { return residual_floor_; }
 
   /// Initial acceleration from M a_0 = f_ext(0) + M g − F_s(x0) on the free dofs (a_0 = 0 on
-  /// prescribed dofs), and the initial energies. Call once; `linear` (kept) also solves the
-  /// velocity update.
+  /// prescribed dofs), and the initial energies. Call once; `linear` (kept) solves with M.
   void start(Vector& x0, LinearSolver& linear);
   /// Set t_{n+1} = t, Δt = t − t_n, and the prescribed values into x (the predictor u_n).
   void begin_step(double t, Vector& x);
@@ -84,8 +95,8 @@ class DynamicProblem : public NonlinearProblem {
   Teuchos::RCP<Vector> f_gravity_;      ///< M g
   Teuchos::RCP<Vector> f_static_last_;  ///< F_s u rows of the last residual evaluation
   Teuchos::RCP<Vector> work_, work2_;
-  Teuchos::RCP<Vector> lumped_mass_;  ///< row sums of M
-  bool velocity_update_ = true;
+  Teuchos::RCP<Matrix> mass_free_;  ///< M with the prescribed rows/columns eliminated
+  bool stabilized_contact_ = true;
   LinearSolver* solver_ = nullptr;
   double residual_floor_ = 0.0;
   EnergyBalance balance_;

@@ -566,7 +566,7 @@ TEST(InputDynamics, ReadsSchemeGravityAndInitialVelocity) {
   EXPECT_EQ(input.dynamics.scheme, DynamicsScheme::generalized_alpha);
   EXPECT_DOUBLE_EQ(input.dynamics.rho_infinity, 0.8);
   EXPECT_EQ(input.dynamics.mass, MassKind::lumped);
-  EXPECT_TRUE(input.dynamics.velocity_update);
+  EXPECT_TRUE(input.dynamics.stabilized_contact);
   EXPECT_DOUBLE_EQ(input.gravity[1], -9.81);
   ASSERT_EQ(input.initial_velocity.size(), 1u);
   EXPECT_EQ(input.initial_velocity[0].block, "b");

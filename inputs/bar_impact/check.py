@@ -4,10 +4,9 @@ Two identical bars of length L = 1, wave speed c = sqrt(E/rho) = 1; the striker 
 bar at v0 = -0.01. Elementary wave theory (e.g. Graff, Wave Motion in Elastic Solids, section
 1.5): the contact lasts 2L/c = 2; afterwards the striker is at rest and the struck bar moves
 with v0, and no energy is lost. Checked: the mass-weighted mean velocity of each bar after the
-contact (within 3 % of |v0|), the contact duration (within 3 %), that contact never adds
-energy (the total energy stays below 1.01 x the initial kinetic energy 1/2 m v0^2: the
-velocity update of the closed contacts makes impacts dissipative), and 1 rank = 2 ranks to
-1e-10. The energy lost (printed) is not yet within 1 %: see docs/verification.md.
+contact (within 3 % of |v0|), the contact duration (within 3 %), the total energy (within
+1 % of the initial kinetic energy 1/2 m v0^2, and never above it: the stabilised contact
+treatment cannot add energy), and 1 rank = 2 ranks to 1e-10.
 """
 import csv
 import sys
@@ -37,8 +36,10 @@ if abs(t_contact / duration - 1) > 0.03:
 drift = (E - E0) / E0
 print("total energy: final drift %.3e, max gain %.3e, max loss %.3e"
       % (drift[-1], drift.max(), -drift.min()))
-if drift.max() > 0.01:
-    failures.append("contact adds energy: %.3e of the initial (limit 1 %%)" % drift.max())
+if np.abs(drift).max() > 0.01:
+    failures.append("total energy changes by %.3e of the initial (limit 1 %%)" % np.abs(drift).max())
+if drift.max() > 1e-9:
+    failures.append("contact adds energy: %.3e of the initial" % drift.max())
 
 r = Results("np1/bar_impact.e")
 y = r.coordinates()[1]
