@@ -1,5 +1,6 @@
 #pragma once
 #include <exception>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -60,6 +61,25 @@ inline std::string message_of(const std::exception_ptr& error) {
   } catch (...) {
     return "unknown error (not a std::exception)";
   }
+}
+
+/// Trilinos messages start with the source file and line that threw and repeat the test
+/// that failed ("Throw test that evaluated to true: ..."): keep the sentences for the user,
+/// on one line.
+inline std::string without_source_paths(const std::string& text) {
+  std::istringstream stream(text);
+  std::string kept;
+  for (std::string line; std::getline(stream, line);) {
+    const auto start = line.find_first_not_of(" \t");
+    if (start == std::string::npos || line.find(".cpp:") != std::string::npos ||
+        line.find(".hpp:") != std::string::npos || line.find(".H:") != std::string::npos ||
+        line.find(".C:") != std::string::npos || line.rfind("Throw number", 0) == 0 ||
+        line.rfind("Throw test that evaluated", 0) == 0) {
+      continue;
+    }
+    kept += (kept.empty() ? "" : " ") + line.substr(start);
+  }
+  return kept.empty() ? text : kept;
 }
 
 }  // namespace grout

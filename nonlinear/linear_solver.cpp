@@ -63,6 +63,16 @@ LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::stri
     throw InputError(where + "/Belos/Solver Type: unknown Belos solver '" + impl_->belos_type +
                      "' (Belos has: " + names + ")");
   }
+  // Belos checks the names and values of its parameters when it sets them.
+  if (impl_->type == "belos") {
+    try {
+      belos_factory.create(impl_->belos_type,
+                           Teuchos::rcp(new Teuchos::ParameterList(impl_->belos)));
+    } catch (const std::exception& e) {
+      throw InputError(where +
+                       "/Belos: Belos rejects these settings: " + without_source_paths(e.what()));
+    }
+  }
   if (!impl_->belos.isParameter("Convergence Tolerance"))
     impl_->belos.set("Convergence Tolerance", 1e-12);
   if (!impl_->belos.isParameter("Maximum Iterations")) impl_->belos.set("Maximum Iterations", 2000);

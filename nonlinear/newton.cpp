@@ -220,23 +220,6 @@ class IterationLog : public NOX::Observer {
   bool print_;
 };
 
-/// Trilinos messages start with the source file and line that threw, and repeat the test
-/// that failed ("Throw test that evaluated to true: ..."): keep the sentences for the user.
-std::string without_source_paths(const std::string& text) {
-  std::istringstream stream(text);
-  std::string kept;
-  for (std::string line; std::getline(stream, line);) {
-    if (line.find(".cpp:") != std::string::npos || line.find(".hpp:") != std::string::npos ||
-        line.find(".H:") != std::string::npos || line.find(".C:") != std::string::npos ||
-        line.rfind("Throw number", 0) == 0 || line.rfind("Throw test that evaluated", 0) == 0 ||
-        line.find_first_not_of(" \t") == std::string::npos) {
-      continue;
-    }
-    kept += (kept.empty() ? "" : " ") + line.substr(line.find_first_not_of(" \t"));
-  }
-  return kept.empty() ? "(no message)" : kept;
-}
-
 /// The NOX names Grout sets or passes through, for the error message.
 std::string nox_settings_summary(const NewtonOptions& options) {
   const std::string solver = options.nox.isType<std::string>("Nonlinear Solver")
@@ -342,7 +325,7 @@ NewtonReport solve_newton(NonlinearProblem& problem, Vector& x, LinearSolver& li
   } else if (max_iterations->getStatus() == Failed) {
     report.reason = "max iterations (" + std::to_string(options.max_iterations) + ")";
   } else if (!context->failure.empty()) {
-    report.reason = context->failure;
+    report.reason = without_source_paths(context->failure);
   } else if (!thrown.empty()) {
     report.reason = "NOX error: " + thrown;
   } else {
