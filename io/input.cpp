@@ -284,7 +284,8 @@ std::vector<ContactInput> read_contact(const Section& grout) {
       Key::number("c_t").above(0),
       Key::choice("integration", {"exact", "collocation"}, "integration").defaults("exact"),
       Key::integer("collocation_points").at_least(1).at_most(max_collocation_points),
-      Key::choice("geometry", {"reference", "current"}, "contact geometry")};
+      Key::choice("geometry", {"reference", "current"}, "contact geometry"),
+      Key::number("start_gap").at_least(0).below(1)};
   std::vector<ContactInput> pairs;
   for (const Section& s : grout.named_sections("contact", keys)) {
     ContactInput c;
@@ -310,6 +311,7 @@ std::vector<ContactInput> read_contact(const Section& grout) {
       s.fail("collocation_points", "only for integration: collocation");
     }
     c.collocation_points = s.integer("collocation_points");
+    if (s.has("start_gap")) c.start_gap = s.number("start_gap");
     if (s.has("geometry")) {
       c.geometry =
           s.string("geometry") == "current" ? ContactGeometry::current : ContactGeometry::reference;

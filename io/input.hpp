@@ -72,6 +72,9 @@ struct ContactInput {
   /// reference for strain: small, current for strain: finite.
   ContactGeometry geometry = ContactGeometry::automatic;
   int collocation_points = 0;  ///< per segment, for collocation; 0 = integrator default
+  /// At the start of a step (until the first Newton update), a slave node with no pressure and
+  /// a gap below start_gap × the mean size of its slave faces counts as active; 0 = off.
+  double start_gap = 0.05;
 };
 
 struct TimeInput {

@@ -18,7 +18,7 @@ struct MechanicsProblem::Interface {
   GO lambda_offset = 0;  ///< GID of λ_0, component 0
   double c_hat = 1.0;
   double active_tolerance = 0.0;  ///< on λ_n − ĉ g: 1e-10 E
-  std::vector<double> proximity;  ///< per slave node: start_gap_factor × its face size
+  std::vector<double> proximity;  ///< per slave node: ContactInput::start_gap × its face size
   double c_t_hat = 1.0;           ///< c_t: like ĉ unless the input sets it
   std::vector<std::array<double, 3>> old_positions;     ///< of surface.nodes, last converged step
   std::vector<std::array<double, 3>> positions;         ///< of surface.nodes, last evaluation
@@ -73,10 +73,6 @@ double mean_face_size(const Mesh& mesh, const SurfaceFaces& faces) {
   return sum / double(faces.size());
 }
 
-// Gap below which a slave node with no pressure counts as active at the start of a step, in
-// units of the mean size of its slave faces (docs/input.md, "Start of a contact step").
-constexpr double start_gap_factor = 0.05;
-
 }  // namespace
 
 MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, const Input& input)
@@ -106,7 +102,7 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
     for (int j = 0; j < n_slave; ++j) {
       const auto& faces = c->surface.slave_node_faces[j];
       for (int f : faces) c->proximity[j] += face_size(mesh, c->surface.slave, f);
-      if (!faces.empty()) c->proximity[j] *= start_gap_factor / double(faces.size());
+      if (!faces.empty()) c->proximity[j] *= ci.start_gap / double(faces.size());
     }
     c->options.scheme = ci.integration == ContactIntegration::collocation
                             ? MortarIntegration::collocation
@@ -367,10 +363,11 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
     // Active if λ_n − ĉ g > 0; a closed gap with no pressure yet (λ_n = g = 0, the usual
     // start) counts as active, within round-off of ĉ g, so that touching bodies are supported.
     // Until the first Newton update of a step, a node with no pressure and a gap below
-    // start_gap_factor × its face size also counts as active (Kratos' active check): a body
-    // held only by contact then has its rigid motion fixed by the contact from the first
-    // solve (else K is singular). From the next iterate on only λ_n − ĉ g decides, so the
-    // converged state satisfies the contact conditions exactly.
+    // start_gap × its face size (contact input, default 0.05) also counts as active, as
+    // Kratos' active check does: a body held only by contact then has its rigid motion fixed
+    // by several contact rows from the first solve (with none, K is singular; with one, the
+    // first update is a huge rigid motion). From the next iterate on only λ_n − ĉ g decides,
+    // so the converged state satisfies the contact conditions exactly.
     const double augmented = lambda_n - c.c_hat * gap;
     const bool near = step_start_ && lambda_n <= 0.0 && gap <= c.proximity[j];
     if (augmented < -c.active_tolerance && !near) {  // inactive: λ_j = 0
