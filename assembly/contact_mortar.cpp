@@ -248,23 +248,17 @@ ContactMortar evaluate_contact_mortar(const ContactSurface& s,
     for (int d = 0; d < dim; ++d) coords(i, d) = x[i][d];
   const auto slave_faces = face_view(s, s.slave, evaluated);
   const auto master_faces = face_view(s, s.master);
-  Kokkos::View<int*> n_candidates("grout::n_candidates", evaluated.size());
-  Kokkos::View<int**> candidates("grout::candidates", evaluated.size(), max_pair_candidates);
-  const MortarStatus found = coarse_search(slave_faces, master_faces, coords, options.search_factor,
-                                           n_candidates, candidates);
-  if (found == MortarStatus::capacity_exceeded) {
-    throw std::runtime_error("contact '" + s.name + "': more than " +
-                             std::to_string(max_pair_candidates) +
-                             " master candidates for a slave face (search boxes too large?)");
-  }
+  SearchCandidates<Kokkos::HostSpace> candidates;
+  coarse_search(slave_faces, master_faces, coords, options.search_factor, candidates);
   // Pairs in (slave face, master face) order: the master faces are in id order, so every
   // sum over pairs runs in the same order however the faces are distributed.
   SlaveDualCache<pair_vars_3d> dual_cache;
   std::vector<int> masters;
   for (std::size_t k = 0; k < evaluated.size(); ++k) {
     const int f = evaluated[k];
-    masters.assign(n_candidates(k), 0);
-    for (int c = 0; c < n_candidates(k); ++c) masters[c] = candidates(k, c);
+    masters.clear();
+    for (int p = candidates.offsets(k); p < candidates.offsets(k + 1); ++p)
+      masters.push_back(candidates.masters(p));
     std::sort(masters.begin(), masters.end());
     for (int m : masters) {
       if (dim == 2)

@@ -14,14 +14,24 @@
 // execution space works. The query computes each slave box on the fly and visits only the cells
 // it overlaps (O(1) per query for meshes of comparable size, O(n) overall); hash collisions
 // only add box tests. The passes are compiled per dimension (coarse_search dispatches on dim).
-// Output per slave face: at most max_pair_candidates master ids, sorted ascending, −1 after the
-// last (a fixed-capacity CSR: row s starts at s · max_pair_candidates), and their count. A
-// brute-force O(n_s n_m) reference with the same contract is provided for tests.
+// Output: candidate lists of any length in one CRS pair (SearchCandidates): the master ids of
+// slave face s are masters[offsets(s) .. offsets(s+1)), sorted ascending. The query runs twice
+// (STYLE.md item 13): a first pass counts the candidates of every slave face, an exclusive
+// prefix sum gives the offsets, a second pass fills and sorts each row. A master is counted once
+// per slave face however many grid cells the two boxes share: only in the cell holding the lower
+// corner of the boxes' intersection, and only at its first entry in that cell's bucket (a
+// master whose cells collide in the hash sits in a bucket more than once). In the common case
+// the counting pass instead sorts the ids into a stack row of search_row_cache (dropping
+// duplicates) and keeps that row in the workspace, so the fill pass only copies it; a longer row
+// is counted by the rule above and its query repeated in the fill pass (as ArborX's query with
+// a buffer size: the cache is a speed-up, not a limit). A brute-force
+// O(n_s n_m) reference with the same contract is provided for tests.
 //
 // Repeated searches (every Newton iterate, or a benchmark) pass a CoarseSearchWorkspace: its
 // work arrays (master boxes, bucket offsets and cursors, entries) grow to the largest size seen
-// and are reused, so a search of an unchanged or smaller problem allocates nothing. The
-// overloads without a workspace use a temporary one.
+// and are reused, and so does the SearchCandidates output (its master array grows, never
+// shrinks), so a search of an unchanged or smaller problem allocates nothing. The overloads
+// without a workspace use a temporary one.
 
 #include <Kokkos_Core.hpp>
 #include <cmath>
@@ -88,31 +98,22 @@ KOKKOS_INLINE_FUNCTION bool boxes_overlap(int dim, const BoxA& a, int i, const B
   return true;
 }
 
-/// \brief Inserts id into the ascending list row[0..count) of capacity max_pair_candidates,
-/// ignoring duplicates; when full the largest id is dropped (so the kept set is the smallest
-/// ids, independent of the visiting order). \return false if an id was dropped.
-KOKKOS_INLINE_FUNCTION bool insert_candidate(int row[max_pair_candidates], int& count, int id) {
-  int pos = 0;
-  while (pos < count && row[pos] < id) ++pos;
-  if (pos < count && row[pos] == id) return true;
-  if (pos == max_pair_candidates) return false;
-  const bool dropped = count == max_pair_candidates;
-  if (!dropped) ++count;
-  for (int k = count - 1; k > pos; --k) row[k] = row[k - 1];
-  row[pos] = id;
-  return !dropped;
-}
-
 /// \brief Work arrays of coarse_search, reused across calls: each grows (without
 /// initialisation) to the largest size requested and is never shrunk.
 template <class MemorySpace>
 struct CoarseSearchWorkspace {
   /// (≥ n_faces, 6); slave_boxes is kept for compatibility, coarse_search no longer fills it
   Kokkos::View<double**, MemorySpace> slave_boxes, master_boxes;
-  Kokkos::View<int*, MemorySpace> offsets;  ///< (≥ n_buckets + 1) bucket → first entry
-  Kokkos::View<int*, MemorySpace> cursor;   ///< (≥ n_buckets) counts, then fill cursors
-  Kokkos::View<int*, MemorySpace> entries;  ///< (≥ Σ cells per master box) master ids
+  Kokkos::View<int*, MemorySpace> offsets;    ///< (≥ n_buckets + 1) bucket → first entry
+  Kokkos::View<int*, MemorySpace> cursor;     ///< (≥ n_buckets) counts, then fill cursors
+  Kokkos::View<int*, MemorySpace> entries;    ///< (≥ Σ cells per master box) master ids
+  Kokkos::View<int*, MemorySpace> row_cache;  ///< (≥ n_slave · search_row_cache) first ids
 };
+
+/// Candidate ids per slave face kept by the counting pass of the query (rows are longer only on
+/// graded meshes; then the fill pass repeats that face's query). 2D interfaces have ~3
+/// candidates per slave face, 3D ~8 (QUAD4) to ~18 (TRI3) (docs/performance.md).
+constexpr int search_row_cache = 32;
 
 namespace detail {
 /// Grows v to at least n rows (contents undefined after a growth).
@@ -178,6 +179,12 @@ struct SearchGrid {
     c_lo = a < 0.0 ? 0 : static_cast<std::int64_t>(a);
     c_hi = b >= last ? n_cells[d] - 1 : static_cast<std::int64_t>(b);
     return true;
+  }
+  /// Cell along axis d of the lower end x of an interval, computed as c_lo in axis_cells (so
+  /// for x = max(lo_a, lo_b) it is the larger of the two intervals' first cells).
+  KOKKOS_INLINE_FUNCTION std::int64_t lower_cell(double x, int d) const {
+    const double a = (x - origin[d]) * inv_h;
+    return a < 0.0 ? 0 : static_cast<std::int64_t>(a);
   }
   /// Cell range [c_lo, c_hi] (clamped to the grid) of the box [lo, hi]; false if it misses the
   /// grid.
@@ -358,7 +365,7 @@ SearchGrid bin_boxes(const ExecSpace& space,
   detail::ensure_rows(ws.entries, "grout::search_entries", static_cast<size_t>(total));
   const auto entries = ws.entries;
   // The counts left in cursor count down to 0: a bucket is filled from its end (the order
-  // inside a bucket is irrelevant, candidates are sorted on insertion).
+  // inside a bucket is irrelevant: the query sorts each candidate row).
   Kokkos::parallel_for(
       "grout::coarse_search_fill", Kokkos::RangePolicy<ExecSpace>(space, 0, n_m),
       KOKKOS_LAMBDA(const int m) {
@@ -406,17 +413,174 @@ SearchGrid bin_master_boxes(const ExecSpace& space,
   return grid;
 }
 
+/// \brief Candidate lists of every slave face in CRS layout (STYLE.md item 13): the master face
+/// ids of slave face s are masters(offsets(s)) … masters(offsets(s + 1) − 1), ascending, and
+/// offsets(n_slave) = n_pairs is the number of candidate pairs. Reused across searches:
+/// offsets is reallocated when the number of slave faces changes, masters only grows.
+template <class MemorySpace>
+struct SearchCandidates {
+  Kokkos::View<int*, MemorySpace> offsets;  ///< (n_slave + 1) first pair of each slave face
+  Kokkos::View<int*, MemorySpace> masters;  ///< (≥ n_pairs) master face ids
+  int n_pairs = 0;                          ///< offsets(n_slave), on the host
+};
+
 namespace detail {
+/// Binned query of coarse_search for a fixed dimension. visit<false>(s, f) calls f(m) for every
+/// master face m whose box overlaps the box of slave face s, once per bucket entry (a master
+/// may come several times); visit<true>(s, f) calls it exactly once per such master. Both in no
+/// particular order.
+template <int Dim, class MemorySpace>
+struct GridQuery {
+  Kokkos::View<const int**, MemorySpace> slave_faces;
+  Kokkos::View<const double**, MemorySpace> coords;
+  Kokkos::View<const double**, MemorySpace> m_boxes;
+  Kokkos::View<const int*, MemorySpace> offsets;  ///< bucket → first entry
+  Kokkos::View<const int*, MemorySpace> entries;  ///< master ids per bucket
+  SearchGrid grid;
+  double factor;
+
+  template <bool Once, class F>
+  KOKKOS_INLINE_FUNCTION void visit(int s, F&& f) const {
+    constexpr int dim = Dim;
+    double lo[3], hi[3];
+    face_box(slave_faces, s, coords, dim, factor, lo, hi);
+    std::int64_t a[3], b[3];
+    if (!grid.cell_range(lo, hi, dim, a, b)) return;
+    for (std::int64_t k = a[2]; k <= b[2]; ++k)
+      for (std::int64_t j = a[1]; j <= b[1]; ++j)
+        for (std::int64_t i = a[0]; i <= b[0]; ++i) {
+          const std::int64_t cell[3] = {i, j, k};
+          const std::uint64_t bk = grid.bucket(i, j, k);
+          const int first = offsets(bk), last = offsets(bk + 1);
+          for (int e = first; e < last; ++e) {
+            const int m = entries(e);
+            bool take = true;
+            for (int d = 0; d < dim && take; ++d) {
+              const double m_lo = m_boxes(m, d);
+              take = !(lo[d] > m_boxes(m, 3 + d) || m_lo > hi[d]);
+              // Once: the intersection's lower corner lies in this cell (the cell ranges of
+              // both boxes contain that cell, so exactly one visited cell passes) ...
+              if (Once && take) take = grid.lower_cell(lo[d] > m_lo ? lo[d] : m_lo, d) == cell[d];
+            }
+            // ... and this is m's first entry in the bucket.
+            if (Once)
+              for (int e2 = first; e2 < e && take; ++e2) take = entries(e2) != m;
+            if (take) f(m);
+          }
+        }
+  }
+};
+
+/// Reference query: visit<Once>(s, f) tests the box of slave face s against every master box
+/// and calls f(m) for each overlap, once, in ascending m.
+template <class MemorySpace>
+struct BruteForceQuery {
+  Kokkos::View<const double**, MemorySpace> s_boxes, m_boxes;
+  int dim;
+
+  template <bool Once, class F>
+  KOKKOS_INLINE_FUNCTION void visit(int s, F&& f) const {
+    const int n_m = static_cast<int>(m_boxes.extent(0));
+    for (int m = 0; m < n_m; ++m)
+      if (boxes_overlap(dim, s_boxes, s, m_boxes, m)) f(m);
+  }
+};
+
+/// \brief Inserts id into the ascending list row[0..count) of capacity search_row_cache,
+/// ignoring duplicates. \return false (row unchanged) if id is new and the row is full.
+KOKKOS_INLINE_FUNCTION bool insert_candidate(int row[search_row_cache], int& count, int id) {
+  int pos = 0;
+  while (pos < count && row[pos] < id) ++pos;
+  if (pos < count && row[pos] == id) return true;
+  if (count == search_row_cache) return false;
+  for (int k = count; k > pos; --k) row[k] = row[k - 1];
+  row[pos] = id;
+  ++count;
+  return true;
+}
+
+/// Count, scan, fill (STYLE.md item 13) of the candidate lists of n_s slave faces from a query
+/// with visit<Once>(s, f). "grout::coarse_search_query_count" gathers the ids of slave face s
+/// into a sorted, duplicate-free stack row of search_row_cache; if they fit, the row goes to
+/// ws.row_cache and its length to offsets(s), else the exact count (visit<true>) does.
+/// "..._query_offsets" turns the counts into exclusive prefix sums in place; "..._query_fill"
+/// copies each cached row, or repeats the query of a longer one (visit<true>) and sorts it
+/// (insertion sort). \return the number of pairs.
+template <class ExecSpace, class Query>
+int count_scan_fill(const ExecSpace& space, int n_s, const Query& query,
+                    CoarseSearchWorkspace<typename ExecSpace::memory_space>& ws,
+                    SearchCandidates<typename ExecSpace::memory_space>& out) {
+  using Offsets = Kokkos::View<int*, typename ExecSpace::memory_space>;
+  constexpr int K = search_row_cache;
+  ensure_rows(ws.row_cache, "grout::search_row_cache", static_cast<size_t>(n_s) * K);
+  const Offsets cache = ws.row_cache;
+  if (out.offsets.extent(0) != static_cast<size_t>(n_s) + 1 || out.offsets.data() == nullptr)
+    out.offsets = Offsets(
+        Kokkos::view_alloc(Kokkos::WithoutInitializing, std::string("grout::candidate_offsets")),
+        n_s + 1);
+  const Offsets offsets = out.offsets;
+  Kokkos::parallel_for(
+      "grout::coarse_search_query_count", Kokkos::RangePolicy<ExecSpace>(space, 0, n_s),
+      KOKKOS_LAMBDA(const int s) {
+        int row[K];
+        int count = 0;
+        bool fits = true;
+        query.template visit<false>(s, [&](int m) {
+          if (fits) fits = insert_candidate(row, count, m);
+        });
+        if (fits) {
+          for (int c = 0; c < count; ++c) cache(static_cast<size_t>(s) * K + c) = row[c];
+        } else {
+          count = 0;
+          query.template visit<true>(s, [&](int) { ++count; });
+        }
+        offsets(s) = count;
+      });
+  int total = 0;
+  // In place: the final call of s reads its count before overwriting it with the offset.
+  Kokkos::parallel_scan(
+      "grout::coarse_search_query_offsets", Kokkos::RangePolicy<ExecSpace>(space, 0, n_s),
+      KOKKOS_LAMBDA(const int s, int& partial, const bool final) {
+        const int count = offsets(s);
+        if (final) offsets(s) = partial;
+        partial += count;
+        if (final && s + 1 == n_s) offsets(n_s) = partial;
+      },
+      total);
+  if (n_s == 0) Kokkos::deep_copy(space, offsets, 0);
+  ensure_rows(out.masters, "grout::candidate_masters", static_cast<size_t>(total));
+  const Offsets masters = out.masters;
+  Kokkos::parallel_for(
+      "grout::coarse_search_query_fill", Kokkos::RangePolicy<ExecSpace>(space, 0, n_s),
+      KOKKOS_LAMBDA(const int s) {
+        const int begin = offsets(s), n = offsets(s + 1) - begin;
+        if (n <= K) {
+          for (int c = 0; c < n; ++c) masters(begin + c) = cache(static_cast<size_t>(s) * K + c);
+          return;
+        }
+        int c = 0;
+        query.template visit<true>(s, [&](int m) { masters(begin + c++) = m; });
+        for (int p = begin + 1; p < begin + n; ++p) {
+          const int id = masters(p);
+          int q = p;
+          for (; q > begin && masters(q - 1) > id; --q) masters(q) = masters(q - 1);
+          masters(q) = id;
+        }
+      });
+  out.n_pairs = total;
+  return total;
+}
+
 /// coarse_search after the argument checks, for a fixed dimension.
 template <int Dim, class ExecSpace>
-MortarStatus coarse_search_impl(
-    const ExecSpace& space, CoarseSearchWorkspace<typename ExecSpace::memory_space>& workspace,
-    Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
-    Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
-    Kokkos::View<const double**, typename ExecSpace::memory_space> coords, double factor,
-    Kokkos::View<int*, typename ExecSpace::memory_space> n_candidates,
-    Kokkos::View<int**, typename ExecSpace::memory_space> candidates) {
-  constexpr int dim = Dim;
+void coarse_search_impl(const ExecSpace& space,
+                        CoarseSearchWorkspace<typename ExecSpace::memory_space>& workspace,
+                        Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
+                        Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
+                        Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
+                        double factor,
+                        SearchCandidates<typename ExecSpace::memory_space>& candidates) {
+  using memory_space = typename ExecSpace::memory_space;
   const int n_m = static_cast<int>(master_faces.extent(0));
   detail::ensure_rows(workspace.master_boxes, "grout::master_boxes", master_faces.extent(0));
   const auto m_boxes = workspace.master_boxes;
@@ -427,48 +591,18 @@ MortarStatus coarse_search_impl(
       "grout::coarse_search_bounds", Kokkos::RangePolicy<ExecSpace>(space, 0, n_m),
       FaceBoxesStatsReduce<ExecSpace, Dim>{master_faces, coords, m_boxes, factor}, stats);
   const SearchGrid grid = detail::bin_boxes<Dim, ExecSpace>(space, m_boxes, n_m, stats, workspace);
-  const auto offsets = workspace.offsets;
-  const auto entries = workspace.entries;
-  int status = 0;
-  Kokkos::parallel_reduce(
-      "grout::coarse_search_query", Kokkos::RangePolicy<ExecSpace>(space, 0, slave_faces.extent(0)),
-      KOKKOS_LAMBDA(const int s, int& worst) {
-        int row[max_pair_candidates];
-        int count = 0;
-        bool complete = true;
-        double lo[3], hi[3];
-        detail::face_box(slave_faces, s, coords, dim, factor, lo, hi);
-        std::int64_t a[3], b[3];
-        if (grid.cell_range(lo, hi, dim, a, b)) {
-          for (std::int64_t k = a[2]; k <= b[2]; ++k)
-            for (std::int64_t j = a[1]; j <= b[1]; ++j)
-              for (std::int64_t i = a[0]; i <= b[0]; ++i) {
-                const std::uint64_t bk = grid.bucket(i, j, k);
-                for (int e = offsets(bk); e < offsets(bk + 1); ++e) {
-                  const int m = entries(e);
-                  bool overlap = true;
-                  for (int d = 0; d < dim; ++d)
-                    overlap = overlap && !(lo[d] > m_boxes(m, 3 + d) || m_boxes(m, d) > hi[d]);
-                  if (overlap) complete = insert_candidate(row, count, m) && complete;
-                }
-              }
-        }
-        for (int c = 0; c < max_pair_candidates; ++c) candidates(s, c) = c < count ? row[c] : -1;
-        n_candidates(s) = count;
-        if (!complete) worst = static_cast<int>(MortarStatus::capacity_exceeded);
-      },
-      Kokkos::Max<int>(status));
-  status = status > 0 ? status : 0;  // Max starts from INT_MIN (empty range)
-  return static_cast<MortarStatus>(status);
+  const GridQuery<Dim, memory_space> query{slave_faces,       coords, m_boxes, workspace.offsets,
+                                           workspace.entries, grid,   factor};
+  count_scan_fill(space, static_cast<int>(slave_faces.extent(0)), query, workspace, candidates);
 }
 }  // namespace detail
 
-/// \brief Candidate master faces of every slave face (binned search, see file comment).
-/// \pre faces: (n, ≤ max_face_nodes) node ids, −1 padding; coords (n_nodes, dim), dim ∈ {2, 3};
-/// n_candidates (n_slave); candidates (n_slave, max_pair_candidates).
-/// \return capacity_exceeded if some slave face had more than max_pair_candidates candidates
-/// (the smallest ids are kept), degenerate for bad sizes, ok otherwise.
-/// The work arrays come from (and stay in) `workspace`: no allocation once it is large enough.
+/// \brief Candidate master faces of every slave face (binned search, see file comment), as
+/// CRS lists in `candidates` (SearchCandidates: any number per slave face).
+/// \pre faces: (n, ≤ max_face_nodes) node ids, −1 padding; coords (n_nodes, dim), dim ∈ {2, 3}.
+/// \return degenerate for a bad dim (candidates untouched), ok otherwise.
+/// The work arrays come from (and stay in) `workspace`, the output arrays are reused: no
+/// allocation once both are large enough.
 template <class ExecSpace>
 MortarStatus coarse_search(const ExecSpace& space,
                            CoarseSearchWorkspace<typename ExecSpace::memory_space>& workspace,
@@ -476,17 +610,16 @@ MortarStatus coarse_search(const ExecSpace& space,
                            Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
                            Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
                            double factor,
-                           Kokkos::View<int*, typename ExecSpace::memory_space> n_candidates,
-                           Kokkos::View<int**, typename ExecSpace::memory_space> candidates) {
+                           SearchCandidates<typename ExecSpace::memory_space>& candidates) {
   const int dim = static_cast<int>(coords.extent(1));
-  if ((dim != 2 && dim != 3) || n_candidates.extent(0) != slave_faces.extent(0) ||
-      candidates.extent(0) != slave_faces.extent(0) ||
-      static_cast<int>(candidates.extent(1)) != max_pair_candidates)
-    return MortarStatus::degenerate;
-  return dim == 2 ? detail::coarse_search_impl<2>(space, workspace, slave_faces, master_faces,
-                                                  coords, factor, n_candidates, candidates)
-                  : detail::coarse_search_impl<3>(space, workspace, slave_faces, master_faces,
-                                                  coords, factor, n_candidates, candidates);
+  if (dim != 2 && dim != 3) return MortarStatus::degenerate;
+  if (dim == 2)
+    detail::coarse_search_impl<2>(space, workspace, slave_faces, master_faces, coords, factor,
+                                  candidates);
+  else
+    detail::coarse_search_impl<3>(space, workspace, slave_faces, master_faces, coords, factor,
+                                  candidates);
+  return MortarStatus::ok;
 }
 
 /// coarse_search with a temporary workspace (allocates its work arrays on every call).
@@ -496,90 +629,47 @@ MortarStatus coarse_search(const ExecSpace& space,
                            Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
                            Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
                            double factor,
-                           Kokkos::View<int*, typename ExecSpace::memory_space> n_candidates,
-                           Kokkos::View<int**, typename ExecSpace::memory_space> candidates) {
+                           SearchCandidates<typename ExecSpace::memory_space>& candidates) {
   CoarseSearchWorkspace<typename ExecSpace::memory_space> workspace;
-  return coarse_search(space, workspace, slave_faces, master_faces, coords, factor, n_candidates,
-                       candidates);
+  return coarse_search(space, workspace, slave_faces, master_faces, coords, factor, candidates);
 }
 
 /// Default-execution-space overload of coarse_search.
-inline MortarStatus coarse_search(Kokkos::View<const int**> slave_faces,
-                                  Kokkos::View<const int**> master_faces,
-                                  Kokkos::View<const double**> coords, double factor,
-                                  Kokkos::View<int*> n_candidates, Kokkos::View<int**> candidates) {
+inline MortarStatus coarse_search(
+    Kokkos::View<const int**> slave_faces, Kokkos::View<const int**> master_faces,
+    Kokkos::View<const double**> coords, double factor,
+    SearchCandidates<Kokkos::DefaultExecutionSpace::memory_space>& candidates) {
   return coarse_search(Kokkos::DefaultExecutionSpace(), slave_faces, master_faces, coords, factor,
-                       n_candidates, candidates);
+                       candidates);
 }
 
 /// Default-execution-space overload of coarse_search with a workspace.
 inline MortarStatus coarse_search(
     CoarseSearchWorkspace<Kokkos::DefaultExecutionSpace::memory_space>& workspace,
     Kokkos::View<const int**> slave_faces, Kokkos::View<const int**> master_faces,
-    Kokkos::View<const double**> coords, double factor, Kokkos::View<int*> n_candidates,
-    Kokkos::View<int**> candidates) {
+    Kokkos::View<const double**> coords, double factor,
+    SearchCandidates<Kokkos::DefaultExecutionSpace::memory_space>& candidates) {
   return coarse_search(Kokkos::DefaultExecutionSpace(), workspace, slave_faces, master_faces,
-                       coords, factor, n_candidates, candidates);
-}
-
-/// \brief Exclusive prefix sum of the candidate counts: pair_offsets(s) is the index of the
-/// first pair of slave face s in a compact pair array, pair_offsets(n_slave) the number of
-/// pairs (returned), launch "grout::candidate_offsets". \pre pair_offsets: (n_slave + 1).
-template <class ExecSpace>
-int candidate_offsets(const ExecSpace& space,
-                      Kokkos::View<const int*, typename ExecSpace::memory_space> n_candidates,
-                      Kokkos::View<int*, typename ExecSpace::memory_space> pair_offsets) {
-  const int n = static_cast<int>(n_candidates.extent(0));
-  int total = 0;
-  Kokkos::parallel_scan(
-      "grout::candidate_offsets", Kokkos::RangePolicy<ExecSpace>(space, 0, n),
-      KOKKOS_LAMBDA(const int s, int& partial, const bool final) {
-        if (final) pair_offsets(s) = partial;
-        partial += n_candidates(s);
-        if (final && s + 1 == n) pair_offsets(n) = partial;
-      },
-      total);
-  if (n == 0) Kokkos::deep_copy(space, pair_offsets, 0);
-  return total;
-}
-
-/// Default-execution-space overload of candidate_offsets.
-inline int candidate_offsets(Kokkos::View<const int*> n_candidates,
-                             Kokkos::View<int*> pair_offsets) {
-  return candidate_offsets(Kokkos::DefaultExecutionSpace(), n_candidates, pair_offsets);
+                       coords, factor, candidates);
 }
 
 /// \brief Brute-force reference of coarse_search (every slave box against every master box,
-/// O(n_s n_m)), same outputs and status; launch "grout::coarse_search_brute_force". Tests only.
+/// O(n_s n_m)), same outputs and status; launches "grout::coarse_search_query_*". Tests only.
 template <class ExecSpace>
 MortarStatus coarse_search_brute_force(
     const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
     Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
     Kokkos::View<const double**, typename ExecSpace::memory_space> coords, double factor,
-    Kokkos::View<int*, typename ExecSpace::memory_space> n_candidates,
-    Kokkos::View<int**, typename ExecSpace::memory_space> candidates) {
+    SearchCandidates<typename ExecSpace::memory_space>& candidates) {
   const int dim = static_cast<int>(coords.extent(1));
-  const auto s_boxes = compute_face_boxes(space, slave_faces, coords, factor);
-  const auto m_boxes = compute_face_boxes(space, master_faces, coords, factor);
-  const int n_m = static_cast<int>(master_faces.extent(0));
-  int status = 0;
-  Kokkos::parallel_reduce(
-      "grout::coarse_search_brute_force",
-      Kokkos::RangePolicy<ExecSpace>(space, 0, slave_faces.extent(0)),
-      KOKKOS_LAMBDA(const int s, int& worst) {
-        int row[max_pair_candidates];
-        int count = 0;
-        bool complete = true;
-        for (int m = 0; m < n_m; ++m)
-          if (boxes_overlap(dim, s_boxes, s, m_boxes, m))
-            complete = insert_candidate(row, count, m) && complete;
-        for (int c = 0; c < max_pair_candidates; ++c) candidates(s, c) = c < count ? row[c] : -1;
-        n_candidates(s) = count;
-        if (!complete) worst = static_cast<int>(MortarStatus::capacity_exceeded);
-      },
-      Kokkos::Max<int>(status));
-  status = status > 0 ? status : 0;  // Max starts from INT_MIN (empty range)
-  return static_cast<MortarStatus>(status);
+  if (dim != 2 && dim != 3) return MortarStatus::degenerate;
+  const detail::BruteForceQuery<typename ExecSpace::memory_space> query{
+      compute_face_boxes(space, slave_faces, coords, factor),
+      compute_face_boxes(space, master_faces, coords, factor), dim};
+  CoarseSearchWorkspace<typename ExecSpace::memory_space> workspace;
+  detail::count_scan_fill(space, static_cast<int>(slave_faces.extent(0)), query, workspace,
+                          candidates);
+  return MortarStatus::ok;
 }
 
 }  // namespace grout

@@ -1,7 +1,7 @@
 #pragma once
 // Launch of the mortar pair kernels over all slave faces: for every slave face s and every
-// candidate master face m of s (coarse_search.hpp), integrate the pair and store its
-// MortarPairResult in results(pair_offsets(s) + c), a compact pair array (candidate_offsets). One
+// candidate master face m of s (the CRS lists of coarse_search.hpp), integrate the pair and
+// store its MortarPairResult at the pair's CRS position, results(candidate_offsets(s) + c). One
 // labelled parallel_reduce per dimension, "grout::mortar_integrate<2D>" /
 // "grout::mortar_integrate<3D>", whose max-reduced status is returned on the host (no_overlap is
 // not an error: such pairs are stored with zeros).
@@ -210,26 +210,25 @@ struct MortarPairKernel<3> {
 
 /// \brief Integrates every (slave face, candidate master face) pair with MortarPairKernel<Dim>.
 /// \pre slave_faces, master_faces: (n, ≤ max_face_nodes) node ids, −1 padding; coords and unit
-/// nodal normals: (n_nodes, Dim); n_candidates, candidates from coarse_search; pair_offsets
-/// (n_slave + 1) from candidate_offsets; results: (pair_offsets(n_slave)), pair c of slave s at
-/// pair_offsets(s) + c. \return the worst pair status other than no_overlap (ok if all pairs
-/// succeeded), degenerate for inconsistent sizes.
+/// nodal normals: (n_nodes, Dim); candidate_offsets (n_slave + 1) and candidates
+/// (≥ candidate_offsets(n_slave)): the CRS lists of coarse_search (SearchCandidates offsets and
+/// masters); results: (≥ candidate_offsets(n_slave)), pair c of slave s at
+/// candidate_offsets(s) + c. \return the worst pair status other than no_overlap (ok if all
+/// pairs succeeded), degenerate for inconsistent sizes, capacity_exceeded if results is short.
 template <int Dim, class ExecSpace>
 MortarStatus mortar_integrate(
     const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
     Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
     Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
     Kokkos::View<const double**, typename ExecSpace::memory_space> normals,
-    Kokkos::View<const int*, typename ExecSpace::memory_space> n_candidates,
-    Kokkos::View<const int**, typename ExecSpace::memory_space> candidates,
-    Kokkos::View<const int*, typename ExecSpace::memory_space> pair_offsets,
+    Kokkos::View<const int*, typename ExecSpace::memory_space> candidate_offsets,
+    Kokkos::View<const int*, typename ExecSpace::memory_space> candidates,
     const MortarOptions& options,
     Kokkos::View<MortarPairResult<double>*, typename ExecSpace::memory_space> results) {
   static_assert(Dim == 2 || Dim == 3, "grout::mortar_integrate: Dim must be 2 or 3");
   const size_t n_s = slave_faces.extent(0);
   if (static_cast<int>(coords.extent(1)) != Dim || normals.extent(0) != coords.extent(0) ||
-      static_cast<int>(normals.extent(1)) != Dim || n_candidates.extent(0) != n_s ||
-      candidates.extent(0) != n_s || pair_offsets.extent(0) != n_s + 1)
+      static_cast<int>(normals.extent(1)) != Dim || candidate_offsets.extent(0) != n_s + 1)
     return MortarStatus::degenerate;
   int status = 0;
   Kokkos::parallel_reduce(
@@ -239,24 +238,20 @@ MortarStatus mortar_integrate(
         double xs[max_face_nodes][3], ns[max_face_nodes][3], xm[max_face_nodes][3];
         const int n_slave = gather_face_coordinates(slave_faces, s, coords, xs);
         gather_face_coordinates(slave_faces, s, normals, ns);
-        const int n_cand = n_candidates(s);
-        if (pair_offsets(s) + n_cand > static_cast<int>(results.extent(0))) {
+        const int begin = candidate_offsets(s), end = candidate_offsets(s + 1);
+        if (end > static_cast<int>(results.extent(0)) ||
+            end > static_cast<int>(candidates.extent(0))) {
           worst = static_cast<int>(MortarStatus::capacity_exceeded);
           return;
         }
         typename Kernel::template SlaveFace<double> slave;
         Kernel::prepare(n_slave, xs, ns, options, slave);
-        for (int c = 0; c < n_cand && c < max_pair_candidates; ++c) {
-          const int n_master = gather_face_coordinates(master_faces, candidates(s, c), coords, xm);
-          const MortarStatus st =
-              Kernel::integrate(slave, n_master, xm, options, results(pair_offsets(s) + c));
+        for (int p = begin; p < end; ++p) {
+          const int n_master = gather_face_coordinates(master_faces, candidates(p), coords, xm);
+          const MortarStatus st = Kernel::integrate(slave, n_master, xm, options, results(p));
           const int code = st == MortarStatus::no_overlap ? 0 : static_cast<int>(st);
           worst = code > worst ? code : worst;
         }
-        if (n_cand > max_pair_candidates)
-          worst = static_cast<int>(MortarStatus::capacity_exceeded) > worst
-                      ? static_cast<int>(MortarStatus::capacity_exceeded)
-                      : worst;
       },
       Kokkos::Max<int>(status));
   status = status > 0 ? status : 0;  // Max starts from INT_MIN (empty range)
@@ -267,22 +262,20 @@ MortarStatus mortar_integrate(
 inline MortarStatus mortar_integrate_2d(
     Kokkos::View<const int**> slave_faces, Kokkos::View<const int**> master_faces,
     Kokkos::View<const double**> coords, Kokkos::View<const double**> normals,
-    Kokkos::View<const int*> n_candidates, Kokkos::View<const int**> candidates,
-    Kokkos::View<const int*> pair_offsets, const MortarOptions& options,
-    Kokkos::View<MortarPairResult<double>*> results) {
+    Kokkos::View<const int*> candidate_offsets, Kokkos::View<const int*> candidates,
+    const MortarOptions& options, Kokkos::View<MortarPairResult<double>*> results) {
   return mortar_integrate<2>(Kokkos::DefaultExecutionSpace(), slave_faces, master_faces, coords,
-                             normals, n_candidates, candidates, pair_offsets, options, results);
+                             normals, candidate_offsets, candidates, options, results);
 }
 
 /// mortar_integrate<3> (launch "grout::mortar_integrate<3D>") on the default execution space.
 inline MortarStatus mortar_integrate_3d(
     Kokkos::View<const int**> slave_faces, Kokkos::View<const int**> master_faces,
     Kokkos::View<const double**> coords, Kokkos::View<const double**> normals,
-    Kokkos::View<const int*> n_candidates, Kokkos::View<const int**> candidates,
-    Kokkos::View<const int*> pair_offsets, const MortarOptions& options,
-    Kokkos::View<MortarPairResult<double>*> results) {
+    Kokkos::View<const int*> candidate_offsets, Kokkos::View<const int*> candidates,
+    const MortarOptions& options, Kokkos::View<MortarPairResult<double>*> results) {
   return mortar_integrate<3>(Kokkos::DefaultExecutionSpace(), slave_faces, master_faces, coords,
-                             normals, n_candidates, candidates, pair_offsets, options, results);
+                             normals, candidate_offsets, candidates, options, results);
 }
 
 }  // namespace grout

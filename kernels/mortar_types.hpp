@@ -11,16 +11,15 @@
 
 namespace grout {
 
-constexpr int max_face_nodes = 4;        ///< line2: 2, tri3: 3, quad4: 4
-constexpr int max_clip_vertices = 8;     ///< convex tri/quad x tri/quad clip polygon
-constexpr int max_pair_candidates = 32;  ///< master candidates per slave element (search)
+constexpr int max_face_nodes = 4;     ///< line2: 2, tri3: 3, quad4: 4
+constexpr int max_clip_vertices = 8;  ///< convex tri/quad x tri/quad clip polygon
 
 enum class MortarStatus : int {
   ok = 0,
   no_overlap = 1,         ///< the pair does not overlap (contributes nothing)
   degenerate = 2,         ///< zero-length/area slave element or normal
   projection_failed = 3,  ///< a local Newton projection did not converge
-  capacity_exceeded = 4   ///< more candidates/vertices than the fixed capacities
+  capacity_exceeded = 4   ///< more vertices/points than the fixed capacities
 };
 
 enum class MortarIntegration : int { exact = 0, collocation = 1 };

@@ -81,18 +81,17 @@ KOKKOS_INLINE_FUNCTION void weighted_slip_increment_objective_pair(
 
 /// \brief Nodal weighted gaps g̃ (n_nodes) summed over every candidate pair, launch
 /// "grout::weighted_gap". Inputs as for mortar_integrate_2d (mortar_integrate.hpp): faces with
-/// −1 padding, coords and unit nodal normals (n_nodes, dim), candidates (n_slave,
-/// max_pair_candidates) with counts, pair_offsets and the compact pair results of that
-/// integration. g̃ is zeroed first.
+/// −1 padding, coords and unit nodal normals (n_nodes, dim), the CRS candidate lists
+/// (candidate_offsets, candidates) of coarse_search and the pair results of that integration
+/// (pair p at the CRS position p). g̃ is zeroed first.
 template <class ExecSpace>
 void accumulate_weighted_gaps(
     const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
     Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
     Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
     Kokkos::View<const double**, typename ExecSpace::memory_space> normals,
-    Kokkos::View<const int*, typename ExecSpace::memory_space> n_candidates,
-    Kokkos::View<const int**, typename ExecSpace::memory_space> candidates,
-    Kokkos::View<const int*, typename ExecSpace::memory_space> pair_offsets,
+    Kokkos::View<const int*, typename ExecSpace::memory_space> candidate_offsets,
+    Kokkos::View<const int*, typename ExecSpace::memory_space> candidates,
     Kokkos::View<const MortarPairResult<double>*, typename ExecSpace::memory_space> results,
     Kokkos::View<double*, typename ExecSpace::memory_space> g_tilde) {
   const int dim = static_cast<int>(coords.extent(1));
@@ -100,9 +99,9 @@ void accumulate_weighted_gaps(
   Kokkos::parallel_for(
       "grout::weighted_gap", Kokkos::RangePolicy<ExecSpace>(space, 0, slave_faces.extent(0)),
       KOKKOS_LAMBDA(const int s) {
-        for (int c = 0; c < n_candidates(s); ++c) {
-          const MortarPairResult<double>& pair = results(pair_offsets(s) + c);
-          const int m = candidates(s, c);
+        for (int p = candidate_offsets(s); p < candidate_offsets(s + 1); ++p) {
+          const MortarPairResult<double>& pair = results(p);
+          const int m = candidates(p);
           for (int j = 0; j < pair.n_slave; ++j) {
             const int node = slave_faces(s, j);
             double v = 0.0;
@@ -122,11 +121,10 @@ void accumulate_weighted_gaps(
 inline void accumulate_weighted_gaps(
     Kokkos::View<const int**> slave_faces, Kokkos::View<const int**> master_faces,
     Kokkos::View<const double**> coords, Kokkos::View<const double**> normals,
-    Kokkos::View<const int*> n_candidates, Kokkos::View<const int**> candidates,
-    Kokkos::View<const int*> pair_offsets, Kokkos::View<const MortarPairResult<double>*> results,
-    Kokkos::View<double*> g_tilde) {
+    Kokkos::View<const int*> candidate_offsets, Kokkos::View<const int*> candidates,
+    Kokkos::View<const MortarPairResult<double>*> results, Kokkos::View<double*> g_tilde) {
   accumulate_weighted_gaps(Kokkos::DefaultExecutionSpace(), slave_faces, master_faces, coords,
-                           normals, n_candidates, candidates, pair_offsets, results, g_tilde);
+                           normals, candidate_offsets, candidates, results, g_tilde);
 }
 
 }  // namespace grout

@@ -126,8 +126,7 @@ struct GroutProblem {
   int dim;
   Kokkos::View<int**> slave, master;
   Kokkos::View<double**> coords, normals;
-  Kokkos::View<int*> count, offsets;
-  Kokkos::View<int**> candidates;
+  SearchCandidates<Kokkos::HostSpace> candidates;
   Kokkos::View<MortarPairResult<double>*> results;
   CoarseSearchWorkspace<Kokkos::HostSpace> workspace;
   double integrate_seconds = 0.0;
@@ -145,24 +144,21 @@ struct GroutProblem {
     for (int i = 0; i < mi.n_nodes(); ++i)
       for (int d = 0; d < mi.dim; ++d) coords(i, d) = mi.coords[i * mi.dim + d];
     normals = Kokkos::View<double**>("normals", mi.n_nodes(), mi.dim);
-    count = Kokkos::View<int*>("count", mi.n_slave());
-    offsets = Kokkos::View<int*>("offsets", mi.n_slave() + 1);
-    candidates = Kokkos::View<int**>("candidates", mi.n_slave(), max_pair_candidates);
   }
   /// One pass; returns its wall time (integration alone in integrate_seconds).
   double run() {
     const auto t0 = Clock::now();
     compute_nodal_normals(slave, coords, normals);
-    coarse_search(workspace, slave, master, coords, 0.1, count, candidates);
-    const int n_pairs = candidate_offsets(count, offsets);
+    coarse_search(workspace, slave, master, coords, 0.1, candidates);
+    const int n_pairs = candidates.n_pairs;
     if (static_cast<int>(results.extent(0)) < n_pairs)
       results = Kokkos::View<MortarPairResult<double>*>("results", n_pairs);
     const auto t1 = Clock::now();
     if (dim == 2)
-      mortar_integrate_2d(slave, master, coords, normals, count, candidates, offsets,
+      mortar_integrate_2d(slave, master, coords, normals, candidates.offsets, candidates.masters,
                           MortarOptions{}, results);
     else
-      mortar_integrate_3d(slave, master, coords, normals, count, candidates, offsets,
+      mortar_integrate_3d(slave, master, coords, normals, candidates.offsets, candidates.masters,
                           MortarOptions{}, results);
     integrate_seconds = seconds_since(t1);
     return seconds_since(t0);

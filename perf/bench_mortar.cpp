@@ -3,7 +3,7 @@
 // segments, 3D flat QUAD4 and TRI3 interfaces with 32² … 512² slave faces. Each case is timed
 // in four stages, each its own benchmark "<case>/<n>/<stage>":
 //   normals       compute_nodal_normals on the slave faces (owned + one halo layer)
-//   search        coarse_search (reused CoarseSearchWorkspace) + candidate_offsets
+//   search        coarse_search (reused CoarseSearchWorkspace and SearchCandidates)
 //   integrate     mortar_integrate<Dim> over every candidate pair (exact, default rules)
 //   weighted_gap  accumulate_weighted_gaps
 // MPI: rank r of p owns the contiguous slave range [n r/p, n (r+1)/p) and every master face;
@@ -38,8 +38,7 @@ struct RankProblem {
   Kokkos::View<int**> slave, normal_faces, master;  ///< local node ids
   Kokkos::View<double**> coords, normals;
   Kokkos::View<double*> g_tilde;
-  Kokkos::View<int*> count, offsets;
-  Kokkos::View<int**> candidates;
+  SearchCandidates<Kokkos::HostSpace> candidates;
   Kokkos::View<MortarPairResult<double>*> results;
   CoarseSearchWorkspace<Kokkos::HostSpace> workspace;
   MortarOptions options;
@@ -47,21 +46,18 @@ struct RankProblem {
 
   MortarStatus normals_stage() { return compute_nodal_normals(normal_faces, coords, normals); }
   MortarStatus search_stage() {
-    const MortarStatus s =
-        coarse_search(workspace, slave, master, coords, kSearchFactor, count, candidates);
-    candidate_offsets(count, offsets);
-    return s;
+    return coarse_search(workspace, slave, master, coords, kSearchFactor, candidates);
   }
   MortarStatus integrate_stage() {
     if (dim == 2)
-      return mortar_integrate_2d(slave, master, coords, normals, count, candidates, offsets,
-                                 options, results);
-    return mortar_integrate_3d(slave, master, coords, normals, count, candidates, offsets, options,
-                               results);
+      return mortar_integrate_2d(slave, master, coords, normals, candidates.offsets,
+                                 candidates.masters, options, results);
+    return mortar_integrate_3d(slave, master, coords, normals, candidates.offsets,
+                               candidates.masters, options, results);
   }
   void weighted_gap_stage() {
-    accumulate_weighted_gaps(slave, master, coords, normals, count, candidates, offsets, results,
-                             g_tilde);
+    accumulate_weighted_gaps(slave, master, coords, normals, candidates.offsets, candidates.masters,
+                             results, g_tilde);
   }
 };
 
@@ -117,9 +113,6 @@ std::unique_ptr<RankProblem> make_rank_problem(const MortarInterface& mi) {
       for (int d = 0; d < mi.dim; ++d) p->coords(local[node], d) = mi.coords[node * mi.dim + d];
   p->normals = Kokkos::View<double**>("normals", n_local, mi.dim);
   p->g_tilde = Kokkos::View<double*>("g_tilde", n_local);
-  p->count = Kokkos::View<int*>("count", n_loc);
-  p->offsets = Kokkos::View<int*>("offsets", n_loc + 1);
-  p->candidates = Kokkos::View<int**>("candidates", n_loc, max_pair_candidates);
   return p;
 }
 
@@ -148,7 +141,7 @@ RankProblem& problem(const Case& c) {
   auto p = make_rank_problem(mi);
   p->normals_stage();
   p->search_stage();
-  const int n_pairs = candidate_offsets(p->count, p->offsets);
+  const int n_pairs = p->candidates.n_pairs;
   p->results = Kokkos::View<MortarPairResult<double>*>("results", n_pairs);
   p->integrate_stage();
   long overlaps = 0;

@@ -1,9 +1,12 @@
 // Coarse search (kernels/coarse_search.hpp): the binned search must return exactly the
-// brute-force candidate lists, and keep the candidate count per slave face bounded on 1e5
-// faces in reasonable time.
+// brute-force candidate lists (of any length: graded surfaces put many fine master faces in one
+// coarse slave box), and keep the candidate count per slave face bounded on 1e5 faces in
+// reasonable time.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -13,7 +16,6 @@
 
 namespace {
 
-using grout::max_pair_candidates;
 using grout::MortarStatus;
 
 struct Mesh {
@@ -46,26 +48,28 @@ Mesh random_mesh(int dim, int n_s, int n_m, double size, unsigned seed) {
 }
 
 struct Candidates {
-  Kokkos::View<int*> count;
-  Kokkos::View<int**> ids;
-  MortarStatus status;
+  grout::SearchCandidates<Kokkos::HostSpace> crs;
+  MortarStatus status = MortarStatus::ok;
+  int count(size_t s) const { return crs.offsets(s + 1) - crs.offsets(s); }
+  int id(size_t s, int c) const { return crs.masters(crs.offsets(s) + c); }
+  size_t n_slave() const { return crs.offsets.extent(0) - 1; }
 };
 
 Candidates search(const Mesh& m, double factor, bool brute) {
-  Candidates c{Kokkos::View<int*>("count", m.slave.extent(0)),
-               Kokkos::View<int**>("ids", m.slave.extent(0), max_pair_candidates),
-               MortarStatus::ok};
+  Candidates c;
   c.status = brute ? grout::coarse_search_brute_force(Kokkos::DefaultExecutionSpace(), m.slave,
-                                                      m.master, m.coords, factor, c.count, c.ids)
-                   : grout::coarse_search(m.slave, m.master, m.coords, factor, c.count, c.ids);
+                                                      m.master, m.coords, factor, c.crs)
+                   : grout::coarse_search(m.slave, m.master, m.coords, factor, c.crs);
   return c;
 }
 
 void expect_identical(const Candidates& a, const Candidates& b) {
   ASSERT_EQ(a.status, b.status);
-  for (size_t s = 0; s < a.count.extent(0); ++s) {
+  ASSERT_EQ(a.n_slave(), b.n_slave());
+  ASSERT_EQ(a.crs.n_pairs, b.crs.n_pairs);
+  for (size_t s = 0; s < a.n_slave(); ++s) {
     ASSERT_EQ(a.count(s), b.count(s)) << "slave " << s;
-    for (int c = 0; c < max_pair_candidates; ++c) ASSERT_EQ(a.ids(s, c), b.ids(s, c));
+    for (int c = 0; c < a.count(s); ++c) ASSERT_EQ(a.id(s, c), b.id(s, c)) << "slave " << s;
   }
 }
 
@@ -79,20 +83,21 @@ TEST(CoarseSearch, IdenticalToBruteForceOnSmallRandomCases) {
       EXPECT_EQ(brute.status, MortarStatus::ok);
       expect_identical(binned, brute);
       int total = 0;
-      for (size_t s = 0; s < binned.count.extent(0); ++s) total += binned.count(s);
+      for (size_t s = 0; s < binned.n_slave(); ++s) total += binned.count(s);
       EXPECT_GT(total, 0);
     }
 }
 
-TEST(CoarseSearch, CapacityExceededKeepsSmallestIds) {
-  // 40 masters inside one slave box: both searches report the overflow and keep ids 0..31.
-  Mesh m = random_mesh(2, 1, 40, 0.0, 9);
+TEST(CoarseSearch, LongCandidateListsKeptInFull) {
+  // 400 masters inside one slave box: every one of them is a candidate, in ascending order.
+  Mesh m = random_mesh(2, 1, 400, 0.0, 9);
   m.coords(0, 0) = 0.0, m.coords(0, 1) = 0.5, m.coords(1, 0) = 1.0, m.coords(1, 1) = 0.5;
-  for (int k = 2; k < 82; ++k) m.coords(k, 1) = 0.5;
+  for (int k = 2; k < 802; ++k) m.coords(k, 1) = 0.5;
   const auto binned = search(m, 0.1, false), brute = search(m, 0.1, true);
-  EXPECT_EQ(binned.status, MortarStatus::capacity_exceeded);
+  EXPECT_EQ(binned.status, MortarStatus::ok);
   expect_identical(binned, brute);
-  for (int c = 0; c < max_pair_candidates; ++c) EXPECT_EQ(binned.ids(0, c), c);
+  ASSERT_EQ(binned.count(0), 400);
+  for (int c = 0; c < 400; ++c) EXPECT_EQ(binned.id(0, c), c);
 }
 
 TEST(CoarseSearch, EmptyAndDegenerateInputs) {
@@ -178,8 +183,8 @@ void check_large(const Mesh& mesh, double factor, int max_expected) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ASSERT_EQ(c.status, MortarStatus::ok);
-  int worst = 0, least = max_pair_candidates;
-  for (size_t s = 0; s < c.count.extent(0); ++s) {
+  int worst = 0, least = INT_MAX;
+  for (size_t s = 0; s < c.n_slave(); ++s) {
     worst = std::max(worst, c.count(s));
     least = std::min(least, c.count(s));
   }
@@ -194,11 +199,11 @@ void check_large(const Mesh& mesh, double factor, int max_expected) {
   const auto m_boxes =
       grout::compute_face_boxes(Kokkos::DefaultExecutionSpace(), mesh.master, mesh.coords, factor);
   const int dim = static_cast<int>(mesh.coords.extent(1));
-  for (size_t s = 0; s < c.count.extent(0); s += c.count.extent(0) / 97) {
+  for (size_t s = 0; s < c.n_slave(); s += c.n_slave() / 97) {
     int k = 0;
     for (size_t m = 0; m < mesh.master.extent(0); ++m)
       if (grout::boxes_overlap(dim, s_boxes, s, m_boxes, m)) {
-        ASSERT_EQ(c.ids(s, k++), int(m));
+        ASSERT_EQ(c.id(s, k++), int(m));
       }
     ASSERT_EQ(k, c.count(s));
   }
@@ -222,5 +227,60 @@ TEST(CoarseSearch, IdenticalToBruteForceOnWavyInterfaces) {
     expect_identical(search(m2, factor, false), search(m2, factor, true));
     const Mesh m3 = wavy_interface_3d(48);
     expect_identical(search(m3, factor, false), search(m3, factor, true));
+  }
+}
+
+namespace {
+// Graded TRI3 surfaces on z = 0.1 sin(πx) sin(πy) over [0, 1]²: grid lines at t_i = (i/n)^3 in
+// each direction (cells shrink as 3 t^(2/3)/n towards the origin), each cell cut into two
+// triangles. The slave surface has n_s cells per direction and is graded towards (0, 0); the
+// master has n_m per direction and is graded towards (1, 1) (coordinates mirrored), shifted by
+// 1e-3 / n_m in z: coarse slave faces cover many fine master faces near (1, 1) and fine slave
+// faces lie inside one coarse master face near (0, 0).
+Mesh graded_triangle_surfaces(int n_s, int n_m) {
+  const int n_nodes = (n_s + 1) * (n_s + 1) + (n_m + 1) * (n_m + 1);
+  Mesh mesh{Kokkos::View<double**>("coords", n_nodes, 3),
+            Kokkos::View<int**>("slave", 2 * n_s * n_s, 3),
+            Kokkos::View<int**>("master", 2 * n_m * n_m, 3)};
+  const double pi = 3.14159265358979323846;
+  auto surface = [&](int n, int offset, bool mirrored, double dz, Kokkos::View<int**> faces) {
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) {
+        const int id = offset + j * (n + 1) + i;
+        double x = std::pow(static_cast<double>(i) / n, 3.0);
+        double y = std::pow(static_cast<double>(j) / n, 3.0);
+        if (mirrored) x = 1.0 - x, y = 1.0 - y;
+        mesh.coords(id, 0) = x, mesh.coords(id, 1) = y;
+        mesh.coords(id, 2) = 0.1 * std::sin(pi * x) * std::sin(pi * y) + dz;
+      }
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const int a = offset + j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+        const int f = 2 * (j * n + i);
+        faces(f, 0) = a, faces(f, 1) = b, faces(f, 2) = c;
+        faces(f + 1, 0) = a, faces(f + 1, 1) = c, faces(f + 1, 2) = d;
+      }
+  };
+  surface(n_s, 0, false, 0.0, mesh.slave);
+  surface(n_m, (n_s + 1) * (n_s + 1), true, 1e-3 / n_m, mesh.master);
+  return mesh;
+}
+}  // namespace
+
+// Graded triangle surfaces (element sizes from ~1e-4 to ~0.2): some slave faces have far more
+// than 32 candidates, and every list equals the brute-force one.
+TEST(CoarseSearch, IdenticalToBruteForceOnGradedTriangleSurfaces) {
+  for (const double factor : {0.1, 0.5}) {
+    const Mesh m = graded_triangle_surfaces(24, 40);
+    const auto binned = search(m, factor, false), brute = search(m, factor, true);
+    expect_identical(binned, brute);
+    int worst = 0, least = INT_MAX;
+    for (size_t s = 0; s < binned.n_slave(); ++s) {
+      worst = std::max(worst, binned.count(s));
+      least = std::min(least, binned.count(s));
+    }
+    std::printf("factor %.1f: candidates per slave face %d..%d\n", factor, least, worst);
+    EXPECT_GT(worst, 32);
+    EXPECT_GE(least, 1);
   }
 }

@@ -432,23 +432,20 @@ TEST(MortarIntegrate, DriverMatchesPairLoopAndWeightedGap) {
   for (int e = 0; e + 1 < n_m; ++e) mf(e, 0) = n_s + e, mf(e, 1) = n_s + e + 1;
   Kokkos::View<double**> normals("normals", n_s + n_m, 2);
   ASSERT_EQ(grout::compute_nodal_normals(sf, coords, normals), MortarStatus::ok);
-  Kokkos::View<int*> count("count", n_s - 1);
-  Kokkos::View<int**> cand("cand", n_s - 1, grout::max_pair_candidates);
-  ASSERT_EQ(grout::coarse_search(sf, mf, coords, 0.5, count, cand), MortarStatus::ok);
-  Kokkos::View<int*> offsets("offsets", n_s);
-  const int n_pairs = grout::candidate_offsets(count, offsets);
-  EXPECT_EQ(n_pairs, offsets(n_s - 1));
-  Kokkos::View<MortarPairResult<double>*> res("res", n_pairs);
-  ASSERT_EQ(grout::mortar_integrate_2d(sf, mf, coords, normals, count, cand, offsets,
+  grout::SearchCandidates<Kokkos::HostSpace> cand;
+  ASSERT_EQ(grout::coarse_search(sf, mf, coords, 0.5, cand), MortarStatus::ok);
+  const auto offsets = cand.offsets;
+  EXPECT_EQ(cand.n_pairs, offsets(n_s - 1));
+  Kokkos::View<MortarPairResult<double>*> res("res", cand.n_pairs);
+  ASSERT_EQ(grout::mortar_integrate_2d(sf, mf, coords, normals, offsets, cand.masters,
                                        grout::MortarOptions{}, res),
             MortarStatus::ok);
   Kokkos::View<double*> g("g", n_s + n_m);
-  grout::accumulate_weighted_gaps(sf, mf, coords, normals, count, cand, offsets, res, g);
+  grout::accumulate_weighted_gaps(sf, mf, coords, normals, offsets, cand.masters, res, g);
   std::vector<double> g_ref(n_s, 0.0);
   for (int e = 0; e + 1 < n_s; ++e) {
     double D[2] = {0, 0}, D_ref[2] = {0, 0};
-    for (int c = 0; c < count(e); ++c)
-      D[0] += res(offsets(e) + c).D[0], D[1] += res(offsets(e) + c).D[1];
+    for (int p = offsets(e); p < offsets(e + 1); ++p) D[0] += res(p).D[0], D[1] += res(p).D[1];
     for (int m = 0; m + 1 < n_m; ++m) {
       const Pair2D p = chain_pair(ci.xs, ci.ns, e, ci.xm, m);
       MortarPairResult<double> r;

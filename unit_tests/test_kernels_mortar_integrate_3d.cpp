@@ -27,8 +27,7 @@ using grout::bench::MortarInterface;
 struct Launch {
   Kokkos::View<int**> slave, master;
   Kokkos::View<double**> coords, normals;
-  Kokkos::View<int*> count, offsets;
-  Kokkos::View<int**> candidates;
+  grout::SearchCandidates<Kokkos::HostSpace> candidates;  // CRS: offsets, masters
   Kokkos::View<MortarPairResult<double>*> results;
   MortarStatus normals_status = MortarStatus::ok, status = MortarStatus::ok;
 };
@@ -49,18 +48,13 @@ Launch launch(const MortarInterface& mi, const grout::MortarOptions& options) {
     for (int d = 0; d < 3; ++d) l.coords(i, d) = mi.coords[3 * i + d];
   l.normals = Kokkos::View<double**>("normals", mi.n_nodes(), 3);
   l.normals_status = grout::compute_nodal_normals(l.slave, l.coords, l.normals);
-  const int n_s = mi.n_slave();
-  l.count = Kokkos::View<int*>("count", n_s);
-  l.candidates = Kokkos::View<int**>("candidates", n_s, grout::max_pair_candidates);
-  l.offsets = Kokkos::View<int*>("offsets", n_s + 1);
   grout::CoarseSearchWorkspace<Kokkos::HostSpace> workspace;
-  EXPECT_EQ(
-      grout::coarse_search(workspace, l.slave, l.master, l.coords, 0.1, l.count, l.candidates),
-      MortarStatus::ok);
-  const int n_pairs = grout::candidate_offsets(l.count, l.offsets);
-  l.results = Kokkos::View<MortarPairResult<double>*>("results", n_pairs);
-  l.status = grout::mortar_integrate_3d(l.slave, l.master, l.coords, l.normals, l.count,
-                                        l.candidates, l.offsets, options, l.results);
+  EXPECT_EQ(grout::coarse_search(workspace, l.slave, l.master, l.coords, 0.1, l.candidates),
+            MortarStatus::ok);
+  l.results = Kokkos::View<MortarPairResult<double>*>("results", l.candidates.n_pairs);
+  l.status =
+      grout::mortar_integrate_3d(l.slave, l.master, l.coords, l.normals, l.candidates.offsets,
+                                 l.candidates.masters, options, l.results);
   return l;
 }
 
@@ -98,14 +92,14 @@ TEST_P(MortarIntegrate3D, LaunchEqualsPlainLoopOverPairs) {
     double xs[4][3], ns[4][3], xm[4][3];
     gather(l, l.slave, s, xs);
     const int n_slave = grout::gather_face_coordinates(l.slave, s, l.normals, ns);
-    for (int c = 0; c < l.count(s); ++c, ++total) {
+    for (int p = l.candidates.offsets(s); p < l.candidates.offsets(s + 1); ++p, ++total) {
       const int n_master =
-          grout::gather_face_coordinates(l.master, l.candidates(s, c), l.coords, xm);
+          grout::gather_face_coordinates(l.master, l.candidates.masters(p), l.coords, xm);
       MortarPairResult<double> ref;
       const MortarStatus st = grout::integrate_mortar_3d(n_slave, xs, ns, n_master, xm, ref);
       ASSERT_TRUE(st == MortarStatus::ok || st == MortarStatus::no_overlap);
       overlapping += st == MortarStatus::ok;
-      expect_same(l.results(l.offsets(s) + c), ref);
+      expect_same(l.results(p), ref);
     }
   }
   EXPECT_GT(total, overlapping);  // the enlarged boxes give non-overlapping candidates too
@@ -125,12 +119,12 @@ TEST_P(MortarIntegrate3D, CollocationLaunchEqualsPlainLoop) {
     double xs[4][3], ns[4][3], xm[4][3];
     gather(l, l.slave, s, xs);
     const int n_slave = grout::gather_face_coordinates(l.slave, s, l.normals, ns);
-    for (int c = 0; c < l.count(s); ++c) {
+    for (int p = l.candidates.offsets(s); p < l.candidates.offsets(s + 1); ++p) {
       const int n_master =
-          grout::gather_face_coordinates(l.master, l.candidates(s, c), l.coords, xm);
+          grout::gather_face_coordinates(l.master, l.candidates.masters(p), l.coords, xm);
       MortarPairResult<double> ref;
       grout::integrate_mortar_3d_collocation(n_slave, xs, ns, n_master, xm, 3, ref);
-      expect_same(l.results(l.offsets(s) + c), ref);
+      expect_same(l.results(p), ref);
     }
   }
 }
@@ -148,15 +142,15 @@ TEST_P(MortarIntegrate3D, SumsPatchTestAndWeightedGap) {
   std::vector<double> D(n_nodes, 0.0), Mf(n_nodes, 0.0);
   double sum_d = 0.0, sum_m = 0.0, overlap = 0.0;
   for (size_t s = 0; s < l.slave.extent(0); ++s)
-    for (int c = 0; c < l.count(s); ++c) {
-      const MortarPairResult<double>& r = l.results(l.offsets(s) + c);
+    for (int p = l.candidates.offsets(s); p < l.candidates.offsets(s + 1); ++p) {
+      const MortarPairResult<double>& r = l.results(p);
       overlap += r.overlap;
       for (int j = 0; j < r.n_slave; ++j) {
         D[l.slave(s, j)] += r.D[j];
         sum_d += r.D[j];
         for (int k = 0; k < r.n_master; ++k) {
           sum_m += r.M[j][k];
-          Mf[l.slave(s, j)] += r.M[j][k] * f(l.master(l.candidates(s, c), k));
+          Mf[l.slave(s, j)] += r.M[j][k] * f(l.master(l.candidates.masters(p), k));
         }
       }
     }
@@ -164,8 +158,8 @@ TEST_P(MortarIntegrate3D, SumsPatchTestAndWeightedGap) {
   EXPECT_NEAR(sum_m, mi.slave_measure, 1e-12);  // fully covered: overlap = slave area
   EXPECT_NEAR(overlap, mi.slave_measure, 1e-12);
   Kokkos::View<double*> g_tilde("g_tilde", n_nodes);
-  grout::accumulate_weighted_gaps(l.slave, l.master, l.coords, l.normals, l.count, l.candidates,
-                                  l.offsets, l.results, g_tilde);
+  grout::accumulate_weighted_gaps(l.slave, l.master, l.coords, l.normals, l.candidates.offsets,
+                                  l.candidates.masters, l.results, g_tilde);
   const double h = 1.0 / 8;
   for (int j = 0; j < mi.n_slave_nodes; ++j) {
     ASSERT_GT(D[j], 0.0) << "node " << j;
