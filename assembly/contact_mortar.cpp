@@ -194,11 +194,16 @@ void add_pair(const ContactSurface& s, const std::vector<std::array<double, 3>>&
   }
 }
 
-Kokkos::View<int**> face_view(const ContactSurface& s, const SurfaceFaces& faces) {
-  Kokkos::View<int**> v("grout::contact_faces", faces.size(), max_face_nodes);
-  for (std::size_t f = 0; f < faces.size(); ++f)
+// Rows: the faces `rows` of `faces` (all if empty), nodes as positions in s.nodes.
+Kokkos::View<int**> face_view(const ContactSurface& s, const SurfaceFaces& faces,
+                              const std::vector<int>& rows = {}) {
+  const std::size_t n = rows.empty() ? faces.size() : rows.size();
+  Kokkos::View<int**> v("grout::contact_faces", n, max_face_nodes);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t f = rows.empty() ? i : std::size_t(rows[i]);
     for (int a = 0; a < max_face_nodes; ++a)
-      v(f, a) = a < faces.num_nodes[f] ? position_of(s, faces.nodes[f][a]) : -1;
+      v(i, a) = a < faces.num_nodes[f] ? position_of(s, faces.nodes[f][a]) : -1;
+  }
   return v;
 }
 
@@ -224,25 +229,42 @@ ContactMortar evaluate_contact_mortar(const ContactSurface& s,
   const int n_slave_nodes = int(s.slave_nodes.size());
   result.frames.resize(n_slave_nodes);
   result.D.resize(n_slave_nodes);
+  // The slave faces evaluated here, and the nodal frames their pairs use.
+  std::vector<int> evaluated;
+  std::vector<char> framed(n_slave_nodes, 0);
+  for (std::size_t f = 0; f < s.slave.size(); ++f) {
+    if (!s.integrate.empty() && !s.integrate[f]) continue;
+    evaluated.push_back(int(f));
+    for (int a = 0; a < s.slave.num_nodes[f]; ++a)
+      framed[s.slave_index.at(s.slave.nodes[f][a])] = 1;
+  }
   for (int j = 0; j < n_slave_nodes; ++j)
-    result.frames[j] = slave_frame(s, x, j, options.derivatives);
+    if (framed[j]) result.frames[j] = slave_frame(s, x, j, options.derivatives);
 
   // Coarse search on the current positions.
   const int dim = s.dimension;
   Kokkos::View<double**> coords("grout::contact_coords", s.nodes.size(), dim);
   for (std::size_t i = 0; i < s.nodes.size(); ++i)
     for (int d = 0; d < dim; ++d) coords(i, d) = x[i][d];
-  const auto slave_faces = face_view(s, s.slave);
+  const auto slave_faces = face_view(s, s.slave, evaluated);
   const auto master_faces = face_view(s, s.master);
   SearchCandidates<Kokkos::HostSpace> candidates;
   coarse_search(slave_faces, master_faces, coords, options.search_factor, candidates);
+  // Pairs in (slave face, master face) order: the master faces are in id order, so every
+  // sum over pairs runs in the same order however the faces are distributed.
   SlaveDualCache<pair_vars_3d> dual_cache;
-  for (std::size_t f = 0; f < s.slave.size(); ++f) {
-    for (int p = candidates.offsets(f); p < candidates.offsets(f + 1); ++p) {
+  std::vector<int> masters;
+  for (std::size_t k = 0; k < evaluated.size(); ++k) {
+    const int f = evaluated[k];
+    masters.clear();
+    for (int p = candidates.offsets(k); p < candidates.offsets(k + 1); ++p)
+      masters.push_back(candidates.masters(p));
+    std::sort(masters.begin(), masters.end());
+    for (int m : masters) {
       if (dim == 2)
-        add_pair<pair_vars_2d>(s, x, options, int(f), candidates.masters(p), result, nullptr);
+        add_pair<pair_vars_2d>(s, x, options, f, m, result, nullptr);
       else
-        add_pair<pair_vars_3d>(s, x, options, int(f), candidates.masters(p), result, &dual_cache);
+        add_pair<pair_vars_3d>(s, x, options, f, m, result, &dual_cache);
     }
   }
   for (auto& D : result.D) compress_gradient(D.gradient);

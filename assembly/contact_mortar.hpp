@@ -48,8 +48,11 @@ struct ContactMortar {
 /// deterministic), dropping exact zeros: each dof then appears once.
 void compress_gradient(SparseGradient& g);
 
-/// Evaluate at positions x (x[i] = position of surface.nodes[i], 3 components). The D and M
-/// gradients are compressed (compress_gradient).
+/// Evaluate at positions x (x[i] = position of surface.nodes[i], 3 components), over the
+/// slave faces surface.integrate selects (all if it is empty): D, M and frames are complete
+/// for the slave nodes all of whose faces are selected; frames are left empty for slave
+/// nodes of no selected face. Pairs are summed in (slave face, master face) order. The D
+/// and M gradients are compressed (compress_gradient).
 ContactMortar evaluate_contact_mortar(const ContactSurface& surface,
                                       const std::vector<std::array<double, 3>>& x,
                                       const ContactMortarOptions& options);

@@ -1,6 +1,7 @@
 #include "assembly/contact_surface.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "io/errors.hpp"
 
@@ -8,8 +9,12 @@ namespace grout {
 
 namespace {
 
+using FaceFilter = std::function<bool(const GlobalIndex* nodes, int n)>;
+
+// The faces of the side set that `keep` accepts (all if `keep` is empty), in side-set order.
 SurfaceFaces faces_of(const Mesh& mesh, const Input& input, const ContactInput& contact,
-                      const std::string& role, const std::string& set_name) {
+                      const std::string& role, const std::string& set_name,
+                      const FaceFilter& keep = {}) {
   const std::string key = input.file + ": grout/contact/" + contact.name + "/" + role;
   const SideSet* set = mesh.find_side_set(set_name);
   if (!set) throw InputError(key + ": no side set '" + set_name + "' in mesh '" + mesh.file + "'");
@@ -33,7 +38,9 @@ SurfaceFaces faces_of(const Mesh& mesh, const Input& input, const ContactInput& 
     const GlobalIndex e = set->elements[i] - block.first_element;
     for (int a = 0; a < n; ++a)
       nodes[a] = block.connectivity[e * block.nodes_per_element + local[a]];
+    if (keep && !keep(nodes.data(), n)) continue;
     faces.nodes.push_back(nodes);
+    faces.ids.push_back(GlobalIndex(i));
     faces.num_nodes.push_back(n);
     faces.blocks.push_back(&block);
   }
@@ -81,6 +88,7 @@ void check_bodies(const Mesh& mesh, const Input& input, const ContactInput& cont
   }
 }
 
+
 std::vector<GlobalIndex> unique_nodes(const SurfaceFaces& faces) {
   std::vector<GlobalIndex> nodes;
   for (std::size_t f = 0; f < faces.size(); ++f)
@@ -90,7 +98,22 @@ std::vector<GlobalIndex> unique_nodes(const SurfaceFaces& faces) {
   return nodes;
 }
 
+void index_slave_nodes(ContactSurface& s) {
+  s.slave_nodes = unique_nodes(s.slave);
+  for (std::size_t i = 0; i < s.slave_nodes.size(); ++i) s.slave_index[s.slave_nodes[i]] = int(i);
+  s.slave_node_faces.resize(s.slave_nodes.size());
+  for (std::size_t f = 0; f < s.slave.size(); ++f)
+    for (int a = 0; a < s.slave.num_nodes[f]; ++a)
+      s.slave_node_faces[s.slave_index[s.slave.nodes[f][a]]].push_back(int(f));
+}
+
 }  // namespace
+
+std::string shared_node_message(const Input& input, const ContactInput& contact, GlobalIndex n) {
+  return input.file + ": grout/contact/" + contact.name + ": slave '" + contact.slave +
+         "' and master '" + contact.master + "' share node " + std::to_string(n + 1) +
+         " (contact bodies must not share nodes)";
+}
 
 ContactSurface build_contact_surface(const Mesh& mesh, const Input& input,
                                      const ContactInput& contact) {
@@ -101,24 +124,122 @@ ContactSurface build_contact_surface(const Mesh& mesh, const Input& input,
   s.slave = faces_of(mesh, input, contact, "slave", contact.slave);
   s.master = faces_of(mesh, input, contact, "master", contact.master);
   check_bodies(mesh, input, contact, s.slave, s.master);
-  s.slave_nodes = unique_nodes(s.slave);
-  for (std::size_t i = 0; i < s.slave_nodes.size(); ++i) s.slave_index[s.slave_nodes[i]] = int(i);
-  s.slave_node_faces.resize(s.slave_nodes.size());
-  for (std::size_t f = 0; f < s.slave.size(); ++f)
-    for (int a = 0; a < s.slave.num_nodes[f]; ++a)
-      s.slave_node_faces[s.slave_index[s.slave.nodes[f][a]]].push_back(int(f));
+  index_slave_nodes(s);
 
   const std::vector<GlobalIndex> master_nodes = unique_nodes(s.master);
   for (GlobalIndex n : master_nodes) {
-    if (s.slave_index.count(n)) {
-      throw InputError(input.file + ": grout/contact/" + contact.name + ": slave '" +
-                       contact.slave + "' and master '" + contact.master + "' share node " +
-                       std::to_string(n + 1) + " (contact bodies must not share nodes)");
-    }
+    if (s.slave_index.count(n)) throw InputError(shared_node_message(input, contact, n));
   }
   std::merge(s.slave_nodes.begin(), s.slave_nodes.end(), master_nodes.begin(), master_nodes.end(),
              std::back_inserter(s.nodes));
   return s;
+}
+
+LocalContactFaces build_local_contact_surface(const Mesh& mesh, const Input& input,
+                                              const ContactInput& contact,
+                                              const std::function<bool(GlobalIndex)>& owns) {
+  LocalContactFaces local;
+  ContactSurface& s = local.surface;
+  // The whole surfaces (the mesh is replicated, so every rank finds the same answer).
+  check_bodies(mesh, input, contact, faces_of(mesh, input, contact, "slave", contact.slave),
+               faces_of(mesh, input, contact, "master", contact.master));
+  s.name = contact.name;
+  s.type = contact.type;
+  s.dimension = mesh.dimension;
+  const auto has_owned = [&](const GlobalIndex* nodes, int n) {
+    for (int a = 0; a < n; ++a)
+      if (owns(nodes[a])) return true;
+    return false;
+  };
+  // Nodes of the faces with an owned node; then every face touching one of them.
+  const std::vector<GlobalIndex> near =
+      unique_nodes(faces_of(mesh, input, contact, "slave", contact.slave, has_owned));
+  s.slave =
+      faces_of(mesh, input, contact, "slave", contact.slave, [&](const GlobalIndex* nodes, int n) {
+        for (int a = 0; a < n; ++a)
+          if (std::binary_search(near.begin(), near.end(), nodes[a])) return true;
+        return false;
+      });
+  s.integrate.resize(s.slave.size());
+  for (std::size_t f = 0; f < s.slave.size(); ++f)
+    s.integrate[f] = has_owned(s.slave.nodes[f].data(), s.slave.num_nodes[f]);
+  index_slave_nodes(s);
+  local.owned_master = faces_of(mesh, input, contact, "master", contact.master,
+                                [&](const GlobalIndex* nodes, int n) {
+                                  for (int a = 0; a < n; ++a) {  // an owned slave node?
+                                    if (!owns(nodes[a]) || !s.slave_index.count(nodes[a])) continue;
+                                    if (local.shared_node < 0 || nodes[a] < local.shared_node)
+                                      local.shared_node = nodes[a];
+                                  }
+                                  return owns(*std::min_element(nodes, nodes + n));
+                                });
+  s.nodes = s.slave_nodes;
+  return local;
+}
+
+void set_master_faces(ContactSurface& s, SurfaceFaces master) {
+  s.master = std::move(master);
+  const std::vector<GlobalIndex> master_nodes = unique_nodes(s.master);
+  s.nodes.clear();
+  std::merge(s.slave_nodes.begin(), s.slave_nodes.end(), master_nodes.begin(), master_nodes.end(),
+             std::back_inserter(s.nodes));
+  s.nodes.erase(std::unique(s.nodes.begin(), s.nodes.end()), s.nodes.end());
+}
+
+namespace {
+
+// Calls visit(nodes, n) for each face of the side set, in side-set order.
+template <class Visit>
+void for_each_side(const Mesh& mesh, const std::string& set_name, Visit visit) {
+  const SideSet* set = mesh.find_side_set(set_name);
+  if (!set) return;
+  for (std::size_t i = 0; i < set->elements.size(); ++i) {
+    const ElementBlock* block = mesh.block_of(set->elements[i]);
+    if (!block) continue;
+    int local[max_side_nodes];
+    GlobalIndex nodes[max_side_nodes];
+    const int n = side_local_nodes(block->topology, set->sides[i], local);
+    const GlobalIndex e = set->elements[i] - block->first_element;
+    for (int a = 0; a < n; ++a)
+      nodes[a] = block->connectivity[e * block->nodes_per_element + local[a]];
+    visit(nodes, n);
+  }
+}
+
+}  // namespace
+
+double face_size(const Mesh& mesh, const GlobalIndex* nodes, int n) {
+  const int dim = mesh.dimension;
+  double extent = 0.0;  // longest edge
+  for (int a = 0; a < n; ++a) {
+    const GlobalIndex p = nodes[a], q = nodes[(a + 1) % n];
+    double d2 = 0.0;
+    for (int d = 0; d < dim; ++d) {
+      const double dx = mesh.coordinates[p * dim + d] - mesh.coordinates[q * dim + d];
+      d2 += dx * dx;
+    }
+    extent = std::max(extent, std::sqrt(d2));
+  }
+  return extent;
+}
+
+double mean_face_size(const Mesh& mesh, const std::string& set_name) {
+  double sum = 0.0;
+  std::size_t count = 0;
+  for_each_side(mesh, set_name, [&](const GlobalIndex* nodes, int n) {
+    sum += face_size(mesh, nodes, n);
+    ++count;
+  });
+  return count ? sum / double(count) : 0.0;
+}
+
+std::vector<GlobalIndex> side_set_nodes(const Mesh& mesh, const std::string& set_name) {
+  std::vector<GlobalIndex> nodes;
+  for_each_side(mesh, set_name,
+                [&](const GlobalIndex* face, int n) { nodes.insert(nodes.end(), face, face + n); });
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
 }
 
 }  // namespace grout

@@ -1,8 +1,11 @@
 #pragma once
-// Slave and master surfaces of a contact interface, from the side sets the input names.
-// Replicated on every rank (contact surfaces are small next to the volume mesh).
+// Slave and master surfaces of a contact interface, from the side sets the input names:
+// the whole interface (build_contact_surface), or the part one rank evaluates in distributed
+// contact (build_local_contact_surface, then set_master_faces with the faces the parallel
+// search ghosted, assembly/contact_distribution.hpp).
 
 #include <array>
+#include <functional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -17,6 +20,7 @@ struct SurfaceFaces {
   std::vector<std::array<GlobalIndex, max_face_nodes>> nodes;  ///< global nodes, outward order
   std::vector<int> num_nodes;                                  ///< 2 (line2), 3 or 4
   std::vector<const ElementBlock*> blocks;                     ///< block of each face's element
+  std::vector<GlobalIndex> ids;  ///< index of each face in its side set (ascending)
   std::size_t size() const { return nodes.size(); }
 };
 
@@ -29,11 +33,47 @@ struct ContactSurface {
   std::unordered_map<GlobalIndex, int> slave_index;  ///< global node -> index in slave_nodes
   std::vector<std::vector<int>> slave_node_faces;    ///< slave node index -> slave faces
   std::vector<GlobalIndex> nodes;                    ///< slave and master nodes, sorted
+  /// Per slave face: 1 if its (slave, master) pairs are evaluated. Empty: every face. The
+  /// D, M and frames of a slave node are complete if all its faces are evaluated.
+  std::vector<char> integrate;
 };
 
 /// Faces of the side sets `contact.slave` and `contact.master`. Throws InputError naming the
 /// file and key if a side set is missing, empty, or the two share a node.
 ContactSurface build_contact_surface(const Mesh& mesh, const Input& input,
                                      const ContactInput& contact);
+
+/// The part of an interface that one rank evaluates, with `owns(node)` true for the nodes
+/// it owns:
+/// - surface.slave: the slave faces with an owned node (integrate = 1), then, for the nodal
+///   normals of their nodes, every other slave face around those nodes (integrate = 0), in
+///   side-set order; surface.master is empty (set_master_faces);
+/// - owned_master: the master faces whose lowest-numbered node is owned (each master face
+///   has exactly one owner);
+/// - shared_node: the lowest owned node that is on both surfaces (an input error the caller
+///   reports on every rank), or −1.
+struct LocalContactFaces {
+  ContactSurface surface;
+  SurfaceFaces owned_master;
+  GlobalIndex shared_node = -1;
+};
+LocalContactFaces build_local_contact_surface(const Mesh& mesh, const Input& input,
+                                              const ContactInput& contact,
+                                              const std::function<bool(GlobalIndex)>& owns);
+
+/// The input error for a node (0-based) on both surfaces of `contact`.
+std::string shared_node_message(const Input& input, const ContactInput& contact, GlobalIndex node);
+
+/// Sets the master faces of `s` (ascending ids) and its node list (slave and master nodes).
+void set_master_faces(ContactSurface& s, SurfaceFaces master);
+
+/// Mean longest edge of the faces of a side set, summed in side-set order (the same value on
+/// every rank of a replicated mesh); 0 if there is no such set.
+double mean_face_size(const Mesh& mesh, const std::string& set_name);
+/// Longest edge of a face (its n nodes, in order).
+double face_size(const Mesh& mesh, const GlobalIndex* nodes, int n);
+
+/// The nodes of a side set, sorted and unique (empty if there is no such set).
+std::vector<GlobalIndex> side_set_nodes(const Mesh& mesh, const std::string& set_name);
 
 }  // namespace grout

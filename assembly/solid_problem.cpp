@@ -33,7 +33,12 @@ bool is_local_element(const Partition& partition, int rank, GlobalIndex element,
 SolidProblem::SolidProblem(const Mesh& mesh, const Input& input, Teuchos::RCP<const Comm> comm)
     : mesh_(mesh), input_(input), comm_(std::move(comm)), dim_(mesh.dimension) {
   num_nodes_ = mesh.num_nodes();
-  const Partition partition = partition_mesh(mesh, comm_->getSize());
+  // Contact slave faces' elements steer the cuts, so that the contact work is shared.
+  std::vector<GlobalIndex> contact_elements;
+  for (const ContactInput& c : input.contact)
+    if (const SideSet* set = mesh.find_side_set(c.slave))
+      contact_elements.insert(contact_elements.end(), set->elements.begin(), set->elements.end());
+  const Partition partition = partition_mesh(mesh, comm_->getSize(), contact_elements);
   build_maps(partition);
   build_blocks(partition);
   build_graph();

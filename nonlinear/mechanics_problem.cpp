@@ -1,76 +1,67 @@
 #include "nonlinear/mechanics_problem.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <cmath>
 #include <limits>
-#include <map>
 
 #include "assembly/agree_on_errors.hpp"
+#include "assembly/contact_distribution.hpp"
 #include "io/errors.hpp"
 #include "nonlinear/dirichlet.hpp"
 
 namespace grout {
 
 struct MechanicsProblem::Interface {
-  ContactSurface surface;
+  ContactSurface surface;     ///< this rank's slave faces; master faces of the last search
+  SurfaceFaces owned_master;  ///< master faces this rank owns (sent in the parallel search)
   ContactInput input;
-  GO lambda_offset = 0;  ///< GID of λ_0, component 0
+  int index = 0;                 ///< in the input's contact list
+  std::vector<int> owned;        ///< indices in surface.slave_nodes of the owned slave nodes
+  GO lambda_offset = 0;          ///< GID of the interface's first multiplier
+  std::vector<GO> lambda_index;  ///< per owned slave node: its index among all slave nodes
+  int dim = 2;
   double c_hat = 1.0;
   double active_tolerance = 0.0;  ///< on λ_n − ĉ g: 1e-10 E
-  std::vector<double> proximity;  ///< per slave node: ContactInput::start_gap × its face size
+  std::vector<double> proximity;  ///< per owned slave node: ContactInput::start_gap × face size
   double c_t_hat = 1.0;           ///< c_t: like ĉ unless the input sets it
-  std::vector<std::array<double, 3>> old_positions;     ///< of surface.nodes, last converged step
-  std::vector<std::array<double, 3>> positions;         ///< of surface.nodes, last evaluation
-  std::vector<std::array<double, 3>> slip_increment;    ///< per slave node, ū_k of the step
-  std::vector<std::array<double, 3>> slip_accumulated;  ///< per slave node, Σ ū_k τ_k (vector)
-  std::vector<std::array<std::array<double, 3>, 2>> tangents;  ///< τ_k per slave node
-
-  double old_position(GlobalIndex node, int d) const {
-    return old_positions[std::lower_bound(surface.nodes.begin(), surface.nodes.end(), node) -
-                         surface.nodes.begin()][d];
-  }
   ContactMortarOptions options;
   bool current_geometry = false;  ///< normals, D, M on the current configuration
   ContactMortar reference;        ///< D, M and normals of the reference configuration
-  // Results of the last evaluation, per slave node.
+  // Per node of surface.nodes at the last evaluation: reference coordinates, displacement,
+  // displacement of the last converged step.
+  std::vector<std::array<double, 3>> X, u, u_old;
+  // Per owned slave node: results of the last evaluation and the slip history.
   std::vector<double> pressure, gap;
   std::vector<std::array<double, 3>> lambda;
   std::vector<char> active, previous_active;
+  std::vector<std::array<double, 3>> slip_increment;           ///< ū_k of the step
+  std::vector<std::array<double, 3>> slip_accumulated;         ///< Σ ū_k τ_k (vector)
+  std::vector<std::array<std::array<double, 3>, 2>> tangents;  ///< τ_k
 
-  GO lambda_gid(int j, int c) const { return lambda_offset + GO(j) * surface.dimension + c; }
+  GO lambda_gid(int q, int c) const { return lambda_offset + lambda_index[q] * dim + c; }
+  std::size_t position_of(GlobalIndex node) const {
+    return std::size_t(std::lower_bound(surface.nodes.begin(), surface.nodes.end(), node) -
+                       surface.nodes.begin());
+  }
 };
 
 namespace {
 
-// Young's modulus of the material of the block the surface's first face belongs to.
-double youngs_modulus_of(const Input& input, const SurfaceFaces& faces, const ContactSurface& s) {
-  if (const MaterialInput* m = find_material(input, *faces.blocks.front()))
-    return m->youngs_modulus;
-  throw InputError(input.file + ": grout/contact/" + s.name + ": no material on block '" +
-                   faces.blocks.front()->name + "'");
+MPI_Comm raw_mpi_comm(const Teuchos::RCP<const Comm>& comm) {
+  const auto mpi = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm);
+  return mpi.is_null() ? MPI_COMM_SELF : (*mpi->getRawMpiComm())();
 }
 
-// Longest edge of face f.
-double face_size(const Mesh& mesh, const SurfaceFaces& faces, std::size_t f) {
-  const int dim = mesh.dimension;
-  double extent = 0.0;
-  for (int a = 0; a < faces.num_nodes[f]; ++a) {
-    const GlobalIndex p = faces.nodes[f][a], q = faces.nodes[f][(a + 1) % faces.num_nodes[f]];
-    double d2 = 0.0;
-    for (int d = 0; d < dim; ++d) {
-      const double dx = mesh.coordinates[p * dim + d] - mesh.coordinates[q * dim + d];
-      d2 += dx * dx;
-    }
-    extent = std::max(extent, std::sqrt(d2));
-  }
-  return extent;
-}
-
-double mean_face_size(const Mesh& mesh, const SurfaceFaces& faces) {
-  double sum = 0.0;
-  for (std::size_t f = 0; f < faces.size(); ++f) sum += face_size(mesh, faces, f);
-  return sum / double(faces.size());
+// Young's modulus of the material of the block of the side set's first face.
+double youngs_modulus_of(const Input& input, const Mesh& mesh, const std::string& set_name,
+                         const ContactInput& contact) {
+  const SideSet* set = mesh.find_side_set(set_name);  // checked by build_local_contact_surface
+  const ElementBlock& block = *mesh.block_of(set->elements.front());
+  if (const MaterialInput* m = find_material(input, block)) return m->youngs_modulus;
+  throw InputError(input.file + ": grout/contact/" + contact.name + ": no material on block '" +
+                   block.name + "'");
 }
 
 }  // namespace
@@ -79,91 +70,115 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
     : solid_(solid), mesh_(mesh), input_(input), dim_(mesh.dimension) {
   num_u_ = GO(mesh.num_nodes()) * dim_;
   const auto& owned_u = *solid.owned_map();
+  const auto comm = solid.comm();
+  raw_comm_ = raw_mpi_comm(comm);
   num_owned_u_ = int(owned_u.getNodeNumElements());
   std::vector<GO> owned;
   for (int i = 0; i < num_owned_u_; ++i) owned.push_back(owned_u.getGlobalElement(i));
+  const auto owns = [&](GlobalIndex node) { return owned_u.isNodeGlobalElement(node * dim_); };
 
-  // Interfaces: surfaces, multiplier numbering, penalty-like scaling ĉ.
+  // Interfaces: this rank's part of the surfaces, multipliers (numbered by slave node, as
+  // on one rank: the sorted slave nodes of the side set), penalty-like scaling ĉ.
   GO next_lambda = num_u_;
-  std::vector<GO> gathered;
+  std::vector<GO> base;  // displacement dofs of the nodes of local faces
   for (const ContactInput& ci : input.contact) {
     auto c = std::make_unique<Interface>();
-    c->surface = build_contact_surface(mesh, input, ci);
+    LocalContactFaces local = build_local_contact_surface(mesh, input, ci, owns);
+    GlobalIndex shared =
+        local.shared_node < 0 ? std::numeric_limits<GlobalIndex>::max() : local.shared_node;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, 1, &shared, &local.shared_node);
+    if (local.shared_node != std::numeric_limits<GlobalIndex>::max())
+      throw InputError(shared_node_message(input, ci, local.shared_node));
+    c->surface = std::move(local.surface);
+    c->owned_master = std::move(local.owned_master);
     c->input = ci;
-    c->lambda_offset = next_lambda;
-    const int n_slave = int(c->surface.slave_nodes.size());
-    next_lambda += GO(n_slave) * dim_;
-    const double E1 = youngs_modulus_of(input, c->surface.slave, c->surface);
-    const double E2 = youngs_modulus_of(input, c->surface.master, c->surface);
-    c->c_hat = ci.c_n > 0.0 ? ci.c_n
-                            : 2.0 / (1.0 / E1 + 1.0 / E2) / mean_face_size(mesh, c->surface.slave);
-    c->active_tolerance = 1e-10 * 2.0 / (1.0 / E1 + 1.0 / E2);
-    c->proximity.assign(n_slave, 0.0);
-    for (int j = 0; j < n_slave; ++j) {
-      const auto& faces = c->surface.slave_node_faces[j];
-      for (int f : faces) c->proximity[j] += face_size(mesh, c->surface.slave, f);
-      if (!faces.empty()) c->proximity[j] *= ci.start_gap / double(faces.size());
+    c->index = int(interfaces_.size());
+    c->dim = dim_;
+    const ContactSurface& s = c->surface;
+    const std::vector<GlobalIndex> all_slave = side_set_nodes(mesh, ci.slave);
+    for (std::size_t j = 0; j < s.slave_nodes.size(); ++j) {
+      if (!owns(s.slave_nodes[j])) continue;
+      c->owned.push_back(int(j));
+      c->lambda_index.push_back(
+          std::lower_bound(all_slave.begin(), all_slave.end(), s.slave_nodes[j]) -
+          all_slave.begin());
     }
+    const int n_owned = int(c->owned.size());
+    c->lambda_offset = next_lambda;
+    next_lambda += GO(all_slave.size()) * dim_;
+    for (int q = 0; q < n_owned; ++q)
+      for (int d = 0; d < dim_; ++d) owned.push_back(c->lambda_gid(q, d));
+
+    const double E1 = youngs_modulus_of(input, mesh, ci.slave, ci);
+    const double E2 = youngs_modulus_of(input, mesh, ci.master, ci);
+    c->c_hat = ci.c_n > 0.0 ? ci.c_n : 2.0 / (1.0 / E1 + 1.0 / E2) / mean_face_size(mesh, ci.slave);
+    c->active_tolerance = 1e-10 * 2.0 / (1.0 / E1 + 1.0 / E2);
+    c->proximity.assign(n_owned, 0.0);  // start_gap × the mean size of the node's faces
+    for (int q = 0; q < n_owned; ++q) {
+      const auto& faces = s.slave_node_faces[c->owned[q]];
+      for (int f : faces)
+        c->proximity[q] += face_size(mesh, s.slave.nodes[f].data(), s.slave.num_nodes[f]);
+      if (!faces.empty()) c->proximity[q] *= ci.start_gap / double(faces.size());
+    }
+    c->c_t_hat = ci.c_t > 0.0 ? ci.c_t : c->c_hat;
     c->options.scheme = ci.integration == ContactIntegration::collocation
                             ? MortarIntegration::collocation
                             : MortarIntegration::exact;
     if (ci.collocation_points > 0) c->options.collocation_points = ci.collocation_points;
-    c->pressure.assign(n_slave, 0.0);
-    c->gap.assign(n_slave, 0.0);
-    c->lambda.assign(n_slave, {0.0, 0.0, 0.0});
-    c->active.assign(n_slave, 0);
-    c->previous_active.assign(n_slave, 0);
-    for (int j = 0; j < n_slave; ++j) {
-      if (owned_u.isNodeGlobalElement(c->surface.slave_nodes[j] * dim_))
-        for (int d = 0; d < dim_; ++d) owned.push_back(c->lambda_gid(j, d));
-      for (int d = 0; d < dim_; ++d) gathered.push_back(c->lambda_gid(j, d));
-    }
-    for (GlobalIndex n : c->surface.nodes)
-      for (int d = 0; d < dim_; ++d) gathered.push_back(n * dim_ + d);
     const ContactGeometry geometry = ci.geometry != ContactGeometry::automatic ? ci.geometry
                                      : input.model.strain == StrainKind::small
                                          ? ContactGeometry::reference
                                          : ContactGeometry::current;
     c->current_geometry = geometry == ContactGeometry::current && ci.type != ContactKind::tied;
-    if (!c->current_geometry) {
-      std::vector<std::array<double, 3>> X(c->surface.nodes.size(), {0.0, 0.0, 0.0});
-      for (std::size_t i = 0; i < X.size(); ++i)
-        for (int d = 0; d < dim_; ++d) X[i][d] = mesh.coordinates[c->surface.nodes[i] * dim_ + d];
+
+    c->pressure.assign(n_owned, 0.0);
+    c->gap.assign(n_owned, 0.0);
+    c->lambda.assign(n_owned, {0.0, 0.0, 0.0});
+    c->active.assign(n_owned, 0);
+    c->previous_active.assign(n_owned, 0);
+    c->slip_increment.assign(n_owned, {0.0, 0.0, 0.0});
+    c->slip_accumulated.assign(n_owned, {0.0, 0.0, 0.0});
+    c->tangents.assign(n_owned, {});
+    for (GlobalIndex n : s.slave_nodes)
+      for (int d = 0; d < dim_; ++d) base.push_back(n * dim_ + d);
+    for (std::size_t f = 0; f < c->owned_master.size(); ++f)
+      for (int a = 0; a < c->owned_master.num_nodes[f]; ++a)
+        for (int d = 0; d < dim_; ++d) base.push_back(c->owned_master.nodes[f][a] * dim_ + d);
+
+    if (!c->current_geometry) {  // D, M and normals once, at zero displacement
+      ghost_master_faces_of(*c, nullptr, nullptr);
+      std::vector<std::array<double, 3>> X = c->X;
       ContactMortarOptions reference_options = c->options;
       reference_options.derivatives = false;
       c->reference = evaluate_contact_mortar(c->surface, X, reference_options);
     }
-    c->c_t_hat = ci.c_t > 0.0 ? ci.c_t : c->c_hat;
-    c->old_positions.assign(c->surface.nodes.size(), {0.0, 0.0, 0.0});
-    for (std::size_t i = 0; i < c->surface.nodes.size(); ++i)
-      for (int d = 0; d < dim_; ++d)
-        c->old_positions[i][d] = mesh.coordinates[c->surface.nodes[i] * dim_ + d];
-    c->positions = c->old_positions;
-    c->slip_increment.assign(n_slave, {0.0, 0.0, 0.0});
-    c->slip_accumulated.assign(n_slave, {0.0, 0.0, 0.0});
-    c->tangents.assign(n_slave, {});
     interfaces_.push_back(std::move(c));
   }
-  // A slave node carries one multiplier: two pairs must not share slave nodes.
-  std::map<GlobalIndex, const Interface*> slave_pair;
-  for (const auto& c : interfaces_) {
-    for (GlobalIndex n : c->surface.slave_nodes) {
-      const auto [it, fresh] = slave_pair.emplace(n, c.get());
-      if (!fresh) {
-        throw InputError(input.file + ": grout/contact/" + c->input.name + "/slave: side set '" +
-                         c->input.slave + "' shares node " + std::to_string(n + 1) +
-                         " with the slave side of grout/contact/" + it->second->input.name +
-                         " (a slave node belongs to one contact pair)");
+  // A slave node carries one multiplier: two pairs must not share slave nodes. Each rank checks
+  // the slave nodes it owns; every rank agrees on the outcome.
+  agree_on_errors(*comm, [&] {
+    std::map<GlobalIndex, const Interface*> slave_pair;
+    for (const auto& c : interfaces_) {
+      for (int j : c->owned) {
+        const GlobalIndex n = c->surface.slave_nodes[j];
+        const auto [it, fresh] = slave_pair.emplace(n, c.get());
+        if (!fresh) {
+          throw InputError(input.file + ": grout/contact/" + c->input.name + "/slave: side set '" +
+                           c->input.slave + "' shares node " + std::to_string(n + 1) +
+                           " with the slave side of grout/contact/" + it->second->input.name +
+                           " (a slave node belongs to one contact pair)");
+        }
       }
     }
-  }
-  const auto comm = solid.comm();
+  });
   map_ = Teuchos::rcp(new Map(next_lambda, owned.data(), owned.size(), 0, comm));
-  std::sort(gathered.begin(), gathered.end());
-  gathered.erase(std::unique(gathered.begin(), gathered.end()), gathered.end());
-  gathered_map_ = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
-                                       gathered.data(), gathered.size(), 0, comm));
-  gather_ = Teuchos::rcp(new Import(map_, gathered_map_));
+  std::sort(base.begin(), base.end());
+  base.erase(std::unique(base.begin(), base.end()), base.end());
+  base_map_ = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                   base.data(), base.size(), 0, comm));
+  base_import_ = Teuchos::rcp(new Import(map_, base_map_));
+  x_last_ = Teuchos::rcp(new Vector(map_));
+  x_old_ = Teuchos::rcp(new Vector(map_));
   u_ = solid.create_vector();
   f_int_ = solid.create_vector();
   f_ext_ = solid.create_vector();
@@ -196,9 +211,14 @@ void MechanicsProblem::displacement(const Vector& x, Vector& u) const {
 }
 
 void MechanicsProblem::add_entry(GO row, GO col, double value) {
-  if (value == 0.0 || map_->getLocalElement(row) == Teuchos::OrdinalTraits<LO>::invalid()) return;
-  entry_rows_.push_back(row);
+  constexpr long long seq_bits = 24;
+  const long long seq = entry_seq_++;
+  if (seq >= (1LL << seq_bits))
+    throw std::logic_error("MechanicsProblem: too many Jacobian entries for one slave node");
+  if (value == 0.0) return;
+  entry_rows_.push_back(row);  // rows other ranks own are sent to them by jacobian()
   entry_cols_.push_back(col);
+  entry_keys_.push_back((entry_tag_ << seq_bits) + seq);
   entry_values_.push_back(value);
 }
 
@@ -215,16 +235,26 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
     for (std::size_t i = 0; i < Fv.extent(0); ++i)
       Fv(i, 0) = int(i) < num_owned_u_ ? fi(i, 0) - fe(i, 0) : 0.0;
   }
-  entry_rows_.clear(), entry_cols_.clear(), entry_values_.clear();
+  entry_rows_.clear(), entry_cols_.clear(), entry_keys_.clear(), entry_values_.clear();
+  force_rows_.clear(), force_tags_.clear(), force_values_.clear();
+  x_last_->assign(x);
+  double contact_sums[3] = {0.0, 0.0, 0.0};  // active, changes, Σ floor²
   if (!interfaces_.empty()) {
     Teuchos::TimeMonitor timer(
         *Teuchos::TimeMonitor::getNewTimer("grout: contact (search, integration, assembly)"));
-    Vector x_gathered(gathered_map_);
-    x_gathered.doImport(x, *gather_, Tpetra::INSERT);
+    Vector u_base(base_map_), u_old_base(base_map_);
+    u_base.doImport(x, *base_import_, Tpetra::INSERT);
+    u_old_base.doImport(*x_old_, *base_import_, Tpetra::INSERT);
     active_size_ = active_changes_ = 0;
     contact_floor2_ = 0.0;
-    for (auto& c : interfaces_) evaluate_interface(*c, x_gathered, F);
+    for (auto& c : interfaces_) evaluate_interface(*c, x, u_base, u_old_base, F);
+    assemble_contact_forces(F);
+    const double local[3] = {double(active_size_), double(active_changes_), contact_floor2_};
+    Teuchos::reduceAll(*solid_.comm(), Teuchos::REDUCE_SUM, 3, local, contact_sums);
   }
+  active_size_ = int(contact_sums[0]);
+  active_changes_ = int(contact_sums[1]);
+  contact_floor2_ = contact_sums[2];
   {
     const double eps = std::numeric_limits<double>::epsilon();
     const double f_floor = eps * f_int_->norm2();  // collective
@@ -243,107 +273,251 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
   return std::isfinite(F.norm2());
 }
 
-// Contact contributions of one interface to F (owned rows) and to the Jacobian entries.
-// Every rank evaluates the whole interface (replicated) and keeps its own rows.
-void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered, Vector& F) {
-  const ContactSurface& s = c.surface;
+// The contact terms of the displacement rows: those of other ranks' rows are sent to their
+// owners; each owner sums the terms of a row in tag order, then adds the sum to F (one order
+// on any number of ranks). Also records the owners for jacobian().
+void MechanicsProblem::assemble_contact_forces(Vector& F) {
+  std::vector<GO> remote;
+  for (GO row : force_rows_)
+    if (!map_->isNodeGlobalElement(row)) remote.push_back(row);
+  std::sort(remote.begin(), remote.end());
+  remote.erase(std::unique(remote.begin(), remote.end()), remote.end());
+  std::vector<int> owners(remote.size(), -1);
+  map_->getRemoteIndexList(Teuchos::ArrayView<const GO>(remote), Teuchos::ArrayView<int>(owners));
+  remote_owner_.clear();
+  for (std::size_t k = 0; k < remote.size(); ++k) remote_owner_[remote[k]] = owners[k];
+
+  const int n_ranks = map_->getComm()->getSize();
+  std::vector<std::vector<long long>> send_ids(n_ranks);
+  std::vector<std::vector<double>> send_values(n_ranks);
+  struct Term {
+    GO row;
+    long long tag;
+    double value;
+  };
+  std::vector<Term> terms;
+  for (std::size_t t = 0; t < force_rows_.size(); ++t) {
+    if (map_->isNodeGlobalElement(force_rows_[t])) {
+      terms.push_back({force_rows_[t], force_tags_[t], force_values_[t]});
+      continue;
+    }
+    const int owner = remote_owner_.at(force_rows_[t]);
+    send_ids[owner].push_back(force_rows_[t]);
+    send_ids[owner].push_back(force_tags_[t]);
+    send_values[owner].push_back(force_values_[t]);
+  }
+  const std::vector<long long> ids = exchange_with_ranks(send_ids, raw_comm_);
+  const std::vector<double> values = exchange_with_ranks(send_values, raw_comm_);
+  for (std::size_t t = 0; t < values.size(); ++t)
+    terms.push_back({ids[2 * t], ids[2 * t + 1], values[t]});
+  std::sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) {
+    return a.row < b.row || (a.row == b.row && a.tag < b.tag);
+  });
+  auto Fv = F.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (std::size_t t = 0; t < terms.size();) {
+    const GO row = terms[t].row;
+    double sum = 0.0;
+    for (; t < terms.size() && terms[t].row == row; ++t) sum += terms[t].value;
+    Fv(map_->getLocalElement(row), 0) += sum;
+  }
+}
+
+// The master faces the slave faces of `c` can touch (parallel coarse search, on the current
+// configuration or the reference one), and the reference coordinates, displacements and
+// last converged displacements of every node of the local surface. u_base / u_old_base:
+// displacements on base_map_ (nullptr: zero).
+void MechanicsProblem::ghost_master_faces_of(Interface& c, const Vector* u_base,
+                                             const Vector* u_old_base) {
   const int dim = dim_;
-  const auto xg = x_gathered.getLocalViewHost(Tpetra::Access::ReadOnly);
-  const auto value_of = [&](GO gid) { return xg(gathered_map_->getLocalElement(gid), 0); };
-  std::vector<std::array<double, 3>> x(s.nodes.size(), {0.0, 0.0, 0.0});
-  for (std::size_t i = 0; i < s.nodes.size(); ++i)
-    for (int d = 0; d < dim; ++d)
-      x[i][d] = mesh_.coordinates[s.nodes[i] * dim + d] + value_of(s.nodes[i] * dim + d);
+  using HostView =
+      decltype(std::declval<const Vector&>().getLocalViewHost(Tpetra::Access::ReadOnly));
+  HostView ub, uob;
+  if (u_base) ub = u_base->getLocalViewHost(Tpetra::Access::ReadOnly);
+  if (u_old_base) uob = u_old_base->getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto node_values = [&](GlobalIndex n, double X[3], double u[3], double u_old[3]) {
+    for (int d = 0; d < 3; ++d) X[d] = u[d] = u_old[d] = 0.0;
+    for (int d = 0; d < dim; ++d) {
+      X[d] = mesh_.coordinates[n * dim + d];
+      if (!u_base) continue;
+      const LO lid = base_map_->getLocalElement(n * dim + d);
+      u[d] = ub(lid, 0);
+      u_old[d] = uob(lid, 0);
+    }
+  };
+  const auto search_coordinates = [&](const double X[3], const double u[3], double x[3]) {
+    for (int d = 0; d < 3; ++d) x[d] = c.current_geometry ? X[d] + u[d] : X[d];
+  };
+  constexpr int payload = 9;  // X, u, u_old per node
+  // Owned master faces, and the region of the evaluated slave faces.
+  FaceSet owned;
+  owned.dimension = dim;
+  owned.payload_size = payload;
+  for (std::size_t f = 0; f < c.owned_master.size(); ++f) {
+    double x[max_face_nodes][3], values[max_face_nodes * payload];
+    for (int a = 0; a < c.owned_master.num_nodes[f]; ++a) {
+      double* v = values + a * payload;
+      node_values(c.owned_master.nodes[f][a], v, v + 3, v + 6);
+      search_coordinates(v, v + 3, x[a]);
+    }
+    owned.add(c.owned_master.ids[f], c.owned_master.num_nodes[f], c.owned_master.nodes[f].data(), x,
+              values);
+  }
+  const SurfaceFaces& slave = c.surface.slave;
+  FaceSet slave_set;
+  slave_set.dimension = dim;
+  for (std::size_t f = 0; f < slave.size(); ++f) {
+    double x[max_face_nodes][3], X[3], u[3], u_old[3];
+    for (int a = 0; a < slave.num_nodes[f]; ++a) {
+      node_values(slave.nodes[f][a], X, u, u_old);
+      search_coordinates(X, u, x[a]);
+    }
+    slave_set.add(slave.ids[f], slave.num_nodes[f], slave.nodes[f].data(), x);
+  }
+  const FaceSet ghost = ghost_master_faces(
+      owned, search_region(slave_set, c.options.search_factor, c.surface.integrate),
+      c.options.search_factor, raw_comm_);
+
+  SurfaceFaces master;
+  master.ids = ghost.ids;
+  master.nodes = ghost.nodes;
+  master.num_nodes = ghost.num_nodes;
+  master.blocks.assign(ghost.size(), nullptr);
+  set_master_faces(c.surface, std::move(master));
+  const std::size_t n = c.surface.nodes.size();
+  c.X.assign(n, {0.0, 0.0, 0.0});
+  c.u.assign(n, {0.0, 0.0, 0.0});
+  c.u_old.assign(n, {0.0, 0.0, 0.0});
+  for (GlobalIndex node : c.surface.slave_nodes) {
+    const std::size_t i = c.position_of(node);
+    node_values(node, c.X[i].data(), c.u[i].data(), c.u_old[i].data());
+  }
+  for (std::size_t f = 0; f < ghost.size(); ++f) {
+    for (int a = 0; a < ghost.num_nodes[f]; ++a) {
+      const std::size_t i = c.position_of(ghost.nodes[f][a]);
+      const double* v = &ghost.payload[(f * max_face_nodes + a) * payload];
+      for (int d = 0; d < 3; ++d) c.X[i][d] = v[d], c.u[i][d] = v[3 + d], c.u_old[i][d] = v[6 + d];
+    }
+  }
+}
+
+// Contact contributions of one interface to F and the Jacobian entries, for the slave nodes
+// this rank owns: their multiplier rows (added to F here), their slave and master rows (the
+// master rows may belong to other ranks: terms for assemble_contact_forces).
+void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const Vector& u_base,
+                                          const Vector& u_old_base, Vector& F) {
+  const int dim = dim_;
+  ghost_master_faces_of(c, &u_base, &u_old_base);
+  const ContactSurface& s = c.surface;
+  const std::size_t n_nodes = s.nodes.size();
+  std::vector<std::array<double, 3>> positions(n_nodes, {0.0, 0.0, 0.0});
+  for (std::size_t i = 0; i < n_nodes; ++i)
+    for (int d = 0; d < dim; ++d) positions[i][d] = c.X[i][d] + c.u[i][d];
   const bool tied = c.input.type == ContactKind::tied;
   const ContactMortar mortar =
-      c.current_geometry ? evaluate_contact_mortar(s, x, c.options) : ContactMortar();
+      c.current_geometry ? evaluate_contact_mortar(s, positions, c.options) : ContactMortar();
   const ContactMortar& m = c.current_geometry ? mortar : c.reference;
-  c.positions = x;
-  for (std::size_t j = 0; j < m.frames.size(); ++j)
+  const int n_owned = int(c.owned.size());
+  for (int q = 0; q < n_owned; ++q)
     for (int k = 0; k < dim - 1; ++k)
-      for (int a = 0; a < 3; ++a) c.tangents[j][k][a] = m.frames[j].t[k][a];
+      for (int a = 0; a < 3; ++a) c.tangents[q][k][a] = m.frames[c.owned[q]].t[k][a];
 
+  const auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto Fv = F.getLocalViewHost(Tpetra::Access::ReadWrite);
-  const auto add_F = [&](GO row, double v) {
-    const LO lid = map_->getLocalElement(row);
-    if (lid != Teuchos::OrdinalTraits<LO>::invalid()) Fv(lid, 0) += v;
+  const auto add_F_ = [&](GO row, double v) {
+    if (row < num_u_) {  // a slave or master row: a term tagged by the slave node
+      force_rows_.push_back(row);
+      force_tags_.push_back(entry_tag_);
+      force_values_.push_back(v);
+    } else {  // an owned multiplier row, set once
+      Fv(map_->getLocalElement(row), 0) += v;
+    }
   };
-  const auto position = [&](GlobalIndex node, int d) {
-    return x[std::lower_bound(s.nodes.begin(), s.nodes.end(), node) - s.nodes.begin()][d];
+  const auto begin_node = [&](GlobalIndex node) {
+    entry_tag_ = GO(c.index) * GO(mesh_.num_nodes()) + node;
+    entry_seq_ = 0;
   };
-  double D_max = 0.0;
-  for (const auto& D : m.D) D_max = std::max(D_max, D.value);
+  const auto pos = [&](GlobalIndex node) { return c.position_of(node); };
+  const auto position = [&](GlobalIndex node, int d) { return positions[pos(node)][d]; };
+  const auto old_position = [&](GlobalIndex node, int d) {
+    const std::size_t i = pos(node);
+    return c.X[i][d] + c.u_old[i][d];
+  };
+  const auto m_range = [&](int j) {
+    return m.M.lower_bound({j, std::numeric_limits<GlobalIndex>::min()});
+  };
+  double D_max = 0.0, D_max_local = 0.0;
+  for (int j : c.owned) D_max_local = std::max(D_max_local, m.D[j].value);
+  Teuchos::reduceAll(*solid_.comm(), Teuchos::REDUCE_MAX, 1, &D_max_local, &D_max);
   const double D_tol = 1e-8 * D_max;
 
-  const int n_slave = int(s.slave_nodes.size());
-  for (int j = 0; j < n_slave; ++j)
-    for (int d = 0; d < dim; ++d) c.lambda[j][d] = value_of(c.lambda_gid(j, d));
+  for (int q = 0; q < n_owned; ++q)
+    for (int d = 0; d < dim; ++d) c.lambda[q][d] = xv(map_->getLocalElement(c.lambda_gid(q, d)), 0);
 
-  // Contact forces f¹_k = D_kk λ_k, f²_l = −Σ_j M_jl λ_j.
-  for (int j = 0; j < n_slave; ++j) {
+  // Contact forces f¹_k = D_kk λ_k, f²_l = −Σ_j M_jl λ_j (j owned).
+  for (int q = 0; q < n_owned; ++q) {
+    const int j = c.owned[q];
     const GlobalIndex node = s.slave_nodes[j];
+    begin_node(node);
     const MortarValue& D = m.D[j];
     for (int a = 0; a < dim; ++a) {
       const GO row = node * dim + a;
-      add_F(row, D.value * c.lambda[j][a]);
-      add_entry(row, c.lambda_gid(j, a), D.value);
-      for (const auto& [dof, dv] : D.gradient) add_entry(row, dof, c.lambda[j][a] * dv);
+      add_F_(row, D.value * c.lambda[q][a]);
+      add_entry(row, c.lambda_gid(q, a), D.value);
+      for (const auto& [dof, dv] : D.gradient) add_entry(row, dof, c.lambda[q][a] * dv);
     }
-  }
-  for (const auto& [key, M] : m.M) {
-    const auto [j, master] = key;
-    for (int a = 0; a < dim; ++a) {
-      const GO row = master * dim + a;
-      add_F(row, -M.value * c.lambda[j][a]);
-      add_entry(row, c.lambda_gid(j, a), -M.value);
-      for (const auto& [dof, dv] : M.gradient) add_entry(row, dof, -c.lambda[j][a] * dv);
+    for (auto it = m_range(j); it != m_range(j + 1); ++it) {
+      const GlobalIndex master = it->first.second;
+      const MortarValue& M = it->second;
+      for (int a = 0; a < dim; ++a) {
+        const GO row = master * dim + a;
+        add_F_(row, -M.value * c.lambda[q][a]);
+        add_entry(row, c.lambda_gid(q, a), -M.value);
+        for (const auto& [dof, dv] : M.gradient) add_entry(row, dof, -c.lambda[q][a] * dv);
+      }
     }
   }
 
-  // Multiplier rows.
-  auto m_begin = m.M.begin();
-  for (int j = 0; j < n_slave; ++j) {
+  // Multiplier rows of the owned slave nodes (q: owned index, j: index in s.slave_nodes).
+  for (int q = 0; q < n_owned; ++q) {
+    const int j = c.owned[q];
     const GlobalIndex node = s.slave_nodes[j];
+    begin_node(node);
     const double D = m.D[j].value;
-    auto m_end = m_begin;
-    while (m_end != m.M.end() && m_end->first.first == j) ++m_end;
-    c.previous_active[j] = c.active[j];
-    c.active[j] = 0;
-    c.pressure[j] = c.gap[j] = 0.0;
+    const auto m_begin = m_range(j), m_end = m_range(j + 1);
+    c.previous_active[q] = c.active[q];
+    c.active[q] = 0;
+    c.pressure[q] = c.gap[q] = 0.0;
     if (D <= D_tol) {  // no master facing this node: λ_j = 0
       for (int a = 0; a < dim; ++a) {
-        add_F(c.lambda_gid(j, a), c.lambda[j][a]);
-        add_entry(c.lambda_gid(j, a), c.lambda_gid(j, a), 1.0);
+        add_F_(c.lambda_gid(q, a), c.lambda[q][a]);
+        add_entry(c.lambda_gid(q, a), c.lambda_gid(q, a), 1.0);
       }
-      m_begin = m_end;
       continue;
     }
     // Round-off of node j's rows where they carry ĉ × (a gap or a slip): ε ĉ |X_j| each.
     const auto add_floor = [&] {
       double x_max = 0.0;
-      for (int a = 0; a < dim; ++a)
-        x_max = std::max(x_max, std::abs(mesh_.coordinates[node * dim + a]));
+      for (int a = 0; a < dim; ++a) x_max = std::max(x_max, std::abs(c.X[pos(node)][a]));
       const double row =
           std::numeric_limits<double>::epsilon() * std::max(c.c_hat, c.c_t_hat) * x_max;
       contact_floor2_ += dim * row * row;
     };
     if (tied) {  // ĉ (D u¹_j − Σ_l M_jl u²_l) / D = 0, per component
-      c.active[j] = 1;
+      c.active[q] = 1;
       add_floor();
       for (int a = 0; a < dim; ++a)  // reported only: λ_n = n·λ as for frictional contact
-        c.pressure[j] += m.frames[j].n[a] * c.lambda[j][a];
+        c.pressure[q] += m.frames[j].n[a] * c.lambda[q][a];
       for (int a = 0; a < dim; ++a) {
-        const GO row = c.lambda_gid(j, a);
-        double v = D * value_of(node * dim + a);
+        const GO row = c.lambda_gid(q, a);
+        double v = D * c.u[pos(node)][a];
         add_entry(row, node * dim + a, c.c_hat);
         for (auto it = m_begin; it != m_end; ++it) {
           const GlobalIndex l = it->first.second;
-          v -= it->second.value * value_of(l * dim + a);
+          v -= it->second.value * c.u[pos(l)][a];
           add_entry(row, l * dim + a, -c.c_hat * it->second.value / D);
         }
-        add_F(row, c.c_hat * v / D);
+        add_F_(row, c.c_hat * v / D);
       }
-      m_begin = m_end;
       continue;
     }
     // Normal contact: v = D x¹_j − Σ_l M_jl x²_l, g̃ = −n·v, g = g̃ / D.
@@ -355,11 +529,11 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
     double g_tilde = 0.0, lambda_n = 0.0;
     for (int a = 0; a < dim; ++a) {
       g_tilde -= fr.n[a] * v[a];
-      lambda_n += fr.n[a] * c.lambda[j][a];
+      lambda_n += fr.n[a] * c.lambda[q][a];
     }
     const double gap = g_tilde / D;
-    c.gap[j] = gap;
-    c.pressure[j] = lambda_n;
+    c.gap[q] = gap;
+    c.pressure[q] = lambda_n;
     // Active if λ_n − ĉ g > 0; a closed gap with no pressure yet (λ_n = g = 0, the usual
     // start) counts as active, within round-off of ĉ g, so that touching bodies are supported.
     // Until the first Newton update of a step, a node with no pressure and a gap below
@@ -369,14 +543,13 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
     // first update is a huge rigid motion). From the next iterate on only λ_n − ĉ g decides,
     // so the converged state satisfies the contact conditions exactly.
     const double augmented = lambda_n - c.c_hat * gap;
-    const bool near = step_start_ && lambda_n <= 0.0 && gap <= c.proximity[j];
+    const bool near = step_start_ && lambda_n <= 0.0 && gap <= c.proximity[q];
     if (augmented < -c.active_tolerance && !near) {  // inactive: λ_j = 0
       for (int a = 0; a < dim; ++a) {
-        add_F(c.lambda_gid(j, a), c.lambda[j][a]);
-        add_entry(c.lambda_gid(j, a), c.lambda_gid(j, a), 1.0);
+        add_F_(c.lambda_gid(q, a), c.lambda[q][a]);
+        add_entry(c.lambda_gid(q, a), c.lambda_gid(q, a), 1.0);
       }
-      c.slip_increment[j] = {0.0, 0.0, 0.0};
-      m_begin = m_end;
+      c.slip_increment[q] = {0.0, 0.0, 0.0};
       continue;
     }
     add_floor();
@@ -407,8 +580,8 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
       for (const auto& [dof, value] : g) add_entry(row, dof, scale * value);
     };
     // Normal row: ĉ g = 0.
-    const GO row = c.lambda_gid(j, 0);
-    add_F(row, c.c_hat * gap);
+    const GO row = c.lambda_gid(q, 0);
+    add_F_(row, c.c_hat * gap);
     emit(row, dg, c.c_hat);
 
     // Tangential multipliers λ_τk = τ_k·λ and their gradients (λ dofs and dτ_k).
@@ -416,20 +589,19 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
     SparseGradient dlambda_t[2];
     for (int k = 0; k < dim - 1; ++k) {
       for (int a = 0; a < dim; ++a) {
-        lambda_t[k] += fr.t[k][a] * c.lambda[j][a];
-        dlambda_t[k].emplace_back(c.lambda_gid(j, a), fr.t[k][a]);
+        lambda_t[k] += fr.t[k][a] * c.lambda[q][a];
+        dlambda_t[k].emplace_back(c.lambda_gid(q, a), fr.t[k][a]);
         for (const auto& [dof, dt] : fr.dt[k][a])
-          dlambda_t[k].emplace_back(dof, c.lambda[j][a] * dt);
+          dlambda_t[k].emplace_back(dof, c.lambda[q][a] * dt);
       }
       compress_gradient(dlambda_t[k]);
     }
     if (c.input.type == ContactKind::frictionless) {  // τ_k·λ = 0
-      c.active[j] = 2;
+      c.active[q] = 2;
       for (int k = 0; k < dim - 1; ++k) {
-        add_F(c.lambda_gid(j, k + 1), lambda_t[k]);
-        emit(c.lambda_gid(j, k + 1), dlambda_t[k], 1.0);
+        add_F_(c.lambda_gid(q, k + 1), lambda_t[k]);
+        emit(c.lambda_gid(q, k + 1), dlambda_t[k], 1.0);
       }
-      m_begin = m_end;
       continue;
     }
 
@@ -439,11 +611,11 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
     //   stick (|ξ| < μ s):  c_t ū = 0;
     //   slip:               λ_τ − μ s ξ/|ξ| = 0   (the NCP divided by |ξ| > 0).
     double w[3] = {0.0, 0.0, 0.0};
-    for (int a = 0; a < dim; ++a) w[a] = D * (position(node, a) - c.old_position(node, a));
+    for (int a = 0; a < dim; ++a) w[a] = D * (position(node, a) - old_position(node, a));
     for (auto it = m_begin; it != m_end; ++it)
       for (int a = 0; a < dim; ++a)
-        w[a] -= it->second.value *
-                (position(it->first.second, a) - c.old_position(it->first.second, a));
+        w[a] -=
+            it->second.value * (position(it->first.second, a) - old_position(it->first.second, a));
     double slip[2] = {0.0, 0.0}, xi[2] = {0.0, 0.0}, xi_norm = 0.0;
     SparseGradient dslip[2];
     for (int k = 0; k < dim - 1; ++k) {
@@ -455,14 +627,14 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
       }
       double t_dx = 0.0;  // τ_k·Δx_j
       for (int a = 0; a < dim; ++a)
-        t_dx += fr.t[k][a] * (position(node, a) - c.old_position(node, a));
+        t_dx += fr.t[k][a] * (position(node, a) - old_position(node, a));
       for (const auto& [dof, dD] : m.D[j].gradient)
         dslip[k].emplace_back(dof, r * (t_dx - slip[k]) * dD);
       for (auto it = m_begin; it != m_end; ++it) {
         const GlobalIndex l = it->first.second;
         double t_dxl = 0.0;
         for (int a = 0; a < dim; ++a) {
-          t_dxl += fr.t[k][a] * (position(l, a) - c.old_position(l, a));
+          t_dxl += fr.t[k][a] * (position(l, a) - old_position(l, a));
           dslip[k].emplace_back(l * dim + a, -r * fr.t[k][a] * it->second.value);
         }
         for (const auto& [dof, dM] : it->second.gradient)
@@ -473,32 +645,32 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
       xi_norm += xi[k] * xi[k];
     }
     xi_norm = std::sqrt(xi_norm);
-    for (int k = 0; k < dim - 1; ++k) c.slip_increment[j][k] = slip[k];
+    for (int k = 0; k < dim - 1; ++k) c.slip_increment[q][k] = slip[k];
     const double mu = c.input.friction_coefficient;
     // Stick includes |ξ| = μ s: at the start of a step (λ = 0, no slip) every node starts
     // stuck, the usual initial guess; starting in slip leaves a body held by friction alone
     // without tangential stiffness (a singular Jacobian). μ = 0 always slips (frictionless).
     if (mu > 0.0 && xi_norm <= mu * (augmented + c.active_tolerance)) {  // stick
-      c.active[j] = 1;
+      c.active[q] = 1;
       for (int k = 0; k < dim - 1; ++k) {
-        add_F(c.lambda_gid(j, k + 1), c.c_t_hat * slip[k]);
-        emit(c.lambda_gid(j, k + 1), dslip[k], c.c_t_hat);
+        add_F_(c.lambda_gid(q, k + 1), c.c_t_hat * slip[k]);
+        emit(c.lambda_gid(q, k + 1), dslip[k], c.c_t_hat);
       }
     } else {  // slip: λ_τ − μ s ξ̂, d = dλ_τ − μ ξ̂ ds − μ s (I − ξ̂ξ̂ᵀ)/|ξ| dξ
-      c.active[j] = 2;
+      c.active[q] = 2;
       SparseGradient ds = dg;  // ds = dλ_n − ĉ dg
       for (auto& [dof, value] : ds) value *= -c.c_hat;
       for (int a = 0; a < dim; ++a) {
-        ds.emplace_back(c.lambda_gid(j, a), fr.n[a]);
-        for (const auto& [dof, dn] : fr.dn[a]) ds.emplace_back(dof, c.lambda[j][a] * dn);
+        ds.emplace_back(c.lambda_gid(q, a), fr.n[a]);
+        for (const auto& [dof, dn] : fr.dn[a]) ds.emplace_back(dof, c.lambda[q][a] * dn);
       }
       compress_gradient(ds);
       double xi_hat[2] = {0.0, 0.0};
       if (xi_norm > 0.0)
         for (int k = 0; k < dim - 1; ++k) xi_hat[k] = xi[k] / xi_norm;
       for (int k = 0; k < dim - 1; ++k) {
-        const GO trow = c.lambda_gid(j, k + 1);
-        add_F(trow, lambda_t[k] - mu * augmented * xi_hat[k]);
+        const GO trow = c.lambda_gid(q, k + 1);
+        add_F_(trow, lambda_t[k] - mu * augmented * xi_hat[k]);
         emit(trow, dlambda_t[k], 1.0);
         emit(trow, ds, -mu * xi_hat[k]);
         if (xi_norm > 0.0 && dim == 3) {  // the direction's derivative (none in 2D)
@@ -510,40 +682,71 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x_gathered
         }
       }
     }
-    m_begin = m_end;
   }
-  for (int j = 0; j < n_slave; ++j) {
-    active_size_ += c.active[j] != 0;
-    active_changes_ += c.active[j] != c.previous_active[j];
+  for (int q = 0; q < n_owned; ++q) {
+    active_size_ += c.active[q] != 0;
+    active_changes_ += c.active[q] != c.previous_active[q];
   }
 }
 
 bool MechanicsProblem::jacobian(const Vector&, Teuchos::RCP<Matrix>& J) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: jacobian (u, lambda)"));
+  // Contact triplets: this rank's rows, then those other ranks computed for its rows (master
+  // rows), in rank order.
+  struct Entry {
+    GO row, col;
+    long long key;
+    double value;
+  };
+  std::vector<Entry> entries;
+  if (!interfaces_.empty()) {
+    const int n_ranks = map_->getComm()->getSize();
+    std::vector<std::vector<long long>> send_ids(n_ranks);
+    std::vector<std::vector<double>> send_values(n_ranks);
+    for (std::size_t e = 0; e < entry_rows_.size(); ++e) {
+      if (map_->isNodeGlobalElement(entry_rows_[e])) {
+        entries.push_back({entry_rows_[e], entry_cols_[e], entry_keys_[e], entry_values_[e]});
+        continue;
+      }
+      const int owner = remote_owner_.at(entry_rows_[e]);
+      send_ids[owner].insert(send_ids[owner].end(),
+                             {entry_rows_[e], entry_cols_[e], entry_keys_[e]});
+      send_values[owner].push_back(entry_values_[e]);
+    }
+    const std::vector<long long> ids = exchange_with_ranks(send_ids, raw_comm_);
+    const std::vector<double> received = exchange_with_ranks(send_values, raw_comm_);
+    for (std::size_t e = 0; e < received.size(); ++e)
+      entries.push_back({ids[3 * e], ids[3 * e + 1], ids[3 * e + 2], received[e]});
+    // Each row's entries in (slave node, emission) order: duplicates add up in one order.
+    std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+      return a.row < b.row || (a.row == b.row && a.key < b.key);
+    });
+  }
+
   const LO n_rows = LO(map_->getNodeNumElements());
   std::vector<std::size_t> counts(n_rows, 0);
   const auto& K_row_map = *K_solid_->getRowMap();
   for (LO i = 0; i < num_owned_u_; ++i) counts[i] = K_solid_->getNumEntriesInLocalRow(i);
-  for (GO row : entry_rows_) ++counts[map_->getLocalElement(row)];
+  for (const Entry& e : entries) ++counts[map_->getLocalElement(e.row)];
   for (LO i = num_owned_u_; i < n_rows; ++i) ++counts[i];  // the λ diagonal below
   J = Teuchos::rcp(new Matrix(map_, Teuchos::ArrayView<const std::size_t>(counts)));
 
   const auto& col_map = *K_solid_->getColMap();
   const auto local = K_solid_->getLocalMatrixHost();
-  std::vector<GO> cols;
-  std::vector<double> vals;
+  std::vector<GO> row_cols;
+  std::vector<double> row_vals;
   for (LO i = 0; i < num_owned_u_; ++i) {
-    cols.clear(), vals.clear();
+    row_cols.clear(), row_vals.clear();
     for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p) {
-      cols.push_back(col_map.getGlobalElement(local.graph.entries(p)));
-      vals.push_back(local.values(p));
+      row_cols.push_back(col_map.getGlobalElement(local.graph.entries(p)));
+      row_vals.push_back(local.values(p));
     }
-    J->insertGlobalValues(K_row_map.getGlobalElement(i), Teuchos::ArrayView<const GO>(cols),
-                          Teuchos::ArrayView<const double>(vals));
+    J->insertGlobalValues(K_row_map.getGlobalElement(i), Teuchos::ArrayView<const GO>(row_cols),
+                          Teuchos::ArrayView<const double>(row_vals));
   }
-  for (std::size_t e = 0; e < entry_rows_.size(); ++e)
-    J->insertGlobalValues(entry_rows_[e], Teuchos::ArrayView<const GO>(&entry_cols_[e], 1),
-                          Teuchos::ArrayView<const double>(&entry_values_[e], 1));
+  for (const Entry& e : entries)
+    J->insertGlobalValues(e.row, Teuchos::ArrayView<const GO>(&e.col, 1),
+                          Teuchos::ArrayView<const double>(&e.value, 1));
   for (LO i = num_owned_u_; i < n_rows; ++i) {  // keep a diagonal entry in every λ row
     const GO g = map_->getGlobalElement(i);
     const double zero = 0.0;
@@ -566,54 +769,78 @@ bool MechanicsProblem::jacobian(const Vector&, Teuchos::RCP<Matrix>& J) {
 }
 
 std::vector<std::pair<GO, GO>> MechanicsProblem::multiplier_pairing() const {
-  std::vector<std::pair<GO, GO>> pairs;
+  std::vector<long long> mine;
   for (const auto& c : interfaces_)
-    for (std::size_t j = 0; j < c->surface.slave_nodes.size(); ++j)
-      for (int d = 0; d < dim_; ++d)
-        pairs.emplace_back(c->lambda_gid(int(j), d), GO(c->surface.slave_nodes[j]) * dim_ + d);
+    for (std::size_t q = 0; q < c->owned.size(); ++q)
+      for (int d = 0; d < dim_; ++d) {
+        mine.push_back(c->lambda_gid(int(q), d));
+        mine.push_back(GO(c->surface.slave_nodes[c->owned[q]]) * dim_ + d);
+      }
+  const int n_ranks = map_->getComm()->getSize();
+  const std::vector<long long> all =
+      exchange_with_ranks(std::vector<std::vector<long long>>(n_ranks, mine), raw_comm_);
+  std::vector<std::pair<GO, GO>> pairs;
+  for (std::size_t k = 0; k + 1 < all.size(); k += 2) pairs.emplace_back(all[k], all[k + 1]);
+  std::sort(pairs.begin(), pairs.end());
   return pairs;
 }
 
 std::vector<GlobalIndex> MechanicsProblem::slave_nodes() const {
   std::vector<GlobalIndex> nodes;
-  for (const auto& c : interfaces_)
-    nodes.insert(nodes.end(), c->surface.slave_nodes.begin(), c->surface.slave_nodes.end());
+  for (const auto& c : interfaces_) {
+    const std::vector<GlobalIndex> set = side_set_nodes(mesh_, c->input.slave);
+    nodes.insert(nodes.end(), set.begin(), set.end());
+  }
   return nodes;
 }
 
 void MechanicsProblem::commit_step() {
   for (auto& c : interfaces_) {
-    for (std::size_t j = 0; j < c->slip_accumulated.size(); ++j)
+    for (std::size_t q = 0; q < c->slip_accumulated.size(); ++q)
       for (int k = 0; k < dim_ - 1; ++k)
         for (int a = 0; a < dim_; ++a)
-          c->slip_accumulated[j][a] += c->slip_increment[j][k] * c->tangents[j][k][a];
+          c->slip_accumulated[q][a] += c->slip_increment[q][k] * c->tangents[q][k][a];
     for (auto& increment : c->slip_increment) increment = {0.0, 0.0, 0.0};
-    c->old_positions = c->positions;
   }
+  x_old_->assign(*x_last_);
 }
 
 ContactFields MechanicsProblem::contact_fields() const {
   ContactFields out;
   const std::size_t n = mesh_.num_nodes();
-  out.pressure.assign(n, 0.0);
-  out.gap.assign(n, 0.0);
-  out.status.assign(n, 0.0);
-  out.lm.assign(dim_, std::vector<double>(n, 0.0));
-  out.slip.assign(dim_, std::vector<double>(n, 0.0));
+  // Rows: pressure, gap, status, λ (dim), slip (dim); each node set by its owner only.
+  const std::size_t n_fields = 3 + 2 * std::size_t(dim_);
+  std::vector<double> local(n_fields * n, 0.0), global(local.size(), 0.0);
+  int active = 0;
   for (const auto& c : interfaces_) {
-    for (std::size_t j = 0; j < c->surface.slave_nodes.size(); ++j) {
-      const GlobalIndex node = c->surface.slave_nodes[j];
-      out.pressure[node] = c->pressure[j];
-      out.gap[node] = c->gap[j];
-      out.status[node] = c->active[j];
+    for (std::size_t q = 0; q < c->owned.size(); ++q) {
+      const GlobalIndex node = c->surface.slave_nodes[c->owned[q]];
+      local[0 * n + node] = c->pressure[q];
+      local[1 * n + node] = c->gap[q];
+      local[2 * n + node] = c->active[q];
       for (int d = 0; d < dim_; ++d) {
-        out.lm[d][node] = c->lambda[j][d];
-        out.slip[d][node] = c->slip_accumulated[j][d];
+        local[(3 + d) * n + node] = c->lambda[q][d];
+        double slip = c->slip_accumulated[q][d];
         for (int k = 0; k < dim_ - 1; ++k)  // this step's increment, not yet committed
-          out.slip[d][node] += c->slip_increment[j][k] * c->tangents[j][k][d];
+          slip += c->slip_increment[q][k] * c->tangents[q][k][d];
+        local[(3 + dim_ + d) * n + node] = slip;
       }
-      out.active_nodes += c->active[j] != 0;
+      active += c->active[q] != 0;
     }
+  }
+  if (interfaces_.empty()) return out;
+  const auto& comm = *map_->getComm();
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, int(local.size()), local.data(), global.data());
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 1, &active, &out.active_nodes);
+  const auto field = [&](std::size_t i) {
+    return std::vector<double>(global.begin() + i * n, global.begin() + (i + 1) * n);
+  };
+  out.pressure = field(0);
+  out.gap = field(1);
+  out.status = field(2);
+  for (int d = 0; d < dim_; ++d) {
+    out.lm.push_back(field(3 + d));
+    out.slip.push_back(field(3 + dim_ + d));
   }
   return out;
 }

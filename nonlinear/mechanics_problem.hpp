@@ -16,7 +16,19 @@
 // ĉ = E/h (harmonic mean of the two bodies' Young's moduli over the mean slave face size)
 // unless the input sets c_n; the solution does not depend on it. Prescribed dofs keep their
 // values: F = 0 there and their rows/columns of J are eliminated.
+//
+// Distributed contact: a rank owns the multipliers of the slave nodes it owns and evaluates
+// only the slave faces around them, so that D_jj, M_jl and the frames of its slave nodes are
+// complete; a parallel coarse search (assembly/contact_distribution.hpp) brings it the master
+// faces those can touch. The master-row terms −M_jl λ_j and their Jacobian triplets go to the
+// rows' owners, and the active-set counts and the round-off floor are summed over the ranks.
+// Pair sums run in face-id order and every contact term carries its slave node, so that the
+// owner adds the terms of a row in one order (by interface, slave node, emission): D, M, the
+// frames, F and J are then bitwise the same on any number of ranks.
 
+#include <mpi.h>
+
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -26,7 +38,8 @@
 
 namespace grout {
 
-/// Nodal contact results of the last residual evaluation (global node arrays, every rank).
+/// Nodal contact results of the last residual evaluation (global node arrays, every rank;
+/// gathered from the slave nodes' owners).
 struct ContactFields {
   std::vector<double> pressure;           ///< λ_n = n·λ, > 0 in compression
   std::vector<double> gap;                ///< g̃_j / D_jj
@@ -70,19 +83,22 @@ class MechanicsProblem : public NonlinearProblem {
   const std::vector<double>& prescribed() const { return prescribed_; }
   /// Global displacement dofs (the u part of the map: GIDs 0 .. num_u − 1, owned first locally).
   GO num_displacement_dofs() const { return num_u_; }
-  /// Contact results at the last residual evaluation (empty without contact).
+  /// Contact results at the last residual evaluation (empty without contact). Collective.
   ContactFields contact_fields() const;
   bool has_contact() const { return !interfaces_.empty(); }
-  /// (λ dof, slave displacement dof) pairs of every interface, for the condensed solve
-  /// (LinearSolver::set_multiplier_pairing).
+  /// (λ dof, slave displacement dof) pairs of every interface, all ranks' pairs in λ order,
+  /// for the condensed solve (LinearSolver::set_multiplier_pairing). Collective.
   std::vector<std::pair<GO, GO>> multiplier_pairing() const;
   /// Slave nodes of every interface (global node indices, each interface's sorted).
   std::vector<GlobalIndex> slave_nodes() const;
 
  private:
   struct Interface;
-  void evaluate_interface(Interface& c, const Vector& x_gathered, Vector& F);
+  void ghost_master_faces_of(Interface& c, const Vector* u_base, const Vector* u_old_base);
+  void evaluate_interface(Interface& c, const Vector& x, const Vector& u_base,
+                          const Vector& u_old_base, Vector& F);
   void add_entry(GO row, GO col, double value);
+  void assemble_contact_forces(Vector& F);
 
   const SolidProblem& solid_;
   const Mesh& mesh_;
@@ -92,12 +108,25 @@ class MechanicsProblem : public NonlinearProblem {
   int num_owned_u_ = 0;
   Teuchos::RCP<const Map> map_;
   std::vector<std::unique_ptr<Interface>> interfaces_;
-  Teuchos::RCP<const Map> gathered_map_;  ///< every dof any interface needs, on every rank
-  Teuchos::RCP<Import> gather_;
+  MPI_Comm raw_comm_ = MPI_COMM_SELF;
+  /// Displacement dofs of the nodes of this rank's slave faces and owned master faces.
+  Teuchos::RCP<const Map> base_map_;
+  Teuchos::RCP<Import> base_import_;
+  Teuchos::RCP<Vector> x_last_;  ///< x of the last residual evaluation
+  Teuchos::RCP<Vector> x_old_;   ///< x of the last converged step (slip increments)
+  // Contact terms of the displacement rows (row, tag, value), tag = interface and slave node;
+  // summed by the row's owner in tag order (assemble_contact_forces).
+  std::vector<GO> force_rows_;
+  std::vector<long long> force_tags_;
+  std::vector<double> force_values_;
+  std::map<GO, int> remote_owner_;  ///< owner of each row of another rank in the terms
+  long long entry_tag_ = 0;         ///< tag of the slave node being evaluated
+  long long entry_seq_ = 0;         ///< entries emitted for it so far
   Teuchos::RCP<Vector> u_, f_int_, f_ext_, reaction_;
   Teuchos::RCP<Matrix> K_solid_;
   std::vector<double> prescribed_;  ///< per global u dof, NaN where free
   std::vector<GO> entry_rows_, entry_cols_;
+  std::vector<long long> entry_keys_;  ///< tag · 2^24 + emission index: the insertion order
   std::vector<double> entry_values_;
   int active_size_ = 0, active_changes_ = 0;
   double residual_floor_ = 0.0;

@@ -23,9 +23,9 @@
 //   timer_ns_per_slave    (residual only) the "grout: contact (search, integration,
 //                         assembly)" Teuchos timer inside residual, i.e. the contact part
 //                         measured directly (what `grout --timers` reports).
-// MPI: the solid is distributed; every rank evaluates the whole interface (replicated by
-// design) and keeps the rows it owns, so the residual's contact part does not get faster
-// with more ranks. Results and commands: docs/performance.md, "Contact assembly".
+// MPI: the solid and the contact are distributed (each rank evaluates the slave faces around
+// the slave nodes it owns; MechanicsProblem). Results and commands: docs/performance.md,
+// "Contact assembly" and "Distributed contact".
 
 #include <Teuchos_TimeMonitor.hpp>
 #include <chrono>

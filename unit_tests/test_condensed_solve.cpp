@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <Tpetra_Core.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -240,11 +241,15 @@ void mechanics_system(MechanicsCase& mc, int dim, ContactKind type, double mu, i
   mc.sys.b = Teuchos::rcp(new Vector(problem.map()));
   mc.sys.b->update(-1.0, F, 0.0);
   mc.sys.dim = dim;
-  // The pairing the lead wires into MechanicsProblem: λ(j, c) ↔ slave node j's dof c.
-  const ContactSurface s = build_contact_surface(mc.mesh, mc.input, mc.input.contact[0]);
-  for (std::size_t j = 0; j < s.slave_nodes.size(); ++j)
-    for (int c = 0; c < dim; ++c)
-      mc.sys.pairing.emplace_back(n_u + GO(j) * dim + c, GO(s.slave_nodes[j]) * dim + c);
+  // The pairing MechanicsProblem gives the solver: λ(j, c) ↔ slave node j's dof c, one pair
+  // per slave node and component.
+  mc.sys.pairing = problem.multiplier_pairing();
+  const std::vector<GlobalIndex> slave = problem.slave_nodes();
+  EXPECT_EQ(mc.sys.pairing.size(), slave.size() * std::size_t(dim));
+  for (const auto& [lambda, u] : mc.sys.pairing) {
+    EXPECT_GE(lambda, n_u);
+    EXPECT_TRUE(std::binary_search(slave.begin(), slave.end(), u / dim));
+  }
 }
 
 // ---------------------------------------------------------------------------------------
