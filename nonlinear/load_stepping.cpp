@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "nonlinear/step_size.hpp"
+
 namespace grout {
 
 void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const NewtonOptions& newton,
@@ -29,7 +31,7 @@ void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const New
         throw ConvergenceError(what.str());
       }
       ++cuts;
-      dt /= 2.0;
+      dt = step_size_after_failure(dt);
       if (root) {
         std::printf("  step %d t = %g: %s; cutting the step to dt = %g (%d/%d)\n", step + 1, t_next,
                     report.reason.c_str(), dt, cuts, stepping.max_cuts);
@@ -38,6 +40,7 @@ void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const New
       continue;
     }
     x.assign(trial);
+    const double converged_dt = t_next - t;
     t = t_next;
     ++step;
     problem.residual(x, F);  // reactions and contact results at the converged state
@@ -45,10 +48,12 @@ void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const New
     ConvergedStep converged;
     converged.step = step;
     converged.time = t;
+    converged.step_size = converged_dt;
     converged.newton = &report;
     converged.state = &x;
     on_step(converged);
-    if (cuts > 0 && report.iterations < 5) dt = std::min(2.0 * dt, nominal);  // grow back
+    if (stepping.step_size.adaptive || cuts > 0)
+      dt = step_size_after_success(dt, nominal, report.iterations, stepping.step_size);
   }
 }
 

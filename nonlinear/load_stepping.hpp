@@ -5,19 +5,22 @@
 
 #include "nonlinear/mechanics_problem.hpp"
 #include "nonlinear/newton.hpp"
+#include "nonlinear/step_size.hpp"
 
 namespace grout {
 
 struct SteppingOptions {
   double end_time = 1.0;
   int steps = 1;
-  int max_cuts = 6;  ///< halvings of the step size before giving up
+  int max_cuts = 6;           ///< halvings of the step size before giving up
+  StepSizeOptions step_size;  ///< fixed or adaptive increments (nonlinear/step_size.hpp)
 };
 
 /// What a converged step hands to the output.
 struct ConvergedStep {
   int step = 0;
   double time = 0.0;
+  double step_size = 0.0;  ///< the increment that reached `time`
   const NewtonReport* newton = nullptr;
   const Vector* state = nullptr;  ///< (u, λ)
 };
@@ -28,8 +31,9 @@ class ConvergenceError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Steps from t = 0 to end_time in `steps` equal increments. A step whose Newton solve fails
-/// is retried with half the increment, up to max_cuts times; then ConvergenceError. Every
+/// Steps from t = 0 to end_time in `steps` equal increments (or, adaptive, starting with
+/// end_time / steps and growing after easy steps). A step whose Newton solve fails is retried
+/// with half the increment, up to max_cuts times; then ConvergenceError. Every
 /// converged step goes to `on_step` at once (the caller writes and flushes it).
 void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const NewtonOptions& newton,
                       const SteppingOptions& stepping,
