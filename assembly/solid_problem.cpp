@@ -6,6 +6,8 @@
 #include <numeric>
 #include <unordered_map>
 
+#include <Teuchos_CommHelpers.hpp>
+
 #include "io/errors.hpp"
 #include "kernels/surface_load.hpp"
 
@@ -119,6 +121,9 @@ void SolidProblem::build_blocks(const Partition& partition) {
         elastic_constants(material.youngs_modulus, material.poissons_ratio, dim_, plane_stress);
     lb.poissons_ratio = material.poissons_ratio;
     lb.density = material.density;
+    lb.finite_strain = input_.model.strain == StrainKind::finite;
+    lb.law = material.law == MaterialLaw::neo_hookean ? HyperelasticLaw::neo_hookean
+                                                      : HyperelasticLaw::saint_venant_kirchhoff;
     lb.nodes = Kokkos::View<int**>("grout::block_nodes", local.size(), npe);
     lb.global = Kokkos::View<GlobalIndex*>("grout::block_elements", local.size());
     lb.owned = Kokkos::View<bool*>("grout::block_owned", local.size());
@@ -213,7 +218,7 @@ void SolidProblem::import_to_column(const Vector& u, Vector& u_column) const {
   u_column.doImport(u, *importer_, Tpetra::INSERT);
 }
 
-void SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
+bool SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
   Vector u_column(column_map_);
   u_column.doImport(u, *importer_, Tpetra::INSERT);
   const auto u_view =
@@ -233,6 +238,8 @@ void SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
   const int dim = dim_;
   const int n_owned = num_owned_nodes_;
   const auto X_all = column_coordinates_;
+  bool any_collapsed = false;
+  round_off2_ = 0.0;
 
   for (const auto& block : blocks_) {
     const auto nodes = block.nodes;
@@ -240,7 +247,11 @@ void SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
     const Topology topology = block.topology;
     const int npe = block.nodes_per_element;
     const ElasticConstants constants = block.constants;
+    const bool finite_strain = block.finite_strain;
+    const HyperelasticLaw law = block.law;
     GlobalIndex first_inverted = std::numeric_limits<GlobalIndex>::max();
+    const Kokkos::View<int, Kokkos::HostSpace> collapsed("grout::collapsed_elements");
+    const Kokkos::View<double, Kokkos::HostSpace> round_off2("grout::solid_round_off");
     Kokkos::parallel_reduce(
         "grout::assemble_solid",
         Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, nodes.extent(0)),
@@ -255,8 +266,16 @@ void SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
               ue[a * dim + d] = u_view(k * dim + d);
             }
           }
-          const ElementStatus status = linear_elastic_element<double>(
-              topology, dim, X, ue, constants, fe, with_tangent ? Ke : nullptr);
+          double* const Ke_or_null = with_tangent ? Ke : nullptr;
+          const ElementStatus status =
+              finite_strain
+                  ? total_lagrangian_force_and_tangent(topology, dim, X, ue, law, constants, fe,
+                                                       Ke_or_null)
+                  : linear_elastic_element<double>(topology, dim, X, ue, constants, fe, Ke_or_null);
+          if (status == ElementStatus::collapsed) {
+            Kokkos::atomic_increment(&collapsed());
+            return;
+          }
           if (status != ElementStatus::ok) {
             bad = global(e) < bad ? global(e) : bad;
             return;
@@ -271,6 +290,16 @@ void SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
             if (k >= n_owned) continue;
             for (int d = 0; d < dim; ++d) Kokkos::atomic_add(&f_view(k * dim + d), fe[a * dim + d]);
             if (!with_tangent) continue;
+            if (finite_strain) {
+              // Round-off of f_int under finite strain: F = I + grad u carries eps |u| |grad N|,
+              // so each row is known to eps sum_k |K_rk| |u_k| (residual_floor).
+              for (int d = 0; d < dim; ++d) {
+                double row = 0.0;
+                for (int m = 0; m < n; ++m) row += std::abs(Ke[(a * dim + d) * n + m] * ue[m]);
+                row *= std::numeric_limits<double>::epsilon();
+                Kokkos::atomic_add(&round_off2(), row * row);
+              }
+            }
             const auto first = row_map(k * dim);
             int offset[max_element_nodes];
             for (int b = 0; b < npe; ++b) {
@@ -299,8 +328,17 @@ void SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
       throw InputError("mesh '" + mesh_.file + "': element " + std::to_string(first_inverted + 1) +
                        " of block '" + block.name + "' is inverted (det J <= 0)");
     }
+    any_collapsed |= collapsed() > 0;
+    round_off2_ += round_off2();
   }
   if (K) K->fillComplete(owned_map_, owned_map_);
+  return !any_collapsed;
+}
+
+double SolidProblem::round_off_estimate() const {
+  double sum = 0.0;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, round_off2_, Teuchos::outArg(sum));
+  return std::sqrt(sum);
 }
 
 void SolidProblem::external_force(double t, Vector& f_ext) const {
@@ -366,8 +404,13 @@ void SolidProblem::element_stresses(const Vector& u,
           ue[a * dim_ + d] = u_view(block.nodes(e, a) * dim_ + d);
         }
       }
-      linear_elastic_stress(block.topology, dim_, X, ue, block.constants, plane_strain,
-                            block.poissons_ratio, s);
+      if (block.finite_strain) {
+        // Elements collapsed at a converged state cannot occur (assemble refuses them).
+        total_lagrangian_cauchy_stress(block.topology, dim_, X, ue, block.law, block.constants, s);
+      } else {
+        linear_elastic_stress(block.topology, dim_, X, ue, block.constants, plane_strain,
+                              block.poissons_ratio, s);
+      }
       for (int c = 0; c < n_components; ++c)
         stress[dim_ == 2 ? output_index_2d[c] : c][block.global(e)] = s[c];
     }

@@ -17,6 +17,7 @@
 #include "assembly/tpetra_types.hpp"
 #include "io/input.hpp"
 #include "kernels/linear_elastic.hpp"
+#include "kernels/total_lagrangian.hpp"
 
 namespace grout {
 
@@ -28,6 +29,8 @@ struct LocalBlock {
   ElasticConstants constants{};
   double poissons_ratio = 0.0;
   double density = 0.0;
+  bool finite_strain = false;  ///< total-Lagrangian element with `law` (else small strain)
+  HyperelasticLaw law = HyperelasticLaw::saint_venant_kirchhoff;
   Kokkos::View<int**> nodes;          ///< [element][a] column-map node index
   Kokkos::View<GlobalIndex*> global;  ///< global element index
   Kokkos::View<bool*> owned;          ///< element belongs to this rank's partition
@@ -57,9 +60,15 @@ class SolidProblem {
   /// u on the column map (owned values plus ghosts).
   void import_to_column(const Vector& u, Vector& u_column) const;
 
-  /// f_int(u) = ∫ Bᵀσ(u) dV on the owned rows and, if K is non-null, the tangent K (on the
-  /// fixed graph, fill-completed on return). Throws InputError on an inverted element.
-  void assemble(const Vector& u, Vector& f_int, Matrix* K) const;
+  /// f_int(u) = ∫ Bᵀσ(u) dV (small strain) or ∫ P(F) ∇N dV (strain: finite, total
+  /// Lagrangian) on the owned rows and, if K is non-null, the tangent K (on the fixed graph,
+  /// fill-completed on return). Throws InputError on an element inverted in the mesh.
+  /// Returns false (on this rank) if u collapses an element (det F <= 0, finite strain):
+  /// the iterate is inadmissible and the caller backs off.
+  bool assemble(const Vector& u, Vector& f_int, Matrix* K) const;
+  /// Round-off estimate of ‖f_int‖₂ from the last assemble() with a tangent under strain:
+  /// finite (sqrt of Σ_rows (ε Σ_k |K_rk u_k|)²), 0 under small strain. Collective.
+  double round_off_estimate() const;
 
   /// Consistent nodal forces of the pressure/traction loads at time t (owned rows).
   void external_force(double t, Vector& f_ext) const;
@@ -67,8 +76,10 @@ class SolidProblem {
   /// Prescribed displacement per global dof at time t (NaN where free), on every rank.
   std::vector<double> prescribed_displacements(double t) const;
 
-  /// Volume-averaged stress of this rank's own elements in the order of stress_names(),
-  /// written into `stress[component][global element]`; other entries are left untouched.
+  /// Volume-averaged stress of this rank's own elements in the order of stress_names() (the
+  /// Cauchy stress averaged over the deformed element under strain: finite,
+  /// total_lagrangian_cauchy_stress), written into `stress[component][global element]`; other
+  /// entries are left untouched.
   void element_stresses(const Vector& u, std::vector<std::vector<double>>& stress) const;
   /// Output names of the stress components, in the order in which IOSS (ParaView's Exodus
   /// reader) groups them into one symmetric tensor: 2D xx yy zz xy; 3D xx yy zz xy yz zx.
@@ -103,6 +114,7 @@ class SolidProblem {
   std::vector<LocalBlock> blocks_;
   std::vector<LoadedFace> faces_;
   std::vector<const DirichletInput*> dirichlet_;
+  mutable double round_off2_ = 0.0;  ///< this rank's part of round_off_estimate()²
 };
 
 }  // namespace grout

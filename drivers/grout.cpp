@@ -93,14 +93,16 @@ void run(const std::string& input_path, const std::string& output_dir,
   SteppingOptions stepping;
   stepping.end_time = input.time.end;
   stepping.steps = input.time.steps;
+  stepping.step_size.adaptive = input.time.adaptive;
+  stepping.step_size.max_step_size = input.time.max_step_size;
 
   // Solve, writing and flushing every converged step at once.
   const auto write_step = [&](const ConvergedStep& step) {
     agree_on_errors(*comm, [&] { output->write(step); });
     if (root) {
       std::printf(
-          "step %d  t = %g  newton %d  linear %d  |F| = %.3e\n", step.step, step.time,
-          step.newton->iterations, step.newton->linear_iterations,
+          "step %d  t = %g  dt = %g  newton %d  linear %d  |F| = %.3e\n", step.step, step.time,
+          step.step_size, step.newton->iterations, step.newton->linear_iterations,
           step.newton->residual_history.empty() ? 0.0 : step.newton->residual_history.back());
       std::fflush(stdout);
     }

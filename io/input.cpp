@@ -197,21 +197,27 @@ ModelInput read_model(const Section& grout) {
   m.dimension = model.integer("dimension");
   m.plane = model.string("plane") == "stress" ? PlaneKind::stress : PlaneKind::strain;
   m.strain = model.string("strain") == "finite" ? StrainKind::finite : StrainKind::small;
+  if (m.strain == StrainKind::finite && m.dimension == 2 && m.plane == PlaneKind::stress)
+    model.fail("plane", "plane stress is not available with strain: finite (use plane: strain)");
   return m;
 }
 
-std::vector<MaterialInput> read_materials(const Section& grout) {
-  const std::vector<Key> keys = {Key::string("block").required(),
-                                 Key::choice("law", {"linear_elastic"}, "material law").required(),
-                                 Key::number("youngs_modulus").above(0).required(),
-                                 Key::number("poissons_ratio").above(-1).below(0.5).required(),
-                                 Key::number("density").at_least(0).defaults("0")};
+std::vector<MaterialInput> read_materials(const Section& grout, StrainKind strain) {
+  const std::vector<Key> keys = {
+      Key::string("block").required(),
+      Key::choice("law", {"linear_elastic", "neo_hookean"}, "material law").required(),
+      Key::number("youngs_modulus").above(0).required(),
+      Key::number("poissons_ratio").above(-1).below(0.5).required(),
+      Key::number("density").at_least(0).defaults("0")};
   std::vector<MaterialInput> materials;
   for (const Section& s : grout.named_sections("materials", keys)) {
     MaterialInput m;
     m.name = s.name();
     m.block = s.string("block");
-    m.law = MaterialLaw::linear_elastic;
+    m.law =
+        s.string("law") == "neo_hookean" ? MaterialLaw::neo_hookean : MaterialLaw::linear_elastic;
+    if (m.law == MaterialLaw::neo_hookean && strain != StrainKind::finite)
+      s.fail("law", "neo_hookean needs grout/model/strain: finite");
     m.youngs_modulus = s.number("youngs_modulus");
     m.poissons_ratio = s.number("poissons_ratio");
     m.density = s.number("density");
@@ -343,15 +349,23 @@ Input read_input_text(const std::string& raw, const std::string& path) {
   const Section mesh = grout.section("mesh", {Key::string("file").required()});
   input.mesh_file = resolve(input.directory, mesh.string("file"));
   input.model = read_model(grout);
-  input.materials = read_materials(grout);
+  input.materials = read_materials(grout, input.model.strain);
   input.dirichlet = read_dirichlet(grout, input.model.dimension);
   input.loads = read_loads(grout, input.model.dimension);
   input.contact = read_contact(grout);
 
-  const Section time = grout.section("time", {Key::number("end").above(0).defaults("1"),
-                                              Key::integer("steps").at_least(1).defaults("1")});
+  const Section time = grout.section(
+      "time",
+      {Key::number("end").above(0).defaults("1"), Key::integer("steps").at_least(1).defaults("1"),
+       Key::choice("stepping", {"fixed", "adaptive"}, "stepping").defaults("fixed"),
+       Key::number("max_step_size").above(0)});
   input.time.end = time.number("end");
   input.time.steps = time.integer("steps");
+  input.time.adaptive = time.string("stepping") == "adaptive";
+  if (time.has("max_step_size")) {
+    if (!input.time.adaptive) time.fail("max_step_size", "only with stepping: adaptive");
+    input.time.max_step_size = time.number("max_step_size");
+  }
   read_dynamics(grout, input);
 
   input.solver = Teuchos::rcp(new Teuchos::ParameterList(grout.raw_section("solver")));

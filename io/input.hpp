@@ -23,7 +23,9 @@ struct ModelInput {
   StrainKind strain = StrainKind::small;
 };
 
-enum class MaterialLaw { linear_elastic };
+/// linear_elastic: Hooke's law under strain: small, St. Venant-Kirchhoff under strain: finite;
+/// neo_hookean: compressible Neo-Hookean (strain: finite only).
+enum class MaterialLaw { linear_elastic, neo_hookean };
 
 struct MaterialInput {
   std::string name;   ///< key under `materials`
@@ -79,7 +81,9 @@ struct ContactInput {
 
 struct TimeInput {
   double end = 1.0;
-  int steps = 1;
+  int steps = 1;               ///< equal steps, or (adaptive) the first step is end / steps
+  bool adaptive = false;       ///< `stepping: adaptive`: grow after easy steps
+  double max_step_size = 0.0;  ///< adaptive bound on the step size; 0 = none
 };
 
 /// Implicit dynamics (`grout/dynamics`); absent: quasi-static.

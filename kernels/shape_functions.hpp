@@ -18,8 +18,10 @@
 
 namespace grout {
 
-/// Outcome of an element kernel.
-enum class ElementStatus : int { ok = 0, inverted = 1, unsupported = 2 };
+/// Outcome of an element kernel: inverted = the reference element has det J <= 0 (a mesh
+/// error); collapsed = the deformation has det F <= 0 at a quadrature point (finite strain: an
+/// inadmissible iterate, not a mesh error).
+enum class ElementStatus : int { ok = 0, inverted = 1, unsupported = 2, collapsed = 3 };
 
 /// Largest number of element degrees of freedom (hex8 in 3D).
 constexpr int max_element_dofs = 24;

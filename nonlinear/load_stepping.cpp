@@ -38,6 +38,7 @@ void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const New
       continue;
     }
     x.assign(trial);
+    const double previous_time = times.time();
     times.advance();
     ++step;
     problem.residual(x, F);  // reactions and contact results at the converged state
@@ -45,11 +46,12 @@ void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const New
     ConvergedStep converged;
     converged.step = step;
     converged.time = times.time();
+    converged.step_size = converged.time - previous_time;
     converged.newton = &report;
     converged.state = &x;
     on_step(converged);
-    if (report.iterations < 5) times.grow();  // back towards t_end / n
-    cuts = 0;                                   // the budget of halvings is per step
+    times.after_success(report.iterations, stepping.step_size);
+    cuts = 0;  // the budget of halvings is per step
   }
 }
 

@@ -6,13 +6,15 @@
 #include "io/errors.hpp"
 #include "nonlinear/mechanics_problem.hpp"
 #include "nonlinear/newton.hpp"
+#include "nonlinear/step_size.hpp"
 
 namespace grout {
 
 struct SteppingOptions {
   double end_time = 1.0;
   int steps = 1;
-  int max_cuts = 6;  ///< halvings of the step size before giving up
+  int max_cuts = 6;           ///< halvings of the step size before giving up
+  StepSizeOptions step_size;  ///< fixed or adaptive increments (nonlinear/step_size.hpp)
 };
 
 class DynamicProblem;
@@ -21,6 +23,7 @@ class DynamicProblem;
 struct ConvergedStep {
   int step = 0;
   double time = 0.0;
+  double step_size = 0.0;  ///< the increment that reached `time`
   const NewtonReport* newton = nullptr;
   const Vector* state = nullptr;             ///< (u, λ)
   const DynamicProblem* dynamics = nullptr;  ///< velocity, acceleration, energies (dynamics)
@@ -32,8 +35,9 @@ class ConvergenceError : public ExitCodeError {
   explicit ConvergenceError(const std::string& what) : ExitCodeError(what, 3) {}
 };
 
-/// Steps from t = 0 to end_time in `steps` equal increments. A step whose Newton solve fails
-/// is retried with half the increment, up to max_cuts times per step (the count restarts
+/// Steps from t = 0 to end_time in `steps` equal increments (or, adaptive, starting with
+/// end_time / steps and doubling after easy steps; step_size.hpp). A step whose Newton solve
+/// fails is retried with half the increment, up to max_cuts times per step (the count restarts
 /// after each converged step); then ConvergenceError. Every
 /// converged step goes to `on_step` at once (the caller writes and flushes it).
 void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const NewtonOptions& newton,

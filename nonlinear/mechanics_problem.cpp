@@ -5,6 +5,7 @@
 #include <Teuchos_TimeMonitor.hpp>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "assembly/agree_on_errors.hpp"
 #include "assembly/contact_distribution.hpp"
@@ -226,7 +227,11 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
   displacement(x, *u_);
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: solid assembly"));
-    solid_.assemble(*u_, *f_int_, K_solid_.get());
+    // A collapsed element (finite strain) on any rank: every rank backs off together.
+    const int ok_here = solid_.assemble(*u_, *f_int_, K_solid_.get()) ? 1 : 0;
+    int ok_all = 0;
+    Teuchos::reduceAll(*solid_.comm(), Teuchos::REDUCE_MIN, ok_here, Teuchos::outArg(ok_all));
+    if (!ok_all) return false;
   }
   {
     auto Fv = F.getLocalViewHost(Tpetra::Access::OverwriteAll);
@@ -257,8 +262,9 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
   contact_floor2_ = contact_sums[2];
   {
     const double eps = std::numeric_limits<double>::epsilon();
-    const double f_floor = eps * f_int_->norm2();  // collective
-    residual_floor_ = std::sqrt(f_floor * f_floor + contact_floor2_);
+    const double f_floor = eps * f_int_->norm2();            // collective
+    const double solid_floor = solid_.round_off_estimate();  // collective; 0 for small strain
+    residual_floor_ = std::sqrt(f_floor * f_floor + solid_floor * solid_floor + contact_floor2_);
   }
   // Reactions, then the prescribed rows drop out.
   {

@@ -5,6 +5,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "nonlinear/step_size.hpp"
+
 namespace grout {
 
 /// \brief The times of a load-stepping run: t = t_end · k / den with integers k ≤ den, never
@@ -40,6 +42,22 @@ class StepTimes {
   }
   /// Double the step, up to the nominal size t_end / n.
   void grow() { size_ = std::min(2 * size_, nominal_); }
+  /// Double the step up to max_size (a time, rounded down to a whole number of t_end / den;
+  /// at least one unit); 0 = up to the end time.
+  void grow_to(double max_size) {
+    long long limit = den_;
+    if (max_size > 0.0 && max_size < end_)
+      limit = std::max(1LL, static_cast<long long>(max_size / end_ * double(den_)));
+    size_ = std::min(2 * size_, limit);
+  }
+  /// The step-size policy after a converged step of `newton_iterations` (step_size.hpp).
+  void after_success(int newton_iterations, const StepSizeOptions& options) {
+    if (!options.adaptive) {
+      if (newton_iterations < 5) grow();
+    } else if (newton_iterations <= options.easy_iterations) {
+      grow_to(options.max_step_size);
+    }
+  }
 
  private:
   double time_at(long long k) const {

@@ -14,7 +14,15 @@ import numpy as np
 def _names(ds, var):
     if var not in ds.variables:
         return []
-    return [str(s).strip() for s in netCDF4.chartostring(ds.variables[var][:])]
+    # Each name ends at its first NUL: Exodus writes in no-fill mode, so the bytes after it
+    # are whatever the file held (not necessarily valid UTF-8).
+    # (numpy's S1 turns a NUL into b"").
+    names = []
+    for row in np.array(ds.variables[var][:], dtype="S1"):
+        chars = list(row)
+        end = chars.index(b"") if b"" in chars else len(chars)
+        names.append(b"".join(chars[:end]).decode("utf-8", "replace").strip())
+    return names
 
 
 class Results:

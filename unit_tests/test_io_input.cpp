@@ -69,9 +69,9 @@ const std::string full = R"yaml(%YAML 1.1
 # the example of docs/input.md, with every key
 grout:
   mesh: {file: meshes/patch.exo}
-  model: {dimension: 2, plane: stress, strain: finite}
+  model: {dimension: 2, plane: strain, strain: finite}
   materials:
-    die:   {block: die,   law: linear_elastic, youngs_modulus: 1000, poissons_ratio: 0.4, density: 2}
+    die:   {block: die,   law: neo_hookean, youngs_modulus: 1000, poissons_ratio: 0.4, density: 2}
     block: {block: id_2,  law: linear_elastic, youngs_modulus: 2.5e3, poissons_ratio: -0.25}
   dirichlet:
     bottom_y: {node_set: bottom, component: y, value: "0.0"}
@@ -94,7 +94,7 @@ grout:
       c_t: 2.5
       integration: collocation
       collocation_points: 4
-  time: {end: 2, steps: 10}
+  time: {end: 2, steps: 10, stepping: adaptive, max_step_size: 0.5}
   solver:
     NOX: {Nonlinear Solver: Line Search Based}
     Linear Solver: {type: amesos2, tolerance: 1.0e-10}
@@ -111,13 +111,13 @@ TEST(InputRead, FullInputGivesEveryValue) {
   EXPECT_EQ(in.directory, dir);
   EXPECT_EQ(in.mesh_file, dir + "/meshes/patch.exo");
   EXPECT_EQ(in.model.dimension, 2);
-  EXPECT_EQ(in.model.plane, PlaneKind::stress);
+  EXPECT_EQ(in.model.plane, PlaneKind::strain);
   EXPECT_EQ(in.model.strain, StrainKind::finite);
 
   ASSERT_EQ(in.materials.size(), 2u);  // in file order
   EXPECT_EQ(in.materials[0].name, "die");
   EXPECT_EQ(in.materials[0].block, "die");
-  EXPECT_EQ(in.materials[0].law, MaterialLaw::linear_elastic);
+  EXPECT_EQ(in.materials[0].law, MaterialLaw::neo_hookean);
   EXPECT_EQ(in.materials[0].youngs_modulus, 1000.0);  // a YAML int read as a double
   EXPECT_EQ(in.materials[0].poissons_ratio, 0.4);
   EXPECT_EQ(in.materials[0].density, 2.0);
@@ -167,6 +167,8 @@ TEST(InputRead, FullInputGivesEveryValue) {
 
   EXPECT_EQ(in.time.end, 2.0);
   EXPECT_EQ(in.time.steps, 10);
+  EXPECT_TRUE(in.time.adaptive);
+  EXPECT_EQ(in.time.max_step_size, 0.5);
 
   ASSERT_FALSE(in.solver.is_null());
   EXPECT_EQ(in.solver->sublist("NOX").get<std::string>("Nonlinear Solver"), "Line Search Based");
@@ -191,6 +193,7 @@ TEST(InputRead, MinimalInputGetsDefaults) {
   EXPECT_TRUE(in.contact.empty());
   EXPECT_EQ(in.time.end, 1.0);
   EXPECT_EQ(in.time.steps, 1);
+  EXPECT_FALSE(in.time.adaptive);
   ASSERT_FALSE(in.solver.is_null());
   EXPECT_EQ(in.solver->numParams(), 0);
   EXPECT_EQ(in.output.file, dir + "/case.e");
@@ -368,8 +371,8 @@ TEST(InputErrors, MissingRequiredKeys) {
 
 TEST(InputErrors, UnknownChoices) {
   expect_bad_input("law", replaced(minimal, "law: linear_elastic", "law: plastic"),
-                   {"grout/materials/steel/law: unknown material law 'plastic' (expected: "
-                    "linear_elastic)"});
+                   {"grout/materials/steel/law: unknown material law 'plastic' (expected one "
+                    "of: linear_elastic, neo_hookean)"});
   expect_bad_input("plane", replaced(minimal, "dimension: 2", "dimension: 2, plane: strains"),
                    {"grout/model/plane: unknown plane kind 'strains' (expected one of: strain, "
                     "stress)"});
@@ -398,6 +401,8 @@ TEST(InputErrors, OutOfRangeNumbers) {
                    {"grout/materials/steel/density: expected a number >= 0, got '-1.5'"});
   expect_bad_input("dimension_four", replaced(minimal, "dimension: 2", "dimension: 4"),
                    {"grout/model/dimension: expected 2 or 3, got '4'"});
+  expect_bad_input("max_step_fixed", minimal + "  time: {max_step_size: 0.1}\n",
+                   {"grout/time/max_step_size: only with stepping: adaptive"});
   expect_bad_input("end_zero", minimal + "  time: {end: 0}\n",
                    {"grout/time/end: expected a number > 0, got '0'"});
   expect_bad_input("steps_zero", minimal + "  time: {steps: 0}\n",

@@ -1,7 +1,8 @@
 // The Jacobian of the mechanics problem with frictionless and Coulomb frictional contact on
 // the current geometry (all linearisation terms: normals, tangents, D, M, projections, the
 // slip increment and the stick/slip NCP rows) against central finite differences of the
-// residual, in 2D and 3D, on 1 and 2 ranks.
+// residual, in 2D and 3D, on 1 and 2 ranks; with small-strain solids and with finite-strain
+// (total-Lagrangian Neo-Hookean) solids under a large homogeneous deformation of both bodies.
 
 #include <gtest/gtest.h>
 
@@ -16,16 +17,18 @@
 namespace grout {
 namespace {
 
-Input contact_input(int dim, ContactKind type, double mu) {
+Input contact_input(int dim, ContactKind type, double mu, StrainKind strain) {
   Input input;
   input.file = "test.yaml";
   input.model.dimension = dim;
+  input.model.strain = strain;
   for (const char* block : {"lower", "upper"}) {
     MaterialInput m;
     m.name = block;
     m.block = block;
     m.youngs_modulus = std::string(block) == "lower" ? 1000.0 : 3000.0;
     m.poissons_ratio = 0.3;
+    if (strain == StrainKind::finite) m.law = MaterialLaw::neo_hookean;
     input.materials.push_back(m);
   }
   ContactInput c;
@@ -40,8 +43,12 @@ Input contact_input(int dim, ContactKind type, double mu) {
 }
 
 // Random displacements that press the upper body into the lower one (so most slave nodes
-// are active) and random multipliers.
-void random_state(const MechanicsProblem& problem, const Mesh& mesh, Vector& x, unsigned seed) {
+// are active) and random multipliers; with `finite`, plus u = (F - I) X for both bodies with
+// F = [[1.2, 0.3, 0], [-0.1, 0.9, 0], [0, 0, 1]] (stretch, shear and a rotation of the
+// interface by about 6 degrees: finite strains, rotated normals, the same pairs).
+void random_state(const MechanicsProblem& problem, const Mesh& mesh, Vector& x, unsigned seed,
+                  bool finite = false) {
+  const double F_minus_I[3][3] = {{0.2, 0.3, 0.0}, {-0.1, -0.1, 0.0}, {0.0, 0.0, 0.0}};
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> r(-1.0, 1.0);
   const int dim = mesh.dimension;
@@ -57,6 +64,9 @@ void random_state(const MechanicsProblem& problem, const Mesh& mesh, Vector& x, 
       const bool upper_axis = g % dim == dim - 1;
       const double height = mesh.coordinates[node * dim + dim - 1];
       xv(i, 0) = 0.01 * v - (upper_axis && height > 0.99 ? 0.01 : 0.0);
+      if (finite)
+        for (int J = 0; J < dim; ++J)
+          xv(i, 0) += F_minus_I[g % dim][J] * mesh.coordinates[node * dim + J];
     } else {
       xv(i, 0) = 5.0 + v;  // compressive multipliers
     }
@@ -66,15 +76,16 @@ void random_state(const MechanicsProblem& problem, const Mesh& mesh, Vector& x, 
 
 /// Checks the Jacobian; returns the number of stick (1) and slip (2) slave nodes.
 std::array<int, 3> check_jacobian(int dim, ContactKind type = ContactKind::frictionless,
-                                  double mu = 0.0) {
+                                  double mu = 0.0, StrainKind strain = StrainKind::small) {
+  const bool finite = strain == StrainKind::finite;
   const auto comm = Tpetra::getDefaultComm();
   const Mesh mesh = dim == 2 ? two_block_mesh_2d(3, 2, 4, 2) : two_block_mesh_3d(2, 2, 1, 3, 2, 1);
-  const Input input = contact_input(dim, type, mu);
+  const Input input = contact_input(dim, type, mu, strain);
   const SolidProblem solid(mesh, input, comm);
   MechanicsProblem problem(solid, mesh, input);
   Vector x(problem.map()), F(problem.map()), Fp(problem.map()), Fm(problem.map());
   Vector dx(problem.map()), JdX(problem.map()), xp(problem.map()), xm(problem.map());
-  random_state(problem, mesh, x, 3);
+  random_state(problem, mesh, x, 3, finite);
   EXPECT_TRUE(problem.residual(x, F));
   const int active = problem.active_set_size();
   EXPECT_GT(active, 0);
@@ -184,6 +195,23 @@ TEST(MechanicsJacobian, DistributedEqualsSerial3D) {
   check_distributed_equals_serial(3, ContactKind::frictional, 0.3, ContactGeometry::current);
   check_distributed_equals_serial(3, ContactKind::frictional, 1e3, ContactGeometry::reference);
   check_distributed_equals_serial(3, ContactKind::tied, 0.0, ContactGeometry::reference);
+}
+
+// Finite-strain solids (total Lagrangian, Neo-Hookean) with current-geometry contact.
+TEST(MechanicsJacobian, FiniteStrainMatchesFiniteDifferences2D) {
+  check_jacobian(2, ContactKind::frictionless, 0.0, StrainKind::finite);
+}
+TEST(MechanicsJacobian, FiniteStrainMatchesFiniteDifferences3D) {
+  check_jacobian(3, ContactKind::frictionless, 0.0, StrainKind::finite);
+}
+TEST(MechanicsJacobian, FiniteStrainFrictionalSlipMatchesFiniteDifferences2D) {
+  EXPECT_GT(check_jacobian(2, ContactKind::frictional, 0.3, StrainKind::finite)[2], 0);
+}
+TEST(MechanicsJacobian, FiniteStrainFrictionalStickMatchesFiniteDifferences2D) {
+  EXPECT_GT(check_jacobian(2, ContactKind::frictional, 1e3, StrainKind::finite)[1], 0);
+}
+TEST(MechanicsJacobian, FiniteStrainFrictionalSlipMatchesFiniteDifferences3D) {
+  EXPECT_GT(check_jacobian(3, ContactKind::frictional, 0.3, StrainKind::finite)[2], 0);
 }
 
 }  // namespace

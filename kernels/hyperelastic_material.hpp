@@ -1,0 +1,116 @@
+#pragma once
+// Isotropic hyperelastic laws at one material point: the strain energy density W(F) and the
+// first Piola-Kirchhoff stress P = dW/dF from the deformation gradient F.
+//
+// Compressible Neo-Hookean (Bonet & Wood, Nonlinear Continuum Mechanics for Finite Element
+// Analysis, 2nd ed., §6.4.3, eqs. 6.27-6.28; the law of deal.II step-44 and MFEM's
+// NeoHookeanModel in this form):
+//   W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2,   I1 = tr(F^T F),  J = det F,
+//   P = mu (F - F^-T) + lambda ln J F^-T.
+// St. Venant-Kirchhoff (Bonet & Wood §6.4.2; Holzapfel, Nonlinear Solid Mechanics, §6.5):
+//   E = (F^T F - I)/2,   W = lambda/2 (tr E)^2 + mu E:E,
+//   S = lambda tr(E) I + 2 mu E,   P = F S.
+// Both reduce to small-strain linear elasticity with the same Lamé constants for |F - I| -> 0.
+// F is always 3 x 3: plane strain is F = [[F11, F12, 0], [F21, F22, 0], [0, 0, 1]], and the
+// out-of-plane P_33 is what the Cauchy stress sigma_zz needs.
+// Templated on the scalar (double or a Sacado Fad): the tangent dP/dF comes from AD.
+
+#include <Kokkos_Core.hpp>
+#include <cmath>
+
+#include "kernels/linear_elastic.hpp"
+
+namespace grout {
+
+/// Hyperelastic law of a finite-strain solid (the `linear_elastic` input law under
+/// `strain: finite` is St. Venant-Kirchhoff).
+enum class HyperelasticLaw : int { saint_venant_kirchhoff = 0, neo_hookean = 1 };
+
+/// Outcome of a material evaluation.
+enum class MaterialStatus : int { ok = 0, collapsed = 1 };  ///< collapsed: det F <= 0
+
+/// det A of a 3 x 3 matrix and, if A_inv_T is non-null, the transposed inverse A^-T
+/// (cofactor matrix / det). Only the value of det is compared by the caller.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION Scalar determinant_and_inverse_transpose(const Scalar A[3][3],
+                                                                Scalar A_inv_T[3][3]) {
+  Scalar C[3][3];  // cofactors C_ij = (-1)^(i+j) minor_ij, so that A^-T = C / det A
+  for (int i = 0; i < 3; ++i) {
+    const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+    for (int j = 0; j < 3; ++j) {
+      const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+      C[i][j] = A[i1][j1] * A[i2][j2] - A[i1][j2] * A[i2][j1];
+    }
+  }
+  const Scalar det = A[0][0] * C[0][0] + A[0][1] * C[0][1] + A[0][2] * C[0][2];
+  if (A_inv_T)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) A_inv_T[i][j] = C[i][j] / det;
+  return det;
+}
+
+/// \brief First Piola-Kirchhoff stress P(F) and strain energy density W(F) of `law` with Lamé
+/// constants c (formulas in the file comment).
+/// \pre F: the full 3 x 3 deformation gradient (plane strain: F33 = 1, F13 = F23 = F31 = F32 = 0).
+/// \return collapsed if det F <= 0 (P and W then undefined); the check applies to both laws:
+/// St. Venant-Kirchhoff has a finite energy there, but the configuration is not admissible.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION MaterialStatus first_piola_kirchhoff(HyperelasticLaw law, ElasticConstants c,
+                                                            const Scalar F[3][3], Scalar P[3][3],
+                                                            Scalar& W) {
+  using std::log;
+  Scalar F_inv_T[3][3];
+  const Scalar J = determinant_and_inverse_transpose(F, F_inv_T);
+  if (!(J > 0.0)) return MaterialStatus::collapsed;
+  if (law == HyperelasticLaw::neo_hookean) {
+    const Scalar ln_J = log(J);
+    Scalar I1 = 0.0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        I1 += F[i][j] * F[i][j];
+        P[i][j] = c.mu * (F[i][j] - F_inv_T[i][j]) + c.lambda * ln_J * F_inv_T[i][j];
+      }
+    W = 0.5 * c.mu * (I1 - 3.0) - c.mu * ln_J + 0.5 * c.lambda * ln_J * ln_J;
+    return MaterialStatus::ok;
+  }
+  // St. Venant-Kirchhoff.
+  Scalar E[3][3];
+  for (int I = 0; I < 3; ++I)
+    for (int K = 0; K < 3; ++K) {
+      E[I][K] = 0.0;
+      for (int i = 0; i < 3; ++i) E[I][K] += F[i][I] * F[i][K];
+      E[I][K] *= 0.5;
+      if (I == K) E[I][K] -= 0.5;
+    }
+  const Scalar tr_E = E[0][0] + E[1][1] + E[2][2];
+  Scalar S[3][3], E_E = 0.0;
+  for (int I = 0; I < 3; ++I)
+    for (int K = 0; K < 3; ++K) {
+      E_E += E[I][K] * E[I][K];
+      S[I][K] = 2.0 * c.mu * E[I][K];
+      if (I == K) S[I][K] += c.lambda * tr_E;
+    }
+  for (int i = 0; i < 3; ++i)
+    for (int K = 0; K < 3; ++K) {
+      P[i][K] = 0.0;
+      for (int I = 0; I < 3; ++I) P[i][K] += F[i][I] * S[I][K];
+    }
+  W = 0.5 * c.lambda * tr_E * tr_E + c.mu * E_E;
+  return MaterialStatus::ok;
+}
+
+/// \brief Cauchy stress sigma = P F^T / J (Bonet & Wood eq. 5.42) from P and F.
+/// \pre det F > 0.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION void cauchy_from_first_piola(const Scalar F[3][3], const Scalar P[3][3],
+                                                    Scalar sigma[3][3]) {
+  const Scalar J = determinant_and_inverse_transpose<Scalar>(F, nullptr);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      sigma[i][j] = 0.0;
+      for (int K = 0; K < 3; ++K) sigma[i][j] += P[i][K] * F[j][K];
+      sigma[i][j] /= J;
+    }
+}
+
+}  // namespace grout
