@@ -834,10 +834,11 @@ ContactFields MechanicsProblem::contact_fields() const {
       active += c->active[q] != 0;
     }
   }
-  if (interfaces_.empty()) return out;
-  const auto& comm = *map_->getComm();
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, int(local.size()), local.data(), global.data());
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 1, &active, &out.active_nodes);
+  if (!interfaces_.empty()) {  // the same on every rank: all call the reductions or none
+    const auto& comm = *map_->getComm();
+    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, int(local.size()), local.data(), global.data());
+    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 1, &active, &out.active_nodes);
+  }
   const auto field = [&](std::size_t i) {
     return std::vector<double>(global.begin() + i * n, global.begin() + (i + 1) * n);
   };
