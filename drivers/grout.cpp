@@ -76,6 +76,9 @@ void run(const std::string& input_path, const std::string& output_dir,
   if (root) {
     std::printf("grout: %s: %lld nodes, %lld elements, %d rank(s)\n", input.file.c_str(),
                 mesh.num_nodes(), mesh.num_elements(), comm->getSize());
+    // Said before the first step, so that a run that is killed still names its results.
+    std::printf("grout: results file %s\n", input.output.file.c_str());
+    std::fflush(stdout);
   }
 
   // Build: partition, maps, graph, contact interfaces; solvers from the `solver` sublist.

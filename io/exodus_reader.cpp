@@ -17,6 +17,7 @@
 
 #include "io/errors.hpp"
 #include "io/exodus.hpp"
+#include "io/netcdf_header.hpp"
 
 namespace grout {
 
@@ -60,6 +61,7 @@ class ReadOnlyFile {
       : path_(path), max_values_(max_stored_values(path)) {
     int comp_ws = sizeof(double), io_ws = 0;
     float version = 0.0f;
+    check_netcdf_header(path);  // before netCDF allocates what the header declares
     id_ = ex_open(path.c_str(), EX_READ | EX_ALL_INT64_API, &comp_ws, &io_ws, &version);
     if (id_ < 0) fail(path, "cannot open Exodus file");
     // Names longer than the 32-character default are truncated unless we ask for them.

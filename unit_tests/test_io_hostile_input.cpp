@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -11,7 +12,9 @@
 #include <vector>
 
 #include "io/errors.hpp"
+#include "io/exodus.hpp"
 #include "io/input.hpp"
+#include "io/netcdf_header.hpp"
 
 namespace grout {
 namespace {
@@ -130,6 +133,45 @@ TEST(InputLimits, TextAndFileReadersAgree) {
   EXPECT_EQ(from_file.mesh_file, from_text.mesh_file);
   EXPECT_EQ(from_file.output.file, from_text.output.file);
   EXPECT_EQ(from_file.materials.at(0).youngs_modulus, from_text.materials.at(0).youngs_modulus);
+}
+
+/// The seed mesh fuzz/corpus/exodus/quad4.exo with the 4 bytes after `name`'s padded text
+/// (or, with `before`, the 4 bytes before it: its length) set to `value`, written to `file`.
+std::string corrupted_mesh(const std::string& file, const std::string& name, uint32_t value,
+                           bool before = false) {
+  std::ifstream in(std::string(GROUT_SOURCE_DIR) + "/fuzz/corpus/exodus/quad4.exo",
+                   std::ios::binary);
+  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const std::size_t at = bytes.find(name);
+  EXPECT_NE(at, std::string::npos) << name;
+  const std::size_t where = before ? at - 4 : at + (name.size() + 3) / 4 * 4;
+  for (int i = 0; i < 4; ++i) bytes[where + i] = char((value >> (24 - 8 * i)) & 0xff);
+  std::filesystem::create_directories(test_dir);
+  const std::string path = (test_dir / file).string();
+  std::ofstream(path, std::ios::binary) << bytes;
+  return path;
+}
+
+TEST(ExodusLimits, SeedMeshPassesTheHeaderCheck) {
+  const std::string path = std::string(GROUT_SOURCE_DIR) + "/fuzz/corpus/exodus/quad4.exo";
+  EXPECT_NO_THROW(check_netcdf_header(path));
+  EXPECT_EQ(read_exodus(path).num_nodes(), 9);
+}
+
+TEST(ExodusLimits, DimensionBeyondTheFileIsRefused) {
+  // One flipped byte of the node count: 9 -> 2^30 nodes.
+  const std::string path = corrupted_mesh("nodes.exo", "num_nodes", 0x40000000u);
+  expect_contains(input_error([&] { read_exodus(path); }),
+                  {"nodes.exo: corrupt netCDF header: variable", "1073741824 values",
+                   "past the end of the file"});
+}
+
+TEST(ExodusLimits, NameLengthBeyondTheFileIsRefused) {
+  // A name length of 1.6e9 made netCDF allocate 1.6 GB while opening the file.
+  const std::string path = corrupted_mesh("name.exo", "num_nodes", 1601401957u, true);
+  expect_contains(input_error([&] { read_exodus(path); }),
+                  {"name.exo: corrupt netCDF header: dimension name of 1601401957 bytes runs "
+                   "past the end of the file"});
 }
 
 }  // namespace

@@ -19,12 +19,12 @@ def radial_stress(r):
     return P * A**2 / (B**2 - A**2) * (1 - B**2 / r**2)
 
 
-def nodal_radial(path):
-    """(r, computed u_r, exact u_r) at every node of the result file."""
+def nodal_radial(path, step=-1):
+    """(r, computed u_r, exact u_r at t = 1) at every node of the result file."""
     res = Results(path)
     x, y = res.coordinates()[:2]
     r = np.hypot(x, y)
-    ur = (res.nodal("displ_x") * x + res.nodal("displ_y") * y) / r
+    ur = (res.nodal("displ_x", step) * x + res.nodal("displ_y", step) * y) / r
     return r, ur, radial_displacement(r)
 
 

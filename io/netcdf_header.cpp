@@ -1,0 +1,191 @@
+#include "io/netcdf_header.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <vector>
+
+#include "io/errors.hpp"
+
+namespace grout {
+
+namespace {
+
+// Tags and type codes of the classic format.
+constexpr uint32_t tag_dimension = 0x0A, tag_variable = 0x0B, tag_attribute = 0x0C;
+
+/// Bytes of one value of netCDF type `type` (NC_BYTE = 1 ... NC_UINT64 = 11); 0 if unknown.
+uint64_t type_size(uint32_t type, bool cdf5) {
+  switch (type) {
+    case 1:
+    case 2:
+      return 1;  // byte, char
+    case 3:
+      return 2;  // short
+    case 4:
+    case 5:
+      return 4;  // int, float
+    case 6:
+      return 8;  // double
+    default:
+      break;
+  }
+  if (!cdf5) return 0;
+  switch (type) {
+    case 7:
+      return 1;  // ubyte
+    case 8:
+      return 2;  // ushort
+    case 9:
+      return 4;  // uint
+    case 10:
+    case 11:
+      return 8;  // int64, uint64
+    default:
+      return 0;
+  }
+}
+
+/// Big-endian reader over the file that refuses to go past its end.
+class HeaderReader {
+ public:
+  HeaderReader(const std::string& path, uint64_t size)
+      : path_(path), file_(path, std::ios::binary), size_(size) {}
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError(path_ + ": corrupt netCDF header: " + what + " (at byte " +
+                     std::to_string(position_) + " of " + std::to_string(size_) + ")");
+  }
+
+  uint64_t left() const { return size_ - position_; }
+
+  uint64_t u32() { return read(4); }
+  /// A count: 4 bytes, or 8 in CDF-5.
+  uint64_t count() { return read(cdf5_ ? 8 : 4); }
+
+  /// Skip `n` bytes rounded up to a multiple of 4 (names and attribute values are padded).
+  void skip_padded(uint64_t n, const std::string& what) {
+    const uint64_t padded = n + (4 - n % 4) % 4;
+    if (n > left() || padded > left())
+      fail(what + " of " + std::to_string(n) + " bytes runs past the end of the file");
+    position_ += padded;
+    file_.seekg(std::streamoff(position_));
+  }
+
+  /// `n` items of at least `bytes_each` bytes must fit in what is left.
+  void need(uint64_t n, uint64_t bytes_each, const std::string& what) const {
+    if (n > left() / bytes_each)
+      fail(what + ": " + std::to_string(n) + " declared, more than the " + std::to_string(left()) +
+           " bytes left can hold");
+  }
+
+  void name(const std::string& what) {
+    const uint64_t length = count();
+    skip_padded(length, what + " name");
+  }
+
+  bool cdf5_ = false;
+
+ private:
+  uint64_t read(int bytes) {
+    if (uint64_t(bytes) > left()) fail("the header ends early");
+    unsigned char buffer[8] = {};
+    file_.read(reinterpret_cast<char*>(buffer), bytes);
+    if (!file_) fail("cannot read the header");
+    position_ += uint64_t(bytes);
+    uint64_t value = 0;
+    for (int i = 0; i < bytes; ++i) value = (value << 8) | buffer[i];
+    return value;
+  }
+
+  std::string path_;
+  std::ifstream file_;
+  uint64_t size_ = 0, position_ = 0;
+};
+
+/// A list header: its tag (or 0 for ABSENT) and its number of elements.
+uint64_t list_length(HeaderReader& in, uint32_t expected_tag, const std::string& what) {
+  const uint64_t tag = in.u32();
+  const uint64_t n = in.count();
+  if (tag == 0 && n == 0) return 0;
+  if (tag != expected_tag) in.fail(what + " list has tag " + std::to_string(tag));
+  return n;
+}
+
+void skip_attributes(HeaderReader& in, const std::string& owner) {
+  const uint64_t n = list_length(in, tag_attribute, owner + " attribute");
+  in.need(n, 12, owner + " attributes");  // name length, type, length: 4 bytes each at least
+  for (uint64_t a = 0; a < n; ++a) {
+    in.name(owner + " attribute");
+    const uint64_t type = in.u32();
+    const uint64_t bytes = type_size(uint32_t(type), in.cdf5_);
+    if (bytes == 0) in.fail(owner + " attribute of unknown type " + std::to_string(type));
+    const uint64_t length = in.count();
+    in.need(length, bytes, owner + " attribute values");
+    in.skip_padded(length * bytes, owner + " attribute values");
+  }
+}
+
+}  // namespace
+
+void check_netcdf_header(const std::string& path) {
+  std::error_code error;
+  const uint64_t size = std::filesystem::file_size(path, error);
+  if (error || size < 4) return;  // left to the netCDF library to report
+  HeaderReader in(path, size);
+  const uint64_t magic = in.u32();
+  if ((magic >> 8) != 0x434446) return;  // not "CDF": netCDF-4/HDF5 or not netCDF at all
+  const uint64_t version = magic & 0xff;
+  if (version != 1 && version != 2 && version != 5) return;  // netCDF reports it
+  in.cdf5_ = version == 5;
+  const uint64_t offset_bytes = version == 1 ? 4 : 8;
+
+  const uint64_t records = in.count();  // may be "streaming" (all ones): not used below
+
+  const uint64_t num_dims = list_length(in, tag_dimension, "dimension");
+  in.need(num_dims, 8, "dimensions");
+  std::vector<uint64_t> dims(num_dims);
+  for (uint64_t& length : dims) {
+    in.name("dimension");
+    length = in.count();
+  }
+
+  skip_attributes(in, "global");
+
+  const uint64_t num_vars = list_length(in, tag_variable, "variable");
+  in.need(num_vars, 16, "variables");
+  for (uint64_t v = 0; v < num_vars; ++v) {
+    const std::string what = "variable " + std::to_string(v + 1);
+    in.name(what);
+    const uint64_t rank = in.count();
+    in.need(rank, in.cdf5_ ? 8 : 4, what + " dimensions");
+    uint64_t values = 1;
+    bool record = false;
+    for (uint64_t r = 0; r < rank; ++r) {
+      const uint64_t id = in.count();
+      if (id >= dims.size()) in.fail(what + " refers to dimension " + std::to_string(id));
+      if (dims[id] == 0) {
+        record = true;  // the unlimited dimension: its length is the record count
+        continue;
+      }
+      if (values > std::numeric_limits<uint64_t>::max() / dims[id])
+        in.fail(what + " has more values than fit in 64 bits");
+      values *= dims[id];
+    }
+    skip_attributes(in, what);
+    const uint64_t type = in.u32();
+    const uint64_t bytes = type_size(uint32_t(type), in.cdf5_);
+    if (bytes == 0) in.fail(what + " has unknown type " + std::to_string(type));
+    in.count();  // vsize: redundant (and clipped for large variables)
+    const uint64_t begin = offset_bytes == 4 ? in.u32() : (uint64_t(in.u32()) << 32 | in.u32());
+    // A fixed-size variable's values lie at [begin, begin + values * bytes); each record of
+    // a record variable holds `values` values.
+    if (values > size / bytes || begin > size || (!record && values * bytes > size - begin))
+      in.fail(what + " declares " + std::to_string(values) + " values of " + std::to_string(bytes) +
+              " bytes from byte " + std::to_string(begin) + ", past the end of the file");
+  }
+  (void)records;
+}
+
+}  // namespace grout
