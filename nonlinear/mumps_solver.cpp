@@ -323,6 +323,21 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   auto from = b_contiguous.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto to = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
   for (LO i = 0; i < n_local; ++i) to(i, 0) = from(i, 0);
+  // A row whose only nonzero is its diagonal (e.g. λ_j = 0 of an open contact node) fixes
+  // x_i = b_i / a_ii exactly; the factorisation's rounding would leave ~1e-16 there.
+  auto b_local = b.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (LO i = 0; i < n_local; ++i) {
+    double diagonal = 0.0;
+    bool only_diagonal = true;
+    for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1) && only_diagonal; ++p) {
+      if (local.values(p) == 0.0) continue;
+      if ((long long)(column_index[local.graph.entries(p)]) == offset + i)
+        diagonal = local.values(p);
+      else
+        only_diagonal = false;
+    }
+    if (only_diagonal && diagonal != 0.0) to(i, 0) = b_local(i, 0) / diagonal;
+  }
 }
 
 }  // namespace grout
