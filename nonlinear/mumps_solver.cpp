@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <climits>
 #include <cstdlib>
+#include <iterator>
 #include <stdexcept>
 #include <vector>
 
@@ -94,8 +95,12 @@ struct MumpsSolver::Impl {
   bool factorised = false;
   MumpsStatistics stats;
 
-  // This rank's entries in MUMPS's form: 1-based indices of the contiguous renumbering.
+  // The analysed pattern on this rank: sorted keys row * n + col (0-based, contiguous
+  // numbering) and MUMPS's 1-based irn, jcn; the values in that order; the matrix entries'
+  // positions in it, and their keys at the last solve (to skip the search when unchanged).
   GO n = -1;
+  std::vector<long long> pattern, last_keys;
+  std::vector<std::size_t> position;
   std::vector<MUMPS_INT> irn, jcn;
   std::vector<double> values;
 
@@ -254,33 +259,76 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
     for (std::size_t j = 0; j < column_index.size(); ++j) column_index[j] = c(j, 0);
   }
 
-  // This rank's entries (lower triangle only when symmetric), and whether the pattern or the
-  // values differ from the last solve on any rank.
+  // This rank's entries (lower triangle only when symmetric) as keys row * n + col (0-based,
+  // contiguous numbering), in the matrix's storage order.
   const auto local = K->getLocalMatrixHost();
-  std::vector<MUMPS_INT> irn, jcn;
-  std::vector<double> values;
-  irn.reserve(local.nnz());
-  jcn.reserve(local.nnz());
-  values.reserve(local.nnz());
+  std::vector<long long> keys;
+  std::vector<double> entry_values;
+  keys.reserve(local.nnz());
+  entry_values.reserve(local.nnz());
   for (LO i = 0; i < n_local; ++i) {
-    const MUMPS_INT row = MUMPS_INT(offset + i) + 1;
+    const long long row = offset + i;
     for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p) {
-      const MUMPS_INT col = MUMPS_INT(column_index[local.graph.entries(p)]) + 1;
+      const long long col = (long long)(column_index[local.graph.entries(p)]);
       if (s.options.symmetric && col > row) continue;
-      irn.push_back(row);
-      jcn.push_back(col);
-      values.push_back(local.values(p));
+      keys.push_back(row * n + col);
+      entry_values.push_back(local.values(p));
     }
   }
-  int changed[2] = {int(!s.analysed || s.n != n || irn != s.irn || jcn != s.jcn), 0};
-  changed[1] = int(changed[0] || !s.factorised || values != s.values);
-  MPI_Allreduce(MPI_IN_PLACE, changed, 2, MPI_INT, MPI_MAX, mpi_comm);
+
+  // The analysed pattern is kept while the matrix's pattern stays inside it: the Jacobian's
+  // pattern follows the contact state (active set, mortar pairs, nonzero derivatives) and
+  // changes between Newton iterations, mostly within what earlier iterations had. Entries
+  // of the analysed pattern that the matrix lacks are explicit zeros. A new entry leads to
+  // a new analysis of the union of both patterns, or of the new pattern alone if the union
+  // would be more than twice its size.
+  int missing = 0;
+  if (!(s.analysed && s.n == n && keys == s.last_keys)) {
+    s.position.assign(keys.size(), 0);
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+      const auto it = std::lower_bound(s.pattern.begin(), s.pattern.end(), keys[k]);
+      if (!s.analysed || s.n != n || it == s.pattern.end() || *it != keys[k]) {
+        missing = 1;
+        break;
+      }
+      s.position[k] = std::size_t(it - s.pattern.begin());
+    }
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &missing, 1, MPI_INT, MPI_MAX, mpi_comm);
+  if (missing) {
+    std::vector<long long> sorted = keys;
+    std::sort(sorted.begin(), sorted.end());
+    sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+    std::vector<long long> merged;
+    if (s.analysed && s.n == n) {
+      std::set_union(s.pattern.begin(), s.pattern.end(), sorted.begin(), sorted.end(),
+                     std::back_inserter(merged));
+    }
+    int use_union = int(!merged.empty() && merged.size() <= 2 * sorted.size());
+    MPI_Allreduce(MPI_IN_PLACE, &use_union, 1, MPI_INT, MPI_MIN, mpi_comm);
+    s.pattern = use_union ? std::move(merged) : std::move(sorted);
+    s.irn.resize(s.pattern.size());
+    s.jcn.resize(s.pattern.size());
+    for (std::size_t e = 0; e < s.pattern.size(); ++e) {
+      s.irn[e] = MUMPS_INT(s.pattern[e] / n) + 1;
+      s.jcn[e] = MUMPS_INT(s.pattern[e] % n) + 1;
+    }
+    s.position.resize(keys.size());
+    for (std::size_t k = 0; k < keys.size(); ++k)
+      s.position[k] = std::size_t(std::lower_bound(s.pattern.begin(), s.pattern.end(), keys[k]) -
+                                  s.pattern.begin());
+  }
+  s.last_keys.swap(keys);
+
+  std::vector<double> values(s.pattern.size(), 0.0);
+  for (std::size_t k = 0; k < entry_values.size(); ++k) values[s.position[k]] += entry_values[k];
+  int changed[2] = {missing, 0};
+  changed[1] = int(missing || !s.factorised || values != s.values);
+  MPI_Allreduce(MPI_IN_PLACE, &changed[1], 1, MPI_INT, MPI_MAX, mpi_comm);
   s.values.swap(values);
 
   if (changed[0]) {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: MUMPS analysis"));
-    s.irn.swap(irn);
-    s.jcn.swap(jcn);
     s.n = n;
     s.analysed = s.factorised = false;
     s.m.n = MUMPS_INT(n);
@@ -323,6 +371,21 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   auto from = b_contiguous.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto to = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
   for (LO i = 0; i < n_local; ++i) to(i, 0) = from(i, 0);
+  // A row whose only nonzero is its diagonal (e.g. λ_j = 0 of an open contact node) fixes
+  // x_i = b_i / a_ii exactly; the factorisation's rounding would leave ~1e-16 there.
+  auto b_local = b.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (LO i = 0; i < n_local; ++i) {
+    double diagonal = 0.0;
+    bool only_diagonal = true;
+    for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1) && only_diagonal; ++p) {
+      if (local.values(p) == 0.0) continue;
+      if ((long long)(column_index[local.graph.entries(p)]) == offset + i)
+        diagonal = local.values(p);
+      else
+        only_diagonal = false;
+    }
+    if (only_diagonal && diagonal != 0.0) to(i, 0) = b_local(i, 0) / diagonal;
+  }
 }
 
 }  // namespace grout
