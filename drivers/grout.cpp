@@ -71,6 +71,7 @@ int run(const std::string& input_path, const std::string& output_dir,
                                                    : Teuchos::ParameterList();
   LinearSolver linear(linear_params, input.file + ": grout/solver/Linear Solver");
   linear.set_multiplier_pairing(problem.multiplier_pairing(), mesh.dimension);
+  linear.set_coordinates(mesh.coordinates, mesh.dimension);
   ResultsOutput output(mesh, input, solid, problem);
   SteppingOptions stepping;
   stepping.end_time = input.time.end;
