@@ -56,8 +56,24 @@ bool is_nodal_displacement_map(const Map& map, int dim, long long num_nodes) {
   return all_ok == 1;
 }
 
+Teuchos::RCP<MultiVector> node_coordinates(const Map& map, int dim,
+                                           const std::vector<double>& coordinates) {
+  std::vector<GO> nodes;
+  for (LO i = 0; i < LO(map.getNodeNumElements()); i += dim)
+    nodes.push_back(map.getGlobalElement(i) / dim);
+  const auto node_map =
+      Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(), nodes.data(),
+                           nodes.size(), 0, map.getComm()));
+  auto X = Teuchos::rcp(new MultiVector(node_map, dim));
+  auto v = X->getLocalViewHost(Tpetra::Access::OverwriteAll);
+  for (std::size_t n = 0; n < nodes.size(); ++n)
+    for (int d = 0; d < dim; ++d) v(n, d) = coordinates[std::size_t(nodes[n]) * dim + d];
+  return X;
+}
+
 void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ranks,
-                             const Teuchos::RCP<MultiVector>& null_space) {
+                             const Teuchos::RCP<MultiVector>& null_space,
+                             const Teuchos::RCP<MultiVector>& node_coordinates) {
   const auto set_default = [&](const std::string& key, const auto& value) {
     if (!muelu.isParameter(key)) muelu.set(key, value);
   };
@@ -67,14 +83,21 @@ void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ran
   set_default("aggregation: type", std::string("uncoupled"));
   set_default("transpose: use implicit", true);
   set_default("smoother: type", std::string("RILUK"));  // ILU(0), rank-local
-  if (num_ranks > 1 && !muelu.isParameter("coarse: type")) {
-    // Never KLU2 on a multi-rank communicator: relaxation on a small coarse grid.
-    muelu.set("coarse: type", std::string("RELAXATION"));
-    Teuchos::ParameterList& p = muelu.sublist("coarse: params");
-    if (!p.isParameter("relaxation: type"))
-      p.set("relaxation: type", std::string("Symmetric Gauss-Seidel"));
-    if (!p.isParameter("relaxation: sweeps")) p.set("relaxation: sweeps", 8);
-    set_default("coarse: max size", 200 * dim);
+  const int coarse_max_size = muelu.get<int>("coarse: max size", 2000);
+  if (num_ranks > 1 && !muelu.isParameter("coarse: type") &&
+      !muelu.isParameter("repartition: enable") && !node_coordinates.is_null() &&
+      null_space->getGlobalLength() > std::size_t(coarse_max_size)) {
+    // Never KLU2 on a multi-rank communicator: every coarse level moves to one rank (a
+    // subcommunicator), where the coarsest is factored by KLU2 as on one rank.
+    muelu.set("repartition: enable", true);
+    muelu.set("repartition: partitioner", std::string("zoltan2"));
+    muelu.set("repartition: start level", 1);
+    muelu.set("repartition: min rows per proc", 1000000000);
+    muelu.set("repartition: max imbalance", 1.2);
+    muelu.set("repartition: use subcommunicators", true);
+    muelu.sublist("repartition: params").set("algorithm", std::string("multijagged"));
+    muelu.sublist("user data").set("Coordinates", node_coordinates);
+    muelu.set("coarse: type", std::string("KLU2"));  // on the one-rank subcommunicator
   }
   if (!null_space.is_null() && !muelu.sublist("user data").isParameter("Nullspace"))
     muelu.sublist("user data").set("Nullspace", null_space);

@@ -17,8 +17,11 @@
 //   systems it needs fewer iterations than symmetric Gauss–Seidel or Chebyshev, whose
 //   counts grow more with the mesh (docs/performance.md, "Iterative solver"); a user's
 //   `smoother: type` replaces it;
-// - coarse solve: KLU2 on one rank; on more ranks relaxation (Debian's KLU2 is wrong on a
-//   multi-rank communicator, TOOLCHAIN.md) with a smaller coarse grid.
+// - coarse solve: KLU2 on one rank. On more ranks the coarse levels are repartitioned
+//   (Zoltan2 multi-jagged on the node coordinates) onto one rank with a subcommunicator,
+//   where KLU2 is exact (Debian's KLU2 is wrong on a multi-rank communicator, TOOLCHAIN.md;
+//   relaxation as the coarse solve lets GMRES stall on the condensed 3D systems). A system
+//   no larger than `coarse: max size` has no coarse level: its one level is smoothed.
 // Every default is only set when the user's `MueLu` sublist does not set that key.
 
 #include <Teuchos_ParameterList.hpp>
@@ -41,6 +44,12 @@ bool is_nodal_displacement_map(const Map& map, int dim, long long num_nodes);
 /// Grout's MueLu defaults for elasticity, merged under the user's `muelu` entries, plus the
 /// near-null space in `user data` (`muelu` is modified).
 void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ranks,
-                             const Teuchos::RCP<MultiVector>& null_space);
+                             const Teuchos::RCP<MultiVector>& null_space,
+                             const Teuchos::RCP<MultiVector>& node_coordinates);
+
+/// The coordinates of the nodes of a nodal displacement map (one row per node of `map`, in
+/// its order): MueLu's `Coordinates` for repartitioning.
+Teuchos::RCP<MultiVector> node_coordinates(const Map& map, int dim,
+                                           const std::vector<double>& coordinates);
 
 }  // namespace grout

@@ -412,6 +412,51 @@ TEST(CondensedSolve, MechanicsMultilevel3D) {
   check_mechanics(3, ContactKind::frictional, 0.3, "3D frictional, refined x3", 3, 100);
 }
 
+// The iterative path's defaults (GMRES + MueLu smoothed aggregation for elasticity, with the
+// rigid-body modes of the coordinates) on the condensed Jacobians of three uniformly refined
+// meshes (element size halved each time): the iteration count stays ≤ 60 and grows like
+// n^α with α = log(N_3 / N_1) / log(n_3 / n_1) ≤ 0.3 over the three meshes (n unknowns).
+// A one-level preconditioner has α ≈ 0.5 in 2D (iterations ∝ h⁻¹ ∝ n^½). Measured on one
+// rank: 2D 21, 22, 40 (α = 0.24); 3D 14, 20, 29 (α = 0.21); docs/performance.md,
+// "Iterative solver", has whole Newton solves. A coarse grid of at most 100 rows gives every
+// mesh a multilevel hierarchy, as at full size.
+void check_iteration_growth(int dim, ContactKind type, double mu, const std::vector<int>& levels,
+                            const std::string& label) {
+  std::vector<int> iterations;
+  std::vector<double> unknowns;
+  for (int k : levels) {
+    MechanicsCase mc;
+    mechanics_system(mc, dim, type, mu, k);
+    Teuchos::ParameterList p;
+    p.set("type", "belos");
+    p.sublist("MueLu").set("coarse: max size", 100);
+    LinearSolver solver(p, "test");
+    solver.set_multiplier_pairing(mc.sys.pairing, dim);
+    solver.set_coordinates(mc.mesh.coordinates, dim);
+    Vector x(mc.sys.J->getRowMap());
+    iterations.push_back(solver.solve(mc.sys.J, *mc.sys.b, x));
+    unknowns.push_back(double(mc.sys.J->getGlobalNumRows()));
+    EXPECT_LT(relative_residual(*mc.sys.J, x, *mc.sys.b), 1e-4) << label << " x" << k;
+    if (mc.sys.J->getRowMap()->getComm()->getRank() == 0)
+      std::printf("[iterations] %s, refined x%d: %lld unknowns, %d GMRES iterations\n",
+                  label.c_str(), k, (long long)mc.sys.J->getGlobalNumRows(), iterations.back());
+  }
+  for (std::size_t i = 0; i < iterations.size(); ++i)
+    EXPECT_LE(iterations[i], 60) << label << " x" << levels[i];
+  const double alpha = std::log(double(iterations.back()) / iterations.front()) /
+                       std::log(unknowns.back() / unknowns.front());
+  EXPECT_LE(alpha, 0.3) << label;
+  if (Tpetra::getDefaultComm()->getRank() == 0)
+    std::printf("[iterations] %s: growth exponent %.2f\n", label.c_str(), alpha);
+}
+
+TEST(CondensedSolve, IterationCountsStayBoundedUnderRefinement2D) {
+  check_iteration_growth(2, ContactKind::frictionless, 0.0, {8, 16, 32}, "2D frictionless");
+}
+TEST(CondensedSolve, IterationCountsStayBoundedUnderRefinement3D) {
+  check_iteration_growth(3, ContactKind::frictionless, 0.0, {2, 4, 8}, "3D frictionless");
+}
+
 TEST(CondensedSolve, OptionIsValidated) {
   Teuchos::ParameterList p;
   p.set("type", "belos");
