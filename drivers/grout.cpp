@@ -90,6 +90,7 @@ void run(const std::string& input_path, const std::string& output_dir,
                                                    : Teuchos::ParameterList();
   LinearSolver linear(linear_params, input.file + ": grout/solver/Linear Solver");
   linear.set_multiplier_pairing(problem.multiplier_pairing(), mesh.dimension);
+  linear.set_coordinates(mesh.coordinates, mesh.dimension);
   std::unique_ptr<ResultsOutput> output;
   agree_on_errors(*comm,
                   [&] { output = std::make_unique<ResultsOutput>(mesh, input, solid, problem); });

@@ -3,17 +3,19 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 
 namespace grout {
 
 namespace {
 
-enum Kind : int { kIdentity = 0, kEliminated = 1, kSwapped = 2 };
+enum Kind : int { kIdentity = 0, kEliminated = 1, kSwapped = 2, kMasterPivot = 3 };
 
 struct Row {
   std::vector<GO> cols;
@@ -67,6 +69,14 @@ struct MultiplierCondensation::Impl {
   // Of the last condense(), replicated per pair.
   std::vector<int> kind;
   std::vector<double> lambda_known, slave_known, pivot;
+  std::vector<GO> pivot_row;            ///< row that eliminates λ_t (B: slave, D: master)
+  std::unordered_map<GO, int> by_slot;  ///< reduced slot taken by a λ-row -> pair
+  // Kind D multipliers are eliminated together: P[k][j] = J[r_k, t_j] over their pivot rows
+  // r_k, λ_D = P⁻¹ (b_r − Σ_{c ∉ D} J[r, c] x_c). P is block diagonal over the groups of
+  // multipliers sharing pivot rows; inverse_rows[j] = the nonzeros (k, P⁻¹[j][k]).
+  std::vector<int> d_pairs;              ///< kind D pairs, in order
+  std::unordered_map<int, int> d_index;  ///< pair -> index in d_pairs
+  std::vector<std::vector<std::pair<int, double>>> inverse_rows;
   Teuchos::RCP<const Map> full_map, reduced_map;
   Teuchos::RCP<Matrix> A;
   Teuchos::RCP<Vector> rhs;
@@ -82,44 +92,192 @@ struct MultiplierCondensation::Impl {
     return it == by_slave.end() ? -1 : it->second;
   }
   GO group(int p) const { return slave[p] / dofs_per_node; }
+  /// A slave displacement whose value is known (prescribed: kinds C and D).
+  bool known_slave(int q) const {
+    return q >= 0 && (kind[q] == kSwapped || kind[q] == kMasterPivot);
+  }
+  int pair_of_slot(GO g) const {
+    const auto it = by_slot.find(g);
+    return it == by_slot.end() ? -1 : it->second;
+  }
+
+  // Kind D (see the header): the displacement row r that is no slave dof, not taken by
+  // another pair, with the largest |J[r, t]|; a pair without one stays kind C (collective).
+  void select_master_pivots(const Matrix& J, std::vector<int> open) {
+    const auto comm = J.getRowMap()->getComm();
+    const auto& row_map = *J.getRowMap();
+    const auto& col_map = *J.getColMap();
+    const auto local = J.getLocalMatrixHost();
+    std::unordered_map<GO, int> column_to_open;
+    std::vector<GO> taken;
+    std::unordered_map<GO, int> candidate_columns;  // every kind D candidate's λ
+    for (int p : open) candidate_columns[lambda[p]] = p;
+    while (!open.empty()) {
+      column_to_open.clear();
+      for (std::size_t k = 0; k < open.size(); ++k) column_to_open[lambda[open[k]]] = int(k);
+      const std::size_t n = open.size();
+      std::vector<double> best(n, 0.0), best_all(n, 0.0), value(n, 0.0), value_all(n, 0.0);
+      std::vector<long long> row(n, -1), row_all(n, -1);
+      for (LO i = 0; i < LO(row_map.getNodeNumElements()); ++i) {
+        const GO g = row_map.getGlobalElement(i);
+        if (pair_of_lambda(g) >= 0 || pair_of_slave(g) >= 0) continue;
+        if (std::find(taken.begin(), taken.end(), g) != taken.end()) continue;
+        // A row that holds two candidates' λ only if no other row will do: its elimination
+        // would refer to the other's pivot row.
+        int held = 0;
+        for (auto e = local.graph.row_map(i); e < local.graph.row_map(i + 1); ++e)
+          held += candidate_columns.count(col_map.getGlobalElement(local.graph.entries(e)));
+        const double penalty = held > 1 ? 1e-6 : 1.0;
+        for (auto e = local.graph.row_map(i); e < local.graph.row_map(i + 1); ++e) {
+          const auto it = column_to_open.find(col_map.getGlobalElement(local.graph.entries(e)));
+          if (it == column_to_open.end()) continue;
+          const int k = it->second;
+          const double a = penalty * std::abs(local.values(e));
+          if (a > best[k] || (a == best[k] && a > 0.0 && g > row[k]))
+            best[k] = a, row[k] = g, value[k] = local.values(e);
+        }
+      }
+      Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, int(n), best.data(), best_all.data());
+      for (std::size_t k = 0; k < n; ++k)
+        if (best[k] != best_all[k] || best[k] == 0.0) row[k] = -1, value[k] = 0.0;
+      Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, int(n), row.data(), row_all.data());
+      for (std::size_t k = 0; k < n; ++k)
+        if (row[k] != row_all[k]) value[k] = 0.0;
+      Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, int(n), value.data(), value_all.data());
+      std::vector<int> still_open;
+      std::vector<GO> chosen;
+      for (std::size_t k = 0; k < n; ++k) {
+        const int p = open[k];
+        if (row_all[k] < 0) continue;  // no candidate row: stays kind C
+        if (std::find(chosen.begin(), chosen.end(), GO(row_all[k])) != chosen.end()) {
+          still_open.push_back(p);  // taken by an earlier pair this round: next round
+          continue;
+        }
+        chosen.push_back(row_all[k]);
+        kind[p] = kMasterPivot, pivot_row[p] = row_all[k], pivot[p] = value_all[k];
+      }
+      taken.insert(taken.end(), chosen.begin(), chosen.end());
+      open.swap(still_open);
+    }
+  }
+
+  // P and its inverse, block by block (replicated; collective).
+  void invert_pivot_block(const Matrix& J) {
+    d_pairs.clear(), d_index.clear(), inverse_rows.clear();
+    for (int p = 0; p < int(kind.size()); ++p)
+      if (kind[p] == kMasterPivot) d_index[p] = int(d_pairs.size()), d_pairs.push_back(p);
+    const int n = int(d_pairs.size());
+    if (n == 0) return;
+    if (double(n) * n > 4e6)
+      throw std::runtime_error(
+          "condense_multipliers: too many multipliers of prescribed slave "
+          "dofs on tied or sticking nodes (" +
+          std::to_string(n) + ")");
+    std::unordered_map<GO, int> row_to_k, column_to_j;
+    for (int k = 0; k < n; ++k) row_to_k[pivot_row[d_pairs[k]]] = k;
+    for (int j = 0; j < n; ++j) column_to_j[lambda[d_pairs[j]]] = j;
+    const auto& row_map = *J.getRowMap();
+    const auto& col_map = *J.getColMap();
+    const auto local = J.getLocalMatrixHost();
+    std::vector<double> P(std::size_t(n) * n, 0.0), P_all(P.size(), 0.0);
+    for (LO i = 0; i < LO(row_map.getNodeNumElements()); ++i) {
+      const auto rk = row_to_k.find(row_map.getGlobalElement(i));
+      if (rk == row_to_k.end()) continue;
+      for (auto e = local.graph.row_map(i); e < local.graph.row_map(i + 1); ++e) {
+        const auto cj = column_to_j.find(col_map.getGlobalElement(local.graph.entries(e)));
+        if (cj != column_to_j.end()) P[std::size_t(rk->second) * n + cj->second] += local.values(e);
+      }
+    }
+    Teuchos::reduceAll(*J.getRowMap()->getComm(), Teuchos::REDUCE_SUM, int(P.size()), P.data(),
+                       P_all.data());
+    // Blocks: connected components of P's graph (union-find).
+    std::vector<int> parent(n);
+    for (int k = 0; k < n; ++k) parent[k] = k;
+    const std::function<int(int)> root = [&](int k) {
+      return parent[k] == k ? k : parent[k] = root(parent[k]);
+    };
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < n; ++j)
+        if (P_all[std::size_t(k) * n + j] != 0.0) parent[root(k)] = root(j);
+    std::map<int, std::vector<int>> blocks;
+    for (int k = 0; k < n; ++k) blocks[root(k)].push_back(k);
+    inverse_rows.assign(n, {});
+    for (const auto& [r, members] : blocks) {
+      // Gauss–Jordan with partial pivoting on the block [P_b | I].
+      const int m = int(members.size());
+      std::vector<double> a(std::size_t(m) * 2 * m, 0.0);
+      for (int x = 0; x < m; ++x) {
+        for (int y = 0; y < m; ++y)
+          a[x * 2 * m + y] = P_all[std::size_t(members[x]) * n + members[y]];
+        a[x * 2 * m + m + x] = 1.0;
+      }
+      for (int c = 0; c < m; ++c) {
+        int best = c;
+        for (int x = c + 1; x < m; ++x)
+          if (std::abs(a[x * 2 * m + c]) > std::abs(a[best * 2 * m + c])) best = x;
+        if (a[best * 2 * m + c] == 0.0)
+          throw std::runtime_error(
+              "condense_multipliers: singular pivot block for the multipliers "
+              "of prescribed slave dofs on tied or sticking nodes");
+        for (int y = 0; y < 2 * m; ++y) std::swap(a[c * 2 * m + y], a[best * 2 * m + y]);
+        const double d = a[c * 2 * m + c];
+        for (int y = 0; y < 2 * m; ++y) a[c * 2 * m + y] /= d;
+        for (int x = 0; x < m; ++x)
+          if (x != c && a[x * 2 * m + c] != 0.0) {
+            const double f = a[x * 2 * m + c];
+            for (int y = 0; y < 2 * m; ++y) a[x * 2 * m + y] -= f * a[c * 2 * m + y];
+          }
+      }
+      // P λ = q: rows of P are pivot rows k, columns multipliers j, so λ_j = Σ_k P⁻¹[j][k] q_k.
+      for (int x = 0; x < m; ++x)
+        for (int y = 0; y < m; ++y)
+          if (const double v = a[x * 2 * m + m + y]; v != 0.0)
+            inverse_rows[members[x]].emplace_back(members[y], v);
+    }
+  }
 
   // Row `row` with every multiplier and every known displacement substituted: entries on
   // reduced unknowns (GIDs of the reduced map; a swapped slot s stands for λ_t(s)).
   void reduce(const Row& row, std::map<GO, double>& out, double& rhs_out) const {
     out.clear();
-    rhs_out = row.rhs;
-    const auto add_u = [&](GO c, double v) {
-      const int q = pair_of_slave(c);
-      if (q >= 0 && kind[q] == kSwapped)
-        rhs_out -= v * slave_known[q];
-      else
-        out[c] += v;
-    };
+    rhs_out = 0.0;
+    accumulate(row, -1, false, 1.0, out, rhs_out, 0);
+  }
+  /// factor × λ_D[j] in row form (as accumulate()): λ_D[j] = Σ_k P⁻¹[j][k] (b_r_k −
+  /// Σ_{c ∉ D} J[r_k, c] x_c).
+  void accumulate_d(int j, double factor, std::map<GO, double>& out, double& rhs_out,
+                    int depth) const {
+    for (const auto& [k, a] : inverse_rows[j])
+      accumulate(rows.at(pivot_row[d_pairs[k]]), -1, true, factor * a, out, rhs_out, depth + 1);
+  }
+  // Adds factor × (row with its multipliers and known displacements substituted, column
+  // `exclude` and, if skip_d, the kind D columns left out) to out / rhs_out. An eliminated
+  // λ_t of kind B is (b_s − Σ_{c≠t} J[s,c] x_c) / J[s,t] of its slave row s; kind D see
+  // accumulate_d().
+  void accumulate(const Row& row, GO exclude, bool skip_d, double factor, std::map<GO, double>& out,
+                  double& rhs_out, int depth) const {
+    if (depth > 4) throw std::logic_error("condense_multipliers: substitution too deep");
+    rhs_out += factor * row.rhs;
     for (std::size_t e = 0; e < row.cols.size(); ++e) {
       const GO c = row.cols[e];
-      const double v = row.vals[e];
+      if (c == exclude) continue;
+      const double v = factor * row.vals[e];
       const int p = pair_of_lambda(c);
       if (p < 0) {
-        add_u(c, v);
-        continue;
-      }
-      if (kind[p] == kIdentity) {
+        const int q = pair_of_slave(c);
+        if (known_slave(q))
+          rhs_out -= v * slave_known[q];
+        else
+          out[c] += v;
+      } else if (kind[p] == kIdentity) {
         rhs_out -= v * lambda_known[p];
       } else if (kind[p] == kSwapped) {
         out[slave[p]] += v;
-      } else {  // λ_t = (b_s − Σ J[s,c] x_c) / D
-        const Row& s_row = rows.at(slave[p]);
-        const double f = v / pivot[p];
-        rhs_out -= f * s_row.rhs;
-        for (std::size_t k = 0; k < s_row.cols.size(); ++k) {
-          const GO c2 = s_row.cols[k];
-          if (c2 == c) continue;
-          const int p2 = pair_of_lambda(c2);
-          if (p2 >= 0)
-            rhs_out += f * s_row.vals[k] * lambda_known[p2];  // kind A (checked)
-          else
-            add_u(c2, -f * s_row.vals[k]);
-        }
+      } else {
+        if (kind[p] == kEliminated)
+          accumulate(rows.at(pivot_row[p]), c, false, -v / pivot[p], out, rhs_out, depth + 1);
+        else if (!skip_d)  // v λ_t = v P⁻¹ (b_r − ...): the row form gets −v P⁻¹ (...)
+          accumulate_d(d_index.at(p), -v, out, rhs_out, depth);
       }
     }
   }
@@ -170,7 +328,7 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
   add_rows(J, b, m.rows);
 
   // 1. Classify the pairs from their owners' rows; replicate.
-  enum { kIsIdentity, kLambda, kDiagonalOnly, kSlaveValue, kPivot, kFields };
+  enum { kIsIdentity, kLambda, kDiagonalOnly, kSlaveValue, kPivot, kInNodeRows, kFields };
   std::vector<double> local(std::size_t(n_pairs) * kFields, 0.0), global(local.size(), 0.0);
   std::vector<std::pair<int, int>> slave_lambda_columns;  // (pair, other pair) in slave rows
   for (LO i = 0; i < LO(row_map.getNodeNumElements()); ++i) {
@@ -188,6 +346,9 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
         local[p * kFields + kIsIdentity] = 1.0;
         local[p * kFields + kLambda] = row.rhs / diagonal;
       }
+      for (GO c : row.cols)  // multipliers of the same node in this λ-row
+        if (const int q = m.pair_of_lambda(c); q >= 0 && m.group(q) == m.group(p))
+          local[q * kFields + kInNodeRows] = 1.0;
     }
     if (const int p = m.pair_of_slave(g); p >= 0) {
       double diagonal = 0.0, D = 0.0;
@@ -215,6 +376,8 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
   m.lambda_known.assign(n_pairs, 0.0);
   m.slave_known.assign(n_pairs, 0.0);
   m.pivot.assign(n_pairs, 0.0);
+  m.pivot_row.assign(n_pairs, -1);
+  std::vector<int> master_pivots;  // kind C pairs whose node's λ-rows lack their multiplier
   std::string error;
   for (int p = 0; p < n_pairs; ++p) {
     const double* f = &global[std::size_t(p) * kFields];
@@ -224,13 +387,14 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
     if (f[kIsIdentity] != 0.0)
       m.kind[p] = kIdentity;
     else if (f[kPivot] != 0.0)
-      m.kind[p] = kEliminated;
+      m.kind[p] = kEliminated, m.pivot_row[p] = m.slave[p];
     else if (f[kDiagonalOnly] != 0.0)
       m.kind[p] = kSwapped;
     else if (error.empty())
       error = "multiplier " + std::to_string(m.lambda[p]) + ": its slave row " +
               std::to_string(m.slave[p]) +
               " has no entry in its column and is not a prescribed (diagonal-only) row";
+    if (m.kind[p] == kSwapped && f[kInNodeRows] == 0.0) master_pivots.push_back(p);
   }
   int bad_local = 0;
   for (const auto& [p, q] : slave_lambda_columns)
@@ -240,13 +404,20 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
   if (bad && error.empty()) error = "a slave row couples to more than one unknown multiplier";
   if (!error.empty())
     throw std::runtime_error("condense_multipliers: cannot condense the multipliers: " + error);
+  m.select_master_pivots(J, master_pivots);
+  m.invert_pivot_block(J);
+  m.by_slot.clear();
+  for (int p = 0; p < n_pairs; ++p)
+    if (m.kind[p] != kIdentity)
+      m.by_slot[m.kind[p] == kMasterPivot ? m.pivot_row[p] : m.slave[p]] = p;
   {
     int counts[4] = {0, 0, 0, 0};
-    for (int p = 0; p < n_pairs; ++p) ++counts[m.kind[p]];
+    for (int p = 0; p < n_pairs; ++p) ++counts[std::min(int(m.kind[p]), 3)];
     m.stats = Statistics();
     m.stats.identity = counts[kIdentity];
     m.stats.eliminated = counts[kEliminated];
     m.stats.swapped = counts[kSwapped];
+    m.stats.master_pivots = counts[kMasterPivot];
   }
 
   // 2. The reduced map: the displacement dofs of J's row map.
@@ -262,7 +433,7 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
   //    every eliminated multiplier in the rows to reduce and of the owned multipliers.
   std::map<GO, std::vector<int>> groups;  // node -> its B/C pairs, of owned B/C slots
   for (GO g : reduced)
-    if (const int p = m.pair_of_slave(g); p >= 0 && m.kind[p] != kIdentity) groups[m.group(p)];
+    if (const int p = m.pair_of_slot(g); p >= 0) groups[m.group(p)];
   if (!groups.empty())
     for (int p = 0; p < n_pairs; ++p)
       if (m.kind[p] != kIdentity)
@@ -272,6 +443,9 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
     for (const auto& [node, pairs] : groups)
       for (int p : pairs)
         if (!row_map.isNodeGlobalElement(m.lambda[p])) needed.push_back(m.lambda[p]);
+    for (int p = 0; p < n_pairs; ++p)  // few rows: every rank holds them all
+      if (m.kind[p] == kMasterPivot && !row_map.isNodeGlobalElement(m.pivot_row[p]))
+        needed.push_back(m.pivot_row[p]);
     import_rows(J, b, needed, m.rows);
   }
   {
@@ -291,6 +465,9 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
   }
 
   // 4. Reduced rows.
+  const auto slot_of = [&](int p) {
+    return m.kind[p] == kMasterPivot ? m.pivot_row[p] : m.slave[p];
+  };
   std::map<GO, std::map<GO, double>> assigned;  // slot -> reduced row (scaled)
   std::map<GO, double> assigned_rhs;
   int zero_diagonals = 0;
@@ -304,7 +481,7 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
       double row_max = 0.0;
       for (const auto& [c, v] : R[i]) row_max = std::max(row_max, std::abs(v));
       for (int k = 0; k < n; ++k) {
-        const auto it = R[i].find(m.slave[pairs[k]]);
+        const auto it = R[i].find(slot_of(pairs[k]));
         if (it != R[i].end() && row_max > 0.0) w[i][k] = std::abs(it->second) / row_max;
       }
     }
@@ -330,7 +507,7 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
       }
     }
     for (int k = 0; k < n; ++k) {
-      const GO slot = m.slave[pairs[k]];
+      const GO slot = slot_of(pairs[k]);
       if (!m.reduced_map->isNodeGlobalElement(slot)) continue;
       const int i = best[k];
       double diagonal = 0.0;
@@ -366,6 +543,12 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
       if (auto it = assigned.find(g); it != assigned.end()) {
         R = &it->second;
         bv(i, 0) = assigned_rhs.at(g);
+      } else if (const int q = m.pair_of_slave(g); q >= 0 && m.kind[q] == kMasterPivot) {
+        // prescribed slave dof whose multiplier a master row eliminates: x_s = b_s / J[s, s]
+        const Row& s_row = m.rows.at(g);
+        out.clear();
+        for (std::size_t e = 0; e < s_row.cols.size(); ++e) out[g] += s_row.vals[e];
+        bv(i, 0) = s_row.rhs;
       } else {
         m.reduce(m.rows.at(g), out, bv(i, 0));
       }
@@ -397,7 +580,7 @@ void MultiplierCondensation::expand(const Vector& y, Vector& x) const {
     if (m.kind[p] != kEliminated) continue;
     for (GO c : m.rows.at(m.slave[p]).cols) {
       const int q = m.pair_of_slave(c);
-      if (m.pair_of_lambda(c) < 0 && !(q >= 0 && m.kind[q] == kSwapped)) needed.push_back(c);
+      if (m.pair_of_lambda(c) < 0 && !m.known_slave(q)) needed.push_back(c);
     }
   }
   std::sort(needed.begin(), needed.end());
@@ -408,41 +591,72 @@ void MultiplierCondensation::expand(const Vector& y, Vector& x) const {
                            needed.size(), 0, comm));
   Vector y_needed(needed_map);
   y_needed.doImport(y, Import(m.reduced_map, needed_map), Tpetra::INSERT);
-  const auto yn = y_needed.getLocalViewHost(Tpetra::Access::ReadOnly);
-  const auto yv = y.getLocalViewHost(Tpetra::Access::ReadOnly);
-  const auto y_at = [&](GO g) { return yn(needed_map->getLocalElement(g), 0); };
+  {
+    const auto yn = y_needed.getLocalViewHost(Tpetra::Access::ReadOnly);
+    const auto yv = y.getLocalViewHost(Tpetra::Access::ReadOnly);
+    const auto y_at = [&](GO g) { return yn(needed_map->getLocalElement(g), 0); };
 
-  auto xv = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
-  for (LO i = 0; i < LO(row_map.getNodeNumElements()); ++i) {
-    const GO g = row_map.getGlobalElement(i);
-    const int p = m.pair_of_lambda(g);
-    if (p < 0) {
-      const int q = m.pair_of_slave(g);
-      xv(i, 0) = q >= 0 && m.kind[q] == kSwapped ? m.slave_known[q]
-                                                 : yv(m.reduced_map->getLocalElement(g), 0);
-      continue;
-    }
-    if (m.kind[p] == kIdentity) {
-      xv(i, 0) = m.lambda_known[p];
-    } else if (m.kind[p] == kSwapped) {
-      xv(i, 0) = y_at(m.slave[p]);
-    } else {
-      const Row& s_row = m.rows.at(m.slave[p]);
-      double v = s_row.rhs;
-      for (std::size_t e = 0; e < s_row.cols.size(); ++e) {
-        const GO c = s_row.cols[e];
-        if (c == g) continue;
-        const int p2 = m.pair_of_lambda(c);
-        const int q = m.pair_of_slave(c);
-        if (p2 >= 0)
-          v -= s_row.vals[e] * m.lambda_known[p2];
-        else if (q >= 0 && m.kind[q] == kSwapped)
-          v -= s_row.vals[e] * m.slave_known[q];
-        else
-          v -= s_row.vals[e] * y_at(c);
+    auto xv = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (LO i = 0; i < LO(row_map.getNodeNumElements()); ++i) {
+      const GO g = row_map.getGlobalElement(i);
+      const int p = m.pair_of_lambda(g);
+      if (p < 0) {
+        const int q = m.pair_of_slave(g);
+        xv(i, 0) = m.known_slave(q) ? m.slave_known[q] : yv(m.reduced_map->getLocalElement(g), 0);
+        continue;
       }
-      xv(i, 0) = v / m.pivot[p];
+      if (m.kind[p] == kIdentity) {
+        xv(i, 0) = m.lambda_known[p];
+      } else if (m.kind[p] == kSwapped) {
+        xv(i, 0) = y_at(m.slave[p]);
+      } else if (m.kind[p] == kMasterPivot) {
+        xv(i, 0) = 0.0;  // below, from the other entries of x
+      } else {
+        const Row& s_row = m.rows.at(m.slave[p]);
+        double v = s_row.rhs;
+        for (std::size_t e = 0; e < s_row.cols.size(); ++e) {
+          const GO c = s_row.cols[e];
+          if (c == g) continue;
+          const int p2 = m.pair_of_lambda(c);
+          const int q = m.pair_of_slave(c);
+          if (p2 >= 0)
+            v -= s_row.vals[e] * m.lambda_known[p2];
+          else if (m.known_slave(q))
+            v -= s_row.vals[e] * m.slave_known[q];
+          else
+            v -= s_row.vals[e] * y_at(c);
+        }
+        xv(i, 0) = v / m.pivot[p];
+      }
     }
+  }
+  if (m.stats.master_pivots == 0) return;
+  // Kind D: λ_D = P⁻¹ (b_r − Σ_{c ∉ D} J[r, c] x_c), the pivot rows substituted down to the
+  // reduced unknowns y.
+  std::vector<GO> columns;
+  std::vector<std::tuple<LO, int, std::map<GO, double>, double>> owned_d;  // (row, pair, R, r)
+  for (LO i = 0; i < LO(row_map.getNodeNumElements()); ++i) {
+    const int p = m.pair_of_lambda(row_map.getGlobalElement(i));
+    if (p < 0 || m.kind[p] != kMasterPivot) continue;
+    std::map<GO, double> R;
+    double r = 0.0;
+    m.accumulate_d(m.d_index.at(p), 1.0, R, r, 0);
+    for (const auto& [c, v] : R) columns.push_back(c);
+    owned_d.emplace_back(i, p, std::move(R), r);
+  }
+  std::sort(columns.begin(), columns.end());
+  columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+  const auto columns_map =
+      Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(), columns.data(),
+                           columns.size(), 0, comm));
+  Vector y_columns(columns_map);
+  y_columns.doImport(y, Import(m.reduced_map, columns_map), Tpetra::INSERT);
+  const auto yc = y_columns.getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto xv = x.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (const auto& [i, p, R, r] : owned_d) {
+    double v = r;
+    for (const auto& [c, a] : R) v -= a * yc(columns_map->getLocalElement(c), 0);
+    xv(i, 0) = v;
   }
 }
 

@@ -13,6 +13,13 @@
 //   C  row s holds only its diagonal (a prescribed slave dof, whose λ column was eliminated):
 //      x_s = b_s / J[s, s] is known; the unknown of slot s becomes λ_t, and a λ-row of the
 //      node takes the place of row s.
+//   D  as C, but no λ-row of the node holds λ_t (tied or sticking: the rows constrain only
+//      displacements), so slot s would get a zero diagonal. λ_t is eliminated with another
+//      displacement row r instead, the one with the largest |J[r, t]| (a master row, where
+//      −M_jl λ_t acts): λ_t = (b_r − Σ_{c≠t} J[r, c] x_c) / J[r, t], substituted (with the
+//      multipliers of row r) into every other row with a λ_t column. Row s stays the
+//      prescribed row x_s = b_s / J[s, s], and a λ-row of the node (the tie, now on the
+//      master dofs) takes slot r. The reduced system keeps only displacement unknowns.
 // The reduced system lives on the displacement dofs of J's row map (every GID that is not a
 // paired multiplier). Within a node (the pairs whose slave dofs share s / dofs_per_node),
 // the λ-rows are assigned to the node's B/C slots by the permutation with the largest
@@ -57,6 +64,7 @@ class MultiplierCondensation {
     int eliminated = 0;      ///< pairs of kind B
     int swapped = 0;         ///< pairs of kind C
     int zero_diagonals = 0;  ///< reduced rows left with a zero diagonal (direct solver only)
+    int master_pivots = 0;   ///< pairs of kind D
   };
   /// Of the last condense(), global.
   const Statistics& statistics() const;

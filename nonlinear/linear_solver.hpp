@@ -1,32 +1,47 @@
 #pragma once
 // Linear solves K x = b, chosen by the `solver/Linear Solver` sublist:
-//   type: mumps (default)    sparse direct MUMPS solve on the distributed matrix
+//   type: auto (default)     the direct solver default_direct_type() (MUMPS) for a system of
+//                            fewer than auto_iterative_threshold(dim) global unknowns,
+//                            otherwise the iterative path (type: belos with its defaults).
+//   type: mumps              sparse direct MUMPS solve on the distributed matrix
 //                            (nonlinear/mumps_solver.hpp; `MUMPS` sublist: ordering,
 //                            symmetric).
 //   type: amesos2            direct KLU2 solve. Debian's KLU2 is silently wrong on a
 //                            communicator of more than one rank (TOOLCHAIN.md), so the
 //                            system is gathered to rank 0 and solved on a 1-rank
 //                            communicator, then scattered back.
-//   type: belos              Krylov solver `Belos/Solver Type` (CG default, or GMRES) with a
-//                            MueLu preconditioner (`MueLu` sublist passed through; on more than
-//                            one rank the coarse solve defaults to relaxation, not KLU2).
+//   type: belos              Krylov solver `Belos/Solver Type` with a MueLu preconditioner.
+//                            Defaults: the multipliers are condensed (below), CG on a system
+//                            without multipliers (symmetric positive definite), GMRES on the
+//                            condensed one (not symmetric: condensed_solve.hpp); MueLu smoothed
+//                            aggregation for elasticity (elasticity_preconditioner.hpp) when
+//                            the coordinates are given (set_coordinates). The `MueLu` sublist
+//                            overrides any of these settings.
 // --- condensed multipliers (nonlinear/condensed_solve.hpp) ---
-//   condense_multipliers: true   (default false) with either type: the paired multipliers
-//                            (set_multiplier_pairing) are condensed per slave node and the
-//                            displacement-only system is solved (Belos default: GMRES, the
-//                            reduced matrix is not symmetric), then λ is recovered. A
-//                            reduced system with a zero diagonal (prescribed slave dof on a
-//                            tied/sticking node) is solved directly even with type: belos.
+//   condense_multipliers: true   (default: true on the iterative path, false on the direct
+//                            one) the paired multipliers (set_multiplier_pairing) are
+//                            condensed per slave node and the displacement-only system is
+//                            solved, then λ is recovered. A reduced system left with a zero
+//                            diagonal (not produced by Grout's contact rows) is solved
+//                            directly even with type: belos.
 // --- end condensed multipliers ---
 
 #include <Teuchos_ParameterList.hpp>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "assembly/tpetra_types.hpp"
 
 namespace grout {
+
+/// The direct solver that `type: auto` picks for small systems.
+std::string default_direct_type();
+/// `type: auto` uses the iterative path from this many global unknowns (u and λ) on.
+long long auto_iterative_threshold(int dim);
+/// The type `type: auto` resolves to for a system of `global_unknowns` in `dim` dimensions.
+std::string auto_linear_solver_type(long long global_unknowns, int dim);
 
 class LinearSolver {
  public:
@@ -48,9 +63,15 @@ class LinearSolver {
   bool condenses_multipliers() const;
   // --- end condensed multipliers ---
 
+  /// Nodal coordinates (node-major x0 y0 [z0] x1 ..., every node on every rank): the
+  /// iterative path builds the rigid-body near-null space of MueLu from them.
+  void set_coordinates(std::vector<double> coordinates, int dim);
+  /// The type of the last solve (auto resolved): amesos2 or belos; empty before any solve.
+  const std::string& last_type() const;
+
  private:
   int solve_system(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
-                   const std::string& belos_type);
+                   const std::string& type, const std::string& belos_type);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -70,6 +70,24 @@ TEST(LinearSolver, BelosGmresWithMueLuConverges) {
   check_solver(params);
 }
 
+// type: auto (the default) resolves through one threshold per dimension: the direct solver
+// below it, the iterative path from it on; the solve reports the type it used.
+TEST(LinearSolver, AutoPicksTheDirectSolverForSmallSystems) {
+  for (int dim : {2, 3}) {
+    const long long n = auto_iterative_threshold(dim);
+    EXPECT_EQ(auto_linear_solver_type(n - 1, dim), default_direct_type());
+    EXPECT_EQ(auto_linear_solver_type(n, dim), "belos");
+  }
+  EXPECT_GT(auto_iterative_threshold(2), auto_iterative_threshold(3));
+  LinearSolver solver(Teuchos::ParameterList(), "test");
+  const auto A = tridiagonal(200);
+  Vector b(A->getRowMap()), x(A->getRowMap());
+  b.randomize();
+  EXPECT_EQ(solver.solve(A, b, x), 1);
+  EXPECT_EQ(solver.last_type(), default_direct_type());
+  EXPECT_LT(relative_residual(*A, x, b), 1e-10);
+}
+
 TEST(LinearSolver, UnknownTypeIsAnInputError) {
   Teuchos::ParameterList params;
   params.set("type", "superlu");

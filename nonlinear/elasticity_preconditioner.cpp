@@ -1,0 +1,106 @@
+#include "nonlinear/elasticity_preconditioner.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <stdexcept>
+#include <string>
+
+namespace grout {
+
+Teuchos::RCP<MultiVector> rigid_body_modes(const Map& map, int dim,
+                                           const std::vector<double>& coordinates) {
+  const std::size_t num_nodes = coordinates.size() / std::size_t(dim);
+  // Centroid of all nodes: rotations about it keep the modes well scaled.
+  double centre[3] = {0.0, 0.0, 0.0};
+  for (std::size_t n = 0; n < num_nodes; ++n)
+    for (int d = 0; d < dim; ++d) centre[d] += coordinates[n * dim + d];
+  for (int d = 0; d < dim; ++d) centre[d] /= num_nodes > 0 ? double(num_nodes) : 1.0;
+
+  const int num_modes = dim == 2 ? 3 : 6;
+  auto modes = Teuchos::rcp(new MultiVector(Teuchos::rcpFromRef(map), num_modes));
+  auto v = modes->getLocalViewHost(Tpetra::Access::OverwriteAll);
+  for (LO i = 0; i < LO(map.getNodeNumElements()); ++i) {
+    const GO g = map.getGlobalElement(i);
+    const GO node = g / dim;
+    const int c = int(g % dim);
+    if (node >= GO(num_nodes))
+      throw std::invalid_argument("rigid_body_modes: dof " + std::to_string(g) +
+                                  " is not a displacement dof");
+    double x[3] = {0.0, 0.0, 0.0};
+    for (int d = 0; d < dim; ++d) x[d] = coordinates[node * dim + d] - centre[d];
+    for (int k = 0; k < num_modes; ++k) v(i, k) = 0.0;
+    v(i, c) = 1.0;  // translation e_c
+    if (dim == 2) {
+      // rotation about z: (−y, x)
+      v(i, 2) = c == 0 ? -x[1] : x[0];
+    } else {
+      // rotations about x: (0, −z, y); about y: (z, 0, −x); about z: (−y, x, 0)
+      const double rx[3] = {0.0, -x[2], x[1]}, ry[3] = {x[2], 0.0, -x[0]},
+                   rz[3] = {-x[1], x[0], 0.0};
+      v(i, 3) = rx[c], v(i, 4) = ry[c], v(i, 5) = rz[c];
+    }
+  }
+  return modes;
+}
+
+bool is_nodal_displacement_map(const Map& map, int dim, long long num_nodes) {
+  int ok = 1;
+  const LO n = LO(map.getNodeNumElements());
+  if (n % dim != 0) ok = 0;
+  for (LO i = 0; i < n && ok; ++i) {
+    const GO g = map.getGlobalElement(i);
+    if (g < 0 || g >= GO(num_nodes) * dim || int(g % dim) != int(i % dim)) ok = 0;
+    if (i % dim != 0 && g != map.getGlobalElement(i - 1) + 1) ok = 0;
+  }
+  int all_ok = 0;
+  Teuchos::reduceAll(*map.getComm(), Teuchos::REDUCE_MIN, ok, Teuchos::outArg(all_ok));
+  return all_ok == 1;
+}
+
+Teuchos::RCP<MultiVector> node_coordinates(const Map& map, int dim,
+                                           const std::vector<double>& coordinates) {
+  std::vector<GO> nodes;
+  for (LO i = 0; i < LO(map.getNodeNumElements()); i += dim)
+    nodes.push_back(map.getGlobalElement(i) / dim);
+  const auto node_map =
+      Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(), nodes.data(),
+                           nodes.size(), 0, map.getComm()));
+  auto X = Teuchos::rcp(new MultiVector(node_map, dim));
+  auto v = X->getLocalViewHost(Tpetra::Access::OverwriteAll);
+  for (std::size_t n = 0; n < nodes.size(); ++n)
+    for (int d = 0; d < dim; ++d) v(n, d) = coordinates[std::size_t(nodes[n]) * dim + d];
+  return X;
+}
+
+void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ranks,
+                             const Teuchos::RCP<MultiVector>& null_space,
+                             const Teuchos::RCP<MultiVector>& node_coordinates) {
+  const auto set_default = [&](const std::string& key, const auto& value) {
+    if (!muelu.isParameter(key)) muelu.set(key, value);
+  };
+  set_default("verbosity", std::string("none"));
+  set_default("number of equations", dim);
+  set_default("multigrid algorithm", std::string("sa"));
+  set_default("aggregation: type", std::string("uncoupled"));
+  set_default("transpose: use implicit", true);
+  set_default("smoother: type", std::string("RILUK"));  // ILU(0), rank-local
+  const int coarse_max_size = muelu.get<int>("coarse: max size", 2000);
+  if (num_ranks > 1 && !muelu.isParameter("coarse: type") &&
+      !muelu.isParameter("repartition: enable") && !node_coordinates.is_null() &&
+      null_space->getGlobalLength() > std::size_t(coarse_max_size)) {
+    // Never KLU2 on a multi-rank communicator: every coarse level moves to one rank (a
+    // subcommunicator), where the coarsest is factored by KLU2 as on one rank.
+    muelu.set("repartition: enable", true);
+    muelu.set("repartition: partitioner", std::string("zoltan2"));
+    muelu.set("repartition: start level", 1);
+    muelu.set("repartition: min rows per proc", 1000000000);
+    muelu.set("repartition: max imbalance", 1.2);
+    muelu.set("repartition: use subcommunicators", true);
+    muelu.sublist("repartition: params").set("algorithm", std::string("multijagged"));
+    muelu.sublist("user data").set("Coordinates", node_coordinates);
+    muelu.set("coarse: type", std::string("KLU2"));  // on the one-rank subcommunicator
+  }
+  if (!null_space.is_null() && !muelu.sublist("user data").isParameter("Nullspace"))
+    muelu.sublist("user data").set("Nullspace", null_space);
+}
+
+}  // namespace grout
