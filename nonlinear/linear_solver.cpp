@@ -29,7 +29,7 @@ struct LinearSolver::Impl {
 
 LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::string& where)
     : impl_(std::make_unique<Impl>()) {
-  impl_->type = params.isParameter("type") ? params.get<std::string>("type") : "mumps";
+  impl_->type = params.isParameter("type") ? params.get<std::string>("type") : "amesos2";
   if (impl_->type != "mumps" && impl_->type != "amesos2" && impl_->type != "belos") {
     throw InputError(where + "/type: unknown linear solver '" + impl_->type +
                      "' (expected: mumps, amesos2, belos)");

@@ -1,9 +1,9 @@
 #pragma once
 // Linear solves K x = b, chosen by the `solver/Linear Solver` sublist:
-//   type: mumps (default)    sparse direct MUMPS solve on the distributed matrix
+//   type: mumps              sparse direct MUMPS solve on the distributed matrix
 //                            (nonlinear/mumps_solver.hpp; `MUMPS` sublist: ordering,
 //                            symmetric).
-//   type: amesos2            direct KLU2 solve. Debian's KLU2 is silently wrong on a
+//   type: amesos2 (default)  direct KLU2 solve. Debian's KLU2 is silently wrong on a
 //                            communicator of more than one rank (TOOLCHAIN.md), so the
 //                            system is gathered to rank 0 and solved on a 1-rank
 //                            communicator, then scattered back.
