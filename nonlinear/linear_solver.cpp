@@ -33,16 +33,15 @@ struct LinearSolver::Impl {
   std::string last_type;
 };
 
+// KLU2 (gathered to one rank: the same answer on any number of ranks). MUMPS is faster in 3D
+// but its distributed factorisation changes the last digits between rank counts.
 std::string default_direct_type() {
-  return "mumps";
+  return "amesos2";
 }
 
-// MUMPS measured to 3.1e4 dofs in 3D (one solve 6 CPU s, 0.6 GB) and the iterative path to
-// 5.2e4 dofs in 2D (docs/performance.md); nested-dissection fill makes a direct 3D solve grow
-// as n^(4/3) in memory and n^2 in work, so 3D systems beyond 1e5 dofs go to the iterative path.
-// 2D fill grows as n log n: a direct solve stays cheaper up to 1e6 dofs.
+// Measured with KLU2 (docs/input.md, "type: auto"; docs/performance.md, "Iterative solver").
 long long auto_iterative_threshold(int dim) {
-  return dim == 3 ? 100000 : 1000000;
+  return dim == 3 ? 20000 : 200000;
 }
 
 std::string auto_linear_solver_type(long long global_unknowns, int dim) {

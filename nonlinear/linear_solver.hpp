@@ -1,12 +1,12 @@
 #pragma once
 // Linear solves K x = b, chosen by the `solver/Linear Solver` sublist:
-//   type: auto (default)     the direct solver default_direct_type() (MUMPS) for a system of
+//   type: auto (default)     the direct solver default_direct_type() (KLU2) for a system of
 //                            fewer than auto_iterative_threshold(dim) global unknowns,
 //                            otherwise the iterative path (type: belos with its defaults).
 //   type: mumps              sparse direct MUMPS solve on the distributed matrix
 //                            (nonlinear/mumps_solver.hpp; `MUMPS` sublist: ordering,
 //                            symmetric).
-//   type: amesos2            direct KLU2 solve. Debian's KLU2 is silently wrong on a
+//   type: amesos2 (default)  direct KLU2 solve. Debian's KLU2 is silently wrong on a
 //                            communicator of more than one rank (TOOLCHAIN.md), so the
 //                            system is gathered to rank 0 and solved on a 1-rank
 //                            communicator, then scattered back.

@@ -73,9 +73,10 @@ class Mesh:
         return np.array(sorted(nodes), dtype=np.int64)
 
     def add_side_set_node_sets(self):
-        """A node set per side set (same name, its nodes) where no node set has that name."""
+        """A node set per side set (its nodes; written as <name>_nodes) where none has that name
+        and <name>_nodes fits in the 32 characters of an Exodus name."""
         for name in self.side_sets:
-            if name not in self.node_sets:
+            if name not in self.node_sets and len(name) + len("_nodes") <= 32:
                 self.node_sets[name] = self.side_set_nodes(name)
 
     def drop_unused_nodes(self):
@@ -109,9 +110,22 @@ def orient(coords, topology, conn):
     return conn
 
 
+def name_node_sets_apart(mesh):
+    """A node set named like a side set becomes <name>_nodes (grout_mesh's rule: ParaView's
+    IOSS reader mixes up the data of a node set and a side set of the same name)."""
+    for name in [n for n in mesh.node_sets if n in mesh.side_sets]:
+        new = name + "_nodes"
+        if new in mesh.node_sets:
+            raise MeshError("node sets '%s' and '%s' would get the same name" % (name, new))
+        mesh.node_sets[new] = mesh.node_sets.pop(name)
+
+
 def write_exodus(mesh, path, title="grout mesh"):
-    """Writes mesh as an Exodus II file (netCDF classic, 64-bit offsets, 1-based ids)."""
+    """Writes mesh as an Exodus II file (netCDF classic, 64-bit offsets, 1-based ids); node sets
+    named like a side set are renamed <name>_nodes first (name_node_sets_apart)."""
     import netCDF4
+
+    name_node_sets_apart(mesh)
 
     def names_var(ds, var, dim, names):
         v = ds.createVariable(var, "S1", (dim, "len_name"))

@@ -7,7 +7,7 @@ Physical groups become named Exodus entities (python3-gmsh reads the model):
   - a physical group of the mesh dimension (surfaces in 2D, volumes in 3D): an element block
     (QUAD4, TRI3, TETRA4 or HEX8; one element type per group);
   - a physical group one dimension lower (curves in 2D, surfaces in 3D): a side set (the block
-    element sides its line/face elements lie on) and a node set of its nodes, same name;
+    element sides its line/face elements lie on) and a node set of its nodes, named <name>_nodes;
   - a physical group of points: a node set.
 Elements of the mesh dimension outside every physical group are ignored, and so are nodes
 no block element uses. A malformed or unreadable file, an unnamed physical group or a

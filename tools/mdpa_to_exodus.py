@@ -14,8 +14,9 @@ Elements and Conditions lists; ModelPartData, Properties and tables are skipped.
   - for a SubModelPart holding nodes but no conditions (e.g. Kratos' Contact_Part), one side
     set "<part>_<block>" per block ("parts_" dropped from the block name; skipped with a note
     if longer than 32 characters): the block's boundary sides whose nodes all lie in the part.
-Each side set also gets a node set of the same name (its nodes), unless a part already has
-that name. Nodes no element uses are dropped (the rest renumbered); elements of negative measure are
+Each side set also gets a node set of its nodes, unless a part already has that name; a node
+set named like a side set is written as <name>_nodes (ParaView's IOSS reader mixes up sets of
+the same name). Nodes no element uses are dropped (the rest renumbered); elements of negative measure are
 re-ordered. Malformed input stops with "file:line: message" and exit code 2.
 """
 import os

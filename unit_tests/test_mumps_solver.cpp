@@ -100,7 +100,8 @@ TEST(MumpsSolver, AgreesWithKlu2) {
   b.randomize();
   Teuchos::ParameterList mumps, klu;
   klu.set("type", "amesos2");
-  LinearSolver(mumps, "test").solve(A, b, x_mumps);  // mumps is the default
+  mumps.set("type", "mumps");
+  LinearSolver(mumps, "test").solve(A, b, x_mumps);
   LinearSolver(klu, "test").solve(A, b, x_klu);
   EXPECT_LT(relative_difference(x_klu, x_mumps), 1e-10);
 }

@@ -29,7 +29,7 @@ def main(stem):
                                  ["displ_x", "displ_y", "contact_pressure"])
     if msg:
         failures.append(msg)
-    force = abs(Results("np1/%s.e" % stem).global_var("reaction_lower_bottom_y"))
+    force = abs(Results("np1/%s.e" % stem).global_var("reaction_lower_bottom_nodes_y"))
     print("%s: b = %.5f (Hertz %.5f, err %.2f %%), p_max = %.5g (Hertz %.5g, err %.2f %%), "
           "|reaction| = %.8g (P = %g), 1 vs 2 ranks %.1e"
           % (stem, lv["b"], B, 100 * lv["err_b"], lv["p_max"], P0, 100 * lv["err_p"], force, P,

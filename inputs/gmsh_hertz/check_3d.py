@@ -45,11 +45,11 @@ def fit(r, p):
 def main(stem):
     failures = []
     res = Results("np1/%s.e" % stem)
-    s = cc.node_set(res, "upper_contact")
+    s = cc.node_set(res, "upper_contact_nodes")
     xyz = res.coordinates()
     r = np.hypot(xyz[0, s], xyz[1, s])
     p = res.nodal("contact_pressure")[s]
-    F = 4 * abs(res.global_var("reaction_lower_bottom_z"))
+    F = 4 * abs(res.global_var("reaction_lower_bottom_nodes_z"))
     a_h, p0_h = hertz_sphere(F)
     a, p0 = fit(r, p)
     diff, msg = cc.compare_ranks("np1/%s.e" % stem, "np2/%s.e" % stem,
