@@ -56,7 +56,7 @@ LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::stri
     throw InputError(where + "/type: unknown linear solver '" + impl_->type +
                      "' (expected: auto, mumps, amesos2, belos)");
   }
-  if (impl_->type == "mumps" || impl_->type == "auto") {
+  if (impl_->type == "mumps") {
     impl_->mumps = std::make_unique<MumpsSolver>(mumps_options_from(
         params.isSublist("MUMPS") ? params.sublist("MUMPS") : Teuchos::ParameterList(),
         where + "/MUMPS"));
