@@ -140,7 +140,7 @@ void check_distributed_equals_serial(int dim, ContactKind type, double mu,
   const auto world = Tpetra::getDefaultComm();
   const auto self = world->split(world->getRank(), 0);
   const Mesh mesh = dim == 2 ? two_block_mesh_2d(6, 2, 7, 2) : two_block_mesh_3d(4, 3, 1, 5, 4, 1);
-  Input input = contact_input(dim, type, mu);
+  Input input = contact_input(dim, type, mu, StrainKind::small);
   input.contact[0].geometry = geometry;
   const SolidProblem solid(mesh, input, world), solid_serial(mesh, input, self);
   MechanicsProblem problem(solid, mesh, input), serial(solid_serial, mesh, input);

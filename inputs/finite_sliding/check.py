@@ -21,8 +21,8 @@ failures = []
 rows = {np_: list(csv.DictReader(open("np%d/drag_mu0.csv" % np_))) for np_ in (1, 2)}
 for np_ in (1, 2):
     t = np.array([float(r["time"]) for r in rows[np_]])
-    rx = np.array([float(r["reaction_die_top_x"]) for r in rows[np_]])
-    ry = -np.array([float(r["reaction_die_top_y"]) for r in rows[np_]])
+    rx = np.array([float(r["reaction_die_top_nodes_x"]) for r in rows[np_]])
+    ry = -np.array([float(r["reaction_die_top_nodes_y"]) for r in rows[np_]])
     active = np.array([int(r["active_nodes"]) for r in rows[np_]])
     if not (active == active.max()).all() or active.max() < 9:
         failures.append("np%d: slave nodes left contact: %s" % (np_, active))
