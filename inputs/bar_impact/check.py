@@ -41,6 +41,23 @@ if np.abs(drift).max() > 0.01:
 if drift.max() > 1e-9:
     failures.append("contact adds energy: %.3e of the initial" % drift.max())
 
+# Energy history (bar_impact_energy.png): kinetic, strain and total against the initial value.
+import matplotlib.pyplot as plt  # noqa: E402
+
+kin = np.array([float(r["kinetic_energy"]) for r in rows])
+strain = np.array([float(r["strain_energy"]) for r in rows])
+fig, ax = plt.subplots(figsize=(6, 3.6))
+ax.plot(t, kin / E0, label="kinetic")
+ax.plot(t, strain / E0, label="strain")
+ax.plot(t, E / E0, "k", label="total")
+ax.axvline(duration, color="grey", ls=":", label="2L/c")
+ax.set_xlabel("t")
+ax.set_ylabel("energy / initial kinetic energy")
+ax.set_title("Bar impact, Newmark, stabilised contact")
+ax.legend(loc="center right")
+fig.tight_layout()
+fig.savefig("bar_impact_energy.png", dpi=120)
+
 r = Results("np1/bar_impact.e")
 y = r.coordinates()[1]
 vy = r.nodal("velocity_y")
