@@ -46,8 +46,8 @@ def svk_cauchy(F):
 def check_patch(name, F, sigma):
     dim = 2 if name.endswith("quad4") else 3
     names = (["stress_xx", "stress_yy", "stress_xy", "stress_zz"] if dim == 2 else
-             ["stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_xz"])
-    index = {"xx": (0, 0), "yy": (1, 1), "zz": (2, 2), "xy": (0, 1), "yz": (1, 2), "xz": (0, 2)}
+             ["stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_zx"])
+    index = {"xx": (0, 0), "yy": (1, 1), "zz": (2, 2), "xy": (0, 1), "yz": (1, 2), "zx": (0, 2)}
     runs = {}
     for np_ in (1, 2):
         r = Results("np%d/%s.e" % (np_, name))
