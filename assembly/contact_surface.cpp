@@ -88,7 +88,6 @@ void check_bodies(const Mesh& mesh, const Input& input, const ContactInput& cont
   }
 }
 
-
 std::vector<GlobalIndex> unique_nodes(const SurfaceFaces& faces) {
   std::vector<GlobalIndex> nodes;
   for (std::size_t f = 0; f < faces.size(); ++f)

@@ -11,8 +11,8 @@
 
 #include "io/errors.hpp"
 #include "nonlinear/condensed_solve.hpp"
-#include "nonlinear/mumps_solver.hpp"
 #include "nonlinear/elasticity_preconditioner.hpp"
+#include "nonlinear/mumps_solver.hpp"
 
 namespace grout {
 
@@ -191,11 +191,11 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   // A reduced row with a zero diagonal (a prescribed slave dof whose node's multiplier rows
   // do not involve that multiplier: tied or sticking) defeats relaxation smoothers: such a
   // reduced system goes to the direct solver.
-  const int iterations = condensation.statistics().zero_diagonals > 0
-                             ? solve_system(condensation.matrix(), condensation.rhs(), y,
-                                            default_direct_type(), "")
-                             : solve_system(condensation.matrix(), condensation.rhs(), y, type,
-                                            impl_->belos_type_given ? impl_->belos_type : "GMRES");
+  const int iterations =
+      condensation.statistics().zero_diagonals > 0
+          ? solve_system(condensation.matrix(), condensation.rhs(), y, default_direct_type(), "")
+          : solve_system(condensation.matrix(), condensation.rhs(), y, type,
+                         impl_->belos_type_given ? impl_->belos_type : "GMRES");
   condensation.expand(y, x);
   return iterations;
 }
