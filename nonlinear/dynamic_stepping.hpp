@@ -8,12 +8,11 @@
 
 namespace grout {
 
-/// Starts from x = 0 (the initial velocity is in `problem`), then takes `steps` equal time
-/// steps t_k = end · k / steps. A step whose Newton solve fails is retried with half the step
-/// (the times stay exact fractions of the end time), up to max_cuts times in a row; then
-/// ConvergenceError. Every converged step goes to `on_step` at once; `mass_solver` solves for
-/// the initial acceleration. Prints one line per step and, at the end, the drift of the total
-/// energy (rank 0).
+/// Starts from x = 0 (the initial velocity is in `problem`) and marches through the time steps
+/// of march_steps (load_stepping.hpp: exact fractions of the end time, cut-backs per step).
+/// Every converged step goes to `on_step` at once; `mass_solver` solves for the initial
+/// acceleration. Prints one line per step and, at the end, the drift of the total energy
+/// (rank 0).
 void solve_time_steps(DynamicProblem& problem, LinearSolver& linear, LinearSolver& mass_solver,
                       const NewtonOptions& newton, const SteppingOptions& stepping,
                       const std::function<void(const ConvergedStep&)>& on_step);

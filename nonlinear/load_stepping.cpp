@@ -7,17 +7,18 @@
 
 namespace grout {
 
-void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const NewtonOptions& newton,
-                      const SteppingOptions& stepping,
-                      const std::function<void(const ConvergedStep&)>& on_step) {
+void march_steps(NonlinearProblem& problem, LinearSolver& linear, const NewtonOptions& newton,
+                 const SteppingOptions& stepping,
+                 const std::function<void(double t, Vector& x)>& begin_step,
+                 const std::function<void(ConvergedStep&)>& accept) {
   const bool root = problem.map()->getComm()->getRank() == 0;
-  Vector x(problem.map()), trial(problem.map()), F(problem.map());
+  Vector x(problem.map()), trial(problem.map());
   StepTimes times(stepping.end_time, stepping.steps);  // t = t_end·k/den, never a sum of Δt
   int step = 0, cuts = 0;
   while (!times.finished()) {
     const double t_next = times.next_time();
     trial.assign(x);
-    problem.begin_step(t_next, trial);
+    begin_step(t_next, trial);
     std::ostringstream prefix;
     prefix << "  step " << step + 1 << " t = " << t_next;
     const NewtonReport report = solve_newton(problem, trial, linear, newton, prefix.str());
@@ -41,18 +42,29 @@ void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const New
     const double previous_time = times.time();
     times.advance();
     ++step;
-    problem.residual(x, F);  // reactions and contact results at the converged state
-    problem.commit_step();
     ConvergedStep converged;
     converged.step = step;
     converged.time = times.time();
     converged.step_size = converged.time - previous_time;
     converged.newton = &report;
     converged.state = &x;
-    on_step(converged);
+    accept(converged);
     times.after_success(report.iterations, stepping.step_size);
     cuts = 0;  // the budget of halvings is per step
   }
+}
+
+void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const NewtonOptions& newton,
+                      const SteppingOptions& stepping,
+                      const std::function<void(const ConvergedStep&)>& on_step) {
+  Vector F(problem.map());
+  march_steps(
+      problem, linear, newton, stepping, [&](double t, Vector& x) { problem.begin_step(t, x); },
+      [&](ConvergedStep& converged) {
+        problem.residual(*converged.state, F);  // reactions and contact results there
+        problem.commit_step();
+        on_step(converged);
+      });
 }
 
 }  // namespace grout

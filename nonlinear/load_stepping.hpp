@@ -35,6 +35,16 @@ class ConvergenceError : public ExitCodeError {
   explicit ConvergenceError(const std::string& what) : ExitCodeError(what, 3) {}
 };
 
+/// The stepping loop of every analysis: from x = 0, times from StepTimes (fixed or adaptive,
+/// stepping.step_size), each step begun by begin_step(t, x) (prescribed values into x) and
+/// solved by Newton; a failed step is retried with half the increment, up to max_cuts times
+/// per step, then ConvergenceError; a converged one goes to `accept` (its state is the
+/// converged x, which accept may evaluate and commit).
+void march_steps(NonlinearProblem& problem, LinearSolver& linear, const NewtonOptions& newton,
+                 const SteppingOptions& stepping,
+                 const std::function<void(double t, Vector& x)>& begin_step,
+                 const std::function<void(ConvergedStep&)>& accept);
+
 /// Steps from t = 0 to end_time in `steps` equal increments (or, adaptive, starting with
 /// end_time / steps and doubling after easy steps; step_size.hpp). A step whose Newton solve
 /// fails is retried with half the increment, up to max_cuts times per step (the count restarts
