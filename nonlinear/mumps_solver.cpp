@@ -95,7 +95,7 @@ struct MumpsSolver::Impl {
   bool factorised = false;
   MumpsStatistics stats;
 
-  // The analysed pattern on this rank: sorted keys row * n + col (0-based, contiguous
+  // The analysed pattern on this rank: sorted keys row * n + col (0-based, MUMPS
   // numbering) and MUMPS's 1-based irn, jcn; the values in that order; the matrix entries'
   // positions in it, and their keys at the last solve (to skip the search when unchanged).
   GO n = -1;
@@ -104,8 +104,10 @@ struct MumpsSolver::Impl {
   std::vector<MUMPS_INT> irn, jcn;
   std::vector<double> values;
 
-  // b gathered to rank 0 and x scattered back, in the contiguous numbering.
-  Teuchos::RCP<const Map> contiguous, root;
+  // b gathered to rank 0 and x scattered back: `source` is the row map (global-id numbering)
+  // or its contiguous renumbering.
+  bool gid_numbering = false;
+  Teuchos::RCP<const Map> source, root;
   Teuchos::RCP<Export> to_root;
   std::vector<double> rhs;
 
@@ -227,49 +229,68 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   if (LO(b.getLocalLength()) != n_local || LO(x.getLocalLength()) != n_local)
     throw std::logic_error("MumpsSolver::solve: b and x must be on the matrix's row map");
 
-  // The contiguous numbering: this rank's rows are offset .. offset + n_local - 1, in the
-  // row map's local order. Rebuilt only when a rank's row count changes.
-  int same_layout = s.contiguous.is_null()
+  // MUMPS's numbering. When the row map's global ids are 0 .. n-1 (Grout's maps: node * dim
+  // + component, then the multipliers in slave-node order), they are used as they are: the
+  // matrix MUMPS sees, and so its ordering and pivot sequence, is then the same on any number
+  // of ranks. Otherwise a contiguous renumbering (this rank's rows offset .. offset + n_local
+  // - 1, in the row map's local order). Rebuilt only when the layout changes.
+  const bool gid_numbering = row_map->getMinAllGlobalIndex() == 0 &&
+                             row_map->getMaxAllGlobalIndex() == n - 1 && row_map->isOneToOne();
+  int same_layout = s.source.is_null()
                         ? 0
-                        : int(s.n == n && LO(s.contiguous->getNodeNumElements()) == n_local);
+                        : int(s.n == n && s.gid_numbering == gid_numbering &&
+                              (gid_numbering ? s.source->isSameAs(*row_map)
+                                             : LO(s.source->getNodeNumElements()) == n_local));
   MPI_Allreduce(MPI_IN_PLACE, &same_layout, 1, MPI_INT, MPI_MIN, mpi_comm);
   if (!same_layout) {
-    s.contiguous = Teuchos::rcp(new Map(n, std::size_t(n_local), 0, K->getRowMap()->getComm()));
-    s.root = Teuchos::rcp(
-        new Map(n, std::size_t(comm.getRank() == 0 ? n : 0), 0, K->getRowMap()->getComm()));
-    s.to_root = Teuchos::rcp(new Export(s.contiguous, s.root));
+    s.gid_numbering = gid_numbering;
+    s.source = gid_numbering
+                   ? row_map
+                   : Teuchos::RCP<const Map>(new Map(n, std::size_t(n_local), 0, row_map->getComm()));
+    s.root = Teuchos::rcp(new Map(n, std::size_t(comm.getRank() == 0 ? n : 0), 0, row_map->getComm()));
+    s.to_root = Teuchos::rcp(new Export(s.source, s.root));
+    // The analysed pattern is in the old numbering.
+    s.analysed = false;
   }
-  const GO offset = s.contiguous->getMinGlobalIndex();
 
-  // Contiguous index of every column of K: the owned rows' indices imported to the columns.
-  std::vector<double> column_index(K->getColMap()->getNodeNumElements());
-  {
-    Vector row_index(row_map), col_index(K->getColMap());
+  // MUMPS index (0-based) of every owned row and of every column of K.
+  std::vector<long long> row_index(std::size_t(n_local), 0);
+  std::vector<long long> column_index(K->getColMap()->getNodeNumElements());
+  if (gid_numbering) {
+    for (LO i = 0; i < n_local; ++i) row_index[std::size_t(i)] = row_map->getGlobalElement(i);
+    const auto& col_map = *K->getColMap();
+    for (std::size_t j = 0; j < column_index.size(); ++j)
+      column_index[j] = col_map.getGlobalElement(LO(j));
+  } else {
+    const GO offset = s.source->getMinGlobalIndex();
+    for (LO i = 0; i < n_local; ++i) row_index[std::size_t(i)] = offset + i;
+    // The owned rows' indices imported to the columns.
+    Vector row_values(row_map), col_values(K->getColMap());
     {
-      auto r = row_index.getLocalViewHost(Tpetra::Access::OverwriteAll);
+      auto r = row_values.getLocalViewHost(Tpetra::Access::OverwriteAll);
       for (LO i = 0; i < n_local; ++i) r(i, 0) = double(offset + i);
     }
     const auto importer = K->getGraph()->getImporter();
     if (!importer.is_null() && K->getDomainMap()->isSameAs(*row_map)) {
-      col_index.doImport(row_index, *importer, Tpetra::INSERT);
+      col_values.doImport(row_values, *importer, Tpetra::INSERT);
     } else {
-      col_index.doImport(row_index, Import(row_map, K->getColMap()), Tpetra::INSERT);
+      col_values.doImport(row_values, Import(row_map, K->getColMap()), Tpetra::INSERT);
     }
-    auto c = col_index.getLocalViewHost(Tpetra::Access::ReadOnly);
-    for (std::size_t j = 0; j < column_index.size(); ++j) column_index[j] = c(j, 0);
+    auto c = col_values.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (std::size_t j = 0; j < column_index.size(); ++j) column_index[j] = (long long)(c(j, 0));
   }
 
-  // This rank's entries (lower triangle only when symmetric) as keys row * n + col (0-based,
-  // contiguous numbering), in the matrix's storage order.
+  // This rank's entries (lower triangle only when symmetric) as keys row * n + col (0-based
+  // MUMPS numbering), in the matrix's storage order.
   const auto local = K->getLocalMatrixHost();
   std::vector<long long> keys;
   std::vector<double> entry_values;
   keys.reserve(local.nnz());
   entry_values.reserve(local.nnz());
   for (LO i = 0; i < n_local; ++i) {
-    const long long row = offset + i;
+    const long long row = row_index[std::size_t(i)];
     for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p) {
-      const long long col = (long long)(column_index[local.graph.entries(p)]);
+      const long long col = column_index[local.graph.entries(p)];
       if (s.options.symmetric && col > row) continue;
       keys.push_back(row * n + col);
       entry_values.push_back(local.values(p));
@@ -345,13 +366,13 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
 
   // Solve with b gathered on rank 0; scatter x back.
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: MUMPS solve"));
-  Vector b_contiguous(s.contiguous), b_root(s.root);
+  Vector b_source(s.source), b_root(s.root);
   {
     auto from = b.getLocalViewHost(Tpetra::Access::ReadOnly);
-    auto to = b_contiguous.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    auto to = b_source.getLocalViewHost(Tpetra::Access::OverwriteAll);
     for (LO i = 0; i < n_local; ++i) to(i, 0) = from(i, 0);
   }
-  b_root.doExport(b_contiguous, *s.to_root, Tpetra::INSERT);
+  b_root.doExport(b_source, *s.to_root, Tpetra::INSERT);
   const bool is_root = comm.getRank() == 0;
   if (is_root) {
     auto r = b_root.getLocalViewHost(Tpetra::Access::ReadOnly);
@@ -367,8 +388,8 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
     auto r = b_root.getLocalViewHost(Tpetra::Access::OverwriteAll);
     for (GO i = 0; i < n; ++i) r(i, 0) = s.rhs[std::size_t(i)];
   }
-  b_contiguous.doImport(b_root, *s.to_root, Tpetra::INSERT);
-  auto from = b_contiguous.getLocalViewHost(Tpetra::Access::ReadOnly);
+  b_source.doImport(b_root, *s.to_root, Tpetra::INSERT);
+  auto from = b_source.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto to = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
   for (LO i = 0; i < n_local; ++i) to(i, 0) = from(i, 0);
   // A row whose only nonzero is its diagonal (e.g. λ_j = 0 of an open contact node) fixes
@@ -379,7 +400,7 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
     bool only_diagonal = true;
     for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1) && only_diagonal; ++p) {
       if (local.values(p) == 0.0) continue;
-      if ((long long)(column_index[local.graph.entries(p)]) == offset + i)
+      if (column_index[local.graph.entries(p)] == row_index[std::size_t(i)])
         diagonal = local.values(p);
       else
         only_diagonal = false;
