@@ -8,17 +8,17 @@
 // Φ₂ = 2N₂ − N₁ (its Jacobian is constant). This header also holds the generic small dense
 // inverse and A_e = D_e M_e⁻¹ that the TRI3/QUAD4 code (dual_basis_3d.hpp) reuses.
 
-#include <Kokkos_Core.hpp>
 #include <cmath>
 
 #include "kernels/gauss_line.hpp"
+#include "kernels/kernel_macros.hpp"
 #include "kernels/mortar_types.hpp"
 
 namespace grout {
 
 /// \brief LINE2 shape functions N₁ = (1 − ξ)/2, N₂ = (1 + ξ)/2 on ξ ∈ [−1, 1].
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION void line2_shape(const Scalar& xi, Scalar N[2]) {
+GROUT_INLINE_FUNCTION void line2_shape(const Scalar& xi, Scalar N[2]) {
   N[0] = 0.5 * (1.0 - xi);
   N[1] = 0.5 * (1.0 + xi);
 }
@@ -26,7 +26,7 @@ KOKKOS_INLINE_FUNCTION void line2_shape(const Scalar& xi, Scalar N[2]) {
 /// \brief LINE2 dual shape functions, closed form Φ₁ = 2N₁ − N₂ = (1 − 3ξ)/2,
 /// Φ₂ = 2N₂ − N₁ = (1 + 3ξ)/2 (Wohlmuth 2000; DESIGN.md §2).
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION void line2_dual_shape(const Scalar& xi, Scalar Phi[2]) {
+GROUT_INLINE_FUNCTION void line2_dual_shape(const Scalar& xi, Scalar Phi[2]) {
   Phi[0] = 0.5 * (1.0 - 3.0 * xi);
   Phi[1] = 0.5 * (1.0 + 3.0 * xi);
 }
@@ -35,7 +35,7 @@ KOKKOS_INLINE_FUNCTION void line2_dual_shape(const Scalar& xi, Scalar Phi[2]) {
 /// pivoting (pivots chosen on the value part, so it is valid for Sacado scalars).
 /// \return degenerate if a pivot is below 1e-14 · max|A_ij| (singular to working precision).
 template <class Scalar, int N>
-KOKKOS_INLINE_FUNCTION MortarStatus invert_small_matrix(const Scalar A[N][N], Scalar Ainv[N][N]) {
+GROUT_INLINE_FUNCTION MortarStatus invert_small_matrix(const Scalar A[N][N], Scalar Ainv[N][N]) {
   static_assert(N >= 1 && N <= 8, "grout::invert_small_matrix: N must be in [1, 8]");
   using std::abs;
   Scalar a[N][N];
@@ -81,8 +81,8 @@ KOKKOS_INLINE_FUNCTION MortarStatus invert_small_matrix(const Scalar A[N][N], Sc
 /// \brief Dual-basis coefficients A_e = D_e M_e⁻¹ (Popp et al. 2010, eq. 26) from
 /// De[j] = ∫_e N_j dA and Me[j][k] = ∫_e N_j N_k dA (any quadrature exact for N_j N_k det J).
 template <class Scalar, int N>
-KOKKOS_INLINE_FUNCTION MortarStatus dual_basis_coefficients(const Scalar De[N],
-                                                            const Scalar Me[N][N], Scalar A[N][N]) {
+GROUT_INLINE_FUNCTION MortarStatus dual_basis_coefficients(const Scalar De[N],
+                                                           const Scalar Me[N][N], Scalar A[N][N]) {
   Scalar Minv[N][N];
   const MortarStatus s = invert_small_matrix<Scalar, N>(Me, Minv);
   if (s != MortarStatus::ok) return s;
@@ -93,8 +93,8 @@ KOKKOS_INLINE_FUNCTION MortarStatus dual_basis_coefficients(const Scalar De[N],
 
 /// \brief Φ_j = Σ_k a_jk N_k at one point, from the coefficients and the standard shape values.
 template <class Scalar, int N>
-KOKKOS_INLINE_FUNCTION void dual_shape_from_coefficients(const Scalar A[N][N], const Scalar Nv[N],
-                                                         Scalar Phi[N]) {
+GROUT_INLINE_FUNCTION void dual_shape_from_coefficients(const Scalar A[N][N], const Scalar Nv[N],
+                                                        Scalar Phi[N]) {
   for (int j = 0; j < N; ++j) {
     Phi[j] = A[j][0] * Nv[0];
     for (int k = 1; k < N; ++k) Phi[j] += A[j][k] * Nv[k];
@@ -105,8 +105,8 @@ KOKKOS_INLINE_FUNCTION void dual_shape_from_coefficients(const Scalar A[N][N], c
 /// with the 2-point Gauss rule (exact: N_j N_k is quadratic, det J = L/2 constant). Equals
 /// [[2, −1], [−1, 2]] for any non-degenerate element (the closed form of line2_dual_shape).
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus dual_basis_coefficients_line2(const Scalar x[2][2],
-                                                                  Scalar A[2][2]) {
+GROUT_INLINE_FUNCTION MortarStatus dual_basis_coefficients_line2(const Scalar x[2][2],
+                                                                 Scalar A[2][2]) {
   using std::sqrt;
   const Scalar dx = x[1][0] - x[0][0], dy = x[1][1] - x[0][1];
   const Scalar ll = dx * dx + dy * dy;

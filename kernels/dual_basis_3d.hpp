@@ -12,9 +12,8 @@
 // exact for flat faces (N_j N_k j(ξ) is of degree ≤ 3 per direction), and for warped faces
 // (j = |g_1 × g_2| is then not polynomial) accurate to far below the mortar tolerances.
 
-#include <Kokkos_Core.hpp>
-
 #include "kernels/face_geometry_3d.hpp"
+#include "kernels/kernel_macros.hpp"
 #include "kernels/mortar_types.hpp"
 
 namespace grout {
@@ -23,9 +22,9 @@ namespace grout {
 /// (4×4 Gauss–Legendre on QUAD4, exact on flat faces; closed form on TRI3:
 /// d_j = A/3, m_jk = A(1 + δ_jk)/12).
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION void face_mass_matrix(int n, const Scalar x[max_face_nodes][3],
-                                             Scalar d[max_face_nodes],
-                                             Scalar m[max_face_nodes][max_face_nodes]) {
+GROUT_INLINE_FUNCTION void face_mass_matrix(int n, const Scalar x[max_face_nodes][3],
+                                            Scalar d[max_face_nodes],
+                                            Scalar m[max_face_nodes][max_face_nodes]) {
   for (int j = 0; j < max_face_nodes; ++j) {
     d[j] = 0.0;
     for (int k = 0; k < max_face_nodes; ++k) m[j][k] = 0.0;
@@ -61,7 +60,7 @@ KOKKOS_INLINE_FUNCTION void face_mass_matrix(int n, const Scalar x[max_face_node
 /// \brief Inverse of a small symmetric positive definite matrix by Gauss–Jordan elimination
 /// without pivoting (SPD: the pivots are positive). \return false on a non-positive pivot.
 template <class Scalar, int N>
-KOKKOS_INLINE_FUNCTION bool invert_spd_matrix(int n, const Scalar a_in[N][N], Scalar inv[N][N]) {
+GROUT_INLINE_FUNCTION bool invert_spd_matrix(int n, const Scalar a_in[N][N], Scalar inv[N][N]) {
   Scalar a[N][N];
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
@@ -85,7 +84,7 @@ KOKKOS_INLINE_FUNCTION bool invert_spd_matrix(int n, const Scalar a_in[N][N], Sc
 /// or QUAD4 (n = 4) face: A_e = D_e M_e⁻¹ (Popp et al. 2010).
 /// \return degenerate for a zero-area face (singular M_e), else ok.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus dual_basis_coefficients_3d(
+GROUT_INLINE_FUNCTION MortarStatus dual_basis_coefficients_3d(
     int n, const Scalar x[max_face_nodes][3], Scalar A[max_face_nodes][max_face_nodes]) {
   for (int j = 0; j < max_face_nodes; ++j)
     for (int k = 0; k < max_face_nodes; ++k) A[j][k] = 0.0;
@@ -106,10 +105,9 @@ KOKKOS_INLINE_FUNCTION MortarStatus dual_basis_coefficients_3d(
 
 /// \brief Dual shape functions Φ_j(ξ) = Σ_k A[j][k] N_k(ξ).
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION void dual_shape_functions_3d(int n,
-                                                    const Scalar A[max_face_nodes][max_face_nodes],
-                                                    const Scalar xi[2],
-                                                    Scalar Phi[max_face_nodes]) {
+GROUT_INLINE_FUNCTION void dual_shape_functions_3d(int n,
+                                                   const Scalar A[max_face_nodes][max_face_nodes],
+                                                   const Scalar xi[2], Scalar Phi[max_face_nodes]) {
   Scalar N[max_face_nodes];
   face_shape_functions(n, xi, N);
   for (int j = 0; j < max_face_nodes; ++j) {

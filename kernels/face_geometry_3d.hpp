@@ -11,10 +11,10 @@
 // Every function is templated on the scalar (double or Sacado::Fad::SFad): comparisons act on
 // values only, and no branch depends on a derivative part.
 
-#include <Kokkos_Core.hpp>
 #include <cmath>
 #include <type_traits>
 
+#include "kernels/kernel_macros.hpp"
 #include "kernels/mortar_types.hpp"
 
 namespace grout {
@@ -25,12 +25,12 @@ constexpr double face_inverse_map_tolerance = 1e-14;  ///< on the parameter upda
 namespace detail3d {
 
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION Scalar dot(const Scalar a[3], const Scalar b[3]) {
+GROUT_INLINE_FUNCTION Scalar dot(const Scalar a[3], const Scalar b[3]) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION void cross(const Scalar a[3], const Scalar b[3], Scalar c[3]) {
+GROUT_INLINE_FUNCTION void cross(const Scalar a[3], const Scalar b[3], Scalar c[3]) {
   c[0] = a[1] * b[2] - a[2] * b[1];
   c[1] = a[2] * b[0] - a[0] * b[2];
   c[2] = a[0] * b[1] - a[1] * b[0];
@@ -40,15 +40,15 @@ KOKKOS_INLINE_FUNCTION void cross(const Scalar a[3], const Scalar b[3], Scalar c
 
 /// \brief Parametric centre of the reference face: TRI3 (1/3, 1/3), QUAD4 (0, 0).
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION void face_reference_centre(int n, Scalar xi[2]) {
+GROUT_INLINE_FUNCTION void face_reference_centre(int n, Scalar xi[2]) {
   xi[0] = n == 3 ? Scalar(1.0 / 3.0) : Scalar(0.0);
   xi[1] = xi[0];
 }
 
 /// \brief Shape functions N_i(ξ, η) of a TRI3 (n = 3) or QUAD4 (n = 4) face.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION void face_shape_functions(int n, const Scalar xi[2],
-                                                 Scalar N[max_face_nodes]) {
+GROUT_INLINE_FUNCTION void face_shape_functions(int n, const Scalar xi[2],
+                                                Scalar N[max_face_nodes]) {
   if (n == 3) {
     N[0] = 1.0 - xi[0] - xi[1];
     N[1] = xi[0];
@@ -64,8 +64,8 @@ KOKKOS_INLINE_FUNCTION void face_shape_functions(int n, const Scalar xi[2],
 
 /// \brief Shape-function derivatives dN[i][a] = ∂N_i/∂ξ_a.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION void face_shape_derivatives(int n, const Scalar xi[2],
-                                                   Scalar dN[max_face_nodes][2]) {
+GROUT_INLINE_FUNCTION void face_shape_derivatives(int n, const Scalar xi[2],
+                                                  Scalar dN[max_face_nodes][2]) {
   if (n == 3) {
     dN[0][0] = -1.0, dN[0][1] = -1.0;
     dN[1][0] = 1.0, dN[1][1] = 0.0;
@@ -81,8 +81,8 @@ KOKKOS_INLINE_FUNCTION void face_shape_derivatives(int n, const Scalar xi[2],
 
 /// \brief Position x(ξ) = Σ_i N_i(ξ) x_i.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION void face_position(int n, const Scalar x[max_face_nodes][3],
-                                          const Scalar xi[2], Scalar p[3]) {
+GROUT_INLINE_FUNCTION void face_position(int n, const Scalar x[max_face_nodes][3],
+                                         const Scalar xi[2], Scalar p[3]) {
   Scalar N[max_face_nodes];
   face_shape_functions(n, xi, N);
   for (int d = 0; d < 3; ++d) {
@@ -93,8 +93,8 @@ KOKKOS_INLINE_FUNCTION void face_position(int n, const Scalar x[max_face_nodes][
 
 /// \brief Covariant tangents g_a = Σ_i ∂N_i/∂ξ_a x_i.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION void face_tangents(int n, const Scalar x[max_face_nodes][3],
-                                          const Scalar xi[2], Scalar g[2][3]) {
+GROUT_INLINE_FUNCTION void face_tangents(int n, const Scalar x[max_face_nodes][3],
+                                         const Scalar xi[2], Scalar g[2][3]) {
   Scalar dN[max_face_nodes][2];
   face_shape_derivatives(n, xi, dN);
   for (int a = 0; a < 2; ++a)
@@ -106,8 +106,8 @@ KOKKOS_INLINE_FUNCTION void face_tangents(int n, const Scalar x[max_face_nodes][
 
 /// \brief Area element j(ξ) = |g_1 × g_2| (dA = j dξ dη).
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION Scalar face_area_element(int n, const Scalar x[max_face_nodes][3],
-                                                const Scalar xi[2]) {
+GROUT_INLINE_FUNCTION Scalar face_area_element(int n, const Scalar x[max_face_nodes][3],
+                                               const Scalar xi[2]) {
   using std::sqrt;
   Scalar g[2][3], c[3];
   face_tangents(n, x, xi, g);
@@ -119,8 +119,8 @@ KOKKOS_INLINE_FUNCTION Scalar face_area_element(int n, const Scalar x[max_face_n
 /// (the auxiliary-plane data of Popp et al. 2010, sec. 3.2).
 /// \return degenerate if |g_1 × g_2| ≤ 1e-14 (edge length)², else ok.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus face_centre_normal(int n, const Scalar x[max_face_nodes][3],
-                                                       Scalar centre[3], Scalar normal[3]) {
+GROUT_INLINE_FUNCTION MortarStatus face_centre_normal(int n, const Scalar x[max_face_nodes][3],
+                                                      Scalar centre[3], Scalar normal[3]) {
   using std::sqrt;
   Scalar xi[2], g[2][3];
   face_reference_centre(n, xi);
@@ -139,8 +139,8 @@ KOKKOS_INLINE_FUNCTION MortarStatus face_centre_normal(int n, const Scalar x[max
 /// t₁ = (e − (e·n₀) n₀)/|.|, t₂ = n₀ × t₁, with e a given in-plane-ish direction
 /// (e.g. the first edge of the face). Right-handed: t₁ × t₂ = n₀.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION void plane_basis(const Scalar normal[3], const Scalar e[3], Scalar t1[3],
-                                        Scalar t2[3]) {
+GROUT_INLINE_FUNCTION void plane_basis(const Scalar normal[3], const Scalar e[3], Scalar t1[3],
+                                       Scalar t2[3]) {
   using std::sqrt;
   const Scalar en = detail3d::dot(e, normal);
   for (int d = 0; d < 3; ++d) t1[d] = e[d] - en * normal[d];
@@ -151,18 +151,18 @@ KOKKOS_INLINE_FUNCTION void plane_basis(const Scalar normal[3], const Scalar e[3
 
 namespace detail3d {
 /// Value part of a scalar: the double itself, or the value of a Sacado Fad (its .val()).
-KOKKOS_INLINE_FUNCTION double value_of(double x) {
+GROUT_INLINE_FUNCTION double value_of(double x) {
   return x;
 }
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION auto value_of(const Scalar& x) -> decltype(x.val()) {
+GROUT_INLINE_FUNCTION auto value_of(const Scalar& x) -> decltype(x.val()) {
   return x.val();
 }
 
 /// One Newton step ξ ← ξ − J⁻¹ (Σ N_i(ξ) p_i − y) of face_inverse_map_2d; Δξ in d.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus inverse_map_step(int n, const Scalar p[max_face_nodes][2],
-                                                     const Scalar y[2], Scalar xi[2], Scalar d[2]) {
+GROUT_INLINE_FUNCTION MortarStatus inverse_map_step(int n, const Scalar p[max_face_nodes][2],
+                                                    const Scalar y[2], Scalar xi[2], Scalar d[2]) {
   using std::abs;
   Scalar N[max_face_nodes], dN[max_face_nodes][2], r[2] = {-y[0], -y[1]};
   Scalar J[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
@@ -194,8 +194,8 @@ KOKKOS_INLINE_FUNCTION MortarStatus inverse_map_step(int n, const Scalar p[max_f
 /// for a fraction of the cost).
 /// \return projection_failed (singular J or no convergence within the cap), else ok.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus face_inverse_map_2d(int n, const Scalar p[max_face_nodes][2],
-                                                        const Scalar y[2], Scalar xi[2]) {
+GROUT_INLINE_FUNCTION MortarStatus face_inverse_map_2d(int n, const Scalar p[max_face_nodes][2],
+                                                       const Scalar y[2], Scalar xi[2]) {
   using std::abs;
   if constexpr (!std::is_same<Scalar, double>::value) {
     if (n == 4) {  // converge on the values, then one step with derivatives (see above)
@@ -228,9 +228,9 @@ KOKKOS_INLINE_FUNCTION MortarStatus face_inverse_map_2d(int n, const Scalar p[ma
 /// direction `dir` (unit): x(ξ) − point ∥ dir. Nodes and point are projected on the plane
 /// ⊥ dir and face_inverse_map_2d solves there.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus face_inverse_map_along(int n, const Scalar x[max_face_nodes][3],
-                                                           const Scalar point[3],
-                                                           const Scalar dir[3], Scalar xi[2]) {
+GROUT_INLINE_FUNCTION MortarStatus face_inverse_map_along(int n, const Scalar x[max_face_nodes][3],
+                                                          const Scalar point[3],
+                                                          const Scalar dir[3], Scalar xi[2]) {
   Scalar e[3], t1[3], t2[3], p[max_face_nodes][2], y[2] = {0.0, 0.0};
   for (int d = 0; d < 3; ++d) e[d] = x[1][d] - x[0][d];
   plane_basis(dir, e, t1, t2);
@@ -245,7 +245,7 @@ KOKKOS_INLINE_FUNCTION MortarStatus face_inverse_map_along(int n, const Scalar x
 
 /// \brief True if ξ lies in the reference face, up to `tol` (parameter units).
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION bool face_contains(int n, const Scalar xi[2], double tol = 1e-12) {
+GROUT_INLINE_FUNCTION bool face_contains(int n, const Scalar xi[2], double tol = 1e-12) {
   if (n == 3) return xi[0] >= -tol && xi[1] >= -tol && xi[0] + xi[1] <= 1.0 + tol;
   return xi[0] >= -1.0 - tol && xi[0] <= 1.0 + tol && xi[1] >= -1.0 - tol && xi[1] <= 1.0 + tol;
 }

@@ -6,7 +6,7 @@
 // Points are listed in ascending order; the values were computed by Newton's method on
 // P_n in extended precision and rounded to 17 significant digits.
 
-#include <Kokkos_Core.hpp>
+#include "kernels/kernel_macros.hpp"
 
 namespace grout {
 
@@ -15,7 +15,7 @@ constexpr int max_gauss_line_points = 8;  ///< largest tabulated rule
 /// \brief Point `i` (0-based, ascending) and weight of the n-point Gauss–Legendre rule.
 /// \pre 1 ≤ n ≤ max_gauss_line_points, 0 ≤ i < n.
 /// \return false (and ξ = w = 0) if n or i is out of range.
-KOKKOS_INLINE_FUNCTION bool gauss_line_point(int n, int i, double& xi, double& w) {
+GROUT_INLINE_FUNCTION bool gauss_line_point(int n, int i, double& xi, double& w) {
   // Rule n starts at offset n(n-1)/2 in both tables.
   static constexpr double points[36] = {0.0,  // n = 1
                                         -0.57735026918962576,

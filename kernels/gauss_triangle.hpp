@@ -10,7 +10,7 @@
 //
 // All weights are positive and all points interior.
 
-#include <Kokkos_Core.hpp>
+#include "kernels/kernel_macros.hpp"
 
 namespace grout {
 
@@ -27,7 +27,7 @@ struct GaussTriangle<1> {
   static constexpr int num_points = 1;
   /// \brief Point i: area coordinates (a, b) (x = (1-a-b) v0 + a v1 + b v2) and weight w
   /// (fraction of the triangle area; the weights sum to 1).
-  KOKKOS_INLINE_FUNCTION static void point(int i, double& a, double& b, double& w) {
+  GROUT_INLINE_FUNCTION static void point(int i, double& a, double& b, double& w) {
     static constexpr double table[num_points][3] = {
         {1.0 / 3.0, 1.0 / 3.0, 1.0},
     };
@@ -43,7 +43,7 @@ struct GaussTriangle<2> {
   static constexpr int num_points = 3;
   /// \brief Point i: area coordinates (a, b) (x = (1-a-b) v0 + a v1 + b v2) and weight w
   /// (fraction of the triangle area; the weights sum to 1).
-  KOKKOS_INLINE_FUNCTION static void point(int i, double& a, double& b, double& w) {
+  GROUT_INLINE_FUNCTION static void point(int i, double& a, double& b, double& w) {
     static constexpr double table[num_points][3] = {
         {1.0 / 6.0, 1.0 / 6.0, 1.0 / 3.0},
         {2.0 / 3.0, 1.0 / 6.0, 1.0 / 3.0},
@@ -61,7 +61,7 @@ struct GaussTriangle<4> {
   static constexpr int num_points = 6;
   /// \brief Point i: area coordinates (a, b) (x = (1-a-b) v0 + a v1 + b v2) and weight w
   /// (fraction of the triangle area; the weights sum to 1).
-  KOKKOS_INLINE_FUNCTION static void point(int i, double& a, double& b, double& w) {
+  GROUT_INLINE_FUNCTION static void point(int i, double& a, double& b, double& w) {
     static constexpr double table[num_points][3] = {
         {0.44594849091596488632, 0.44594849091596488632, 0.2233815896780114657},
         {0.44594849091596488632, 0.10810301816807022736, 0.2233815896780114657},
@@ -82,7 +82,7 @@ struct GaussTriangle<6> {
   static constexpr int num_points = 12;
   /// \brief Point i: area coordinates (a, b) (x = (1-a-b) v0 + a v1 + b v2) and weight w
   /// (fraction of the triangle area; the weights sum to 1).
-  KOKKOS_INLINE_FUNCTION static void point(int i, double& a, double& b, double& w) {
+  GROUT_INLINE_FUNCTION static void point(int i, double& a, double& b, double& w) {
     static constexpr double table[num_points][3] = {
         {0.24928674517091042129, 0.24928674517091042129, 0.11678627572637936603},
         {0.24928674517091042129, 0.50142650965817915742, 0.11678627572637936603},
@@ -109,7 +109,7 @@ struct GaussTriangle<8> {
   static constexpr int num_points = 16;
   /// \brief Point i: area coordinates (a, b) (x = (1-a-b) v0 + a v1 + b v2) and weight w
   /// (fraction of the triangle area; the weights sum to 1).
-  KOKKOS_INLINE_FUNCTION static void point(int i, double& a, double& b, double& w) {
+  GROUT_INLINE_FUNCTION static void point(int i, double& a, double& b, double& w) {
     static constexpr double table[num_points][3] = {
         {0.33333333333333333333, 0.33333333333333333333, 0.14431560767778716825},
         {0.45929258829272315603, 0.45929258829272315603, 0.095091634267284624794},

@@ -9,8 +9,7 @@
 // 2D is plane strain with the 3D Lamé constants, or plane stress with lambda replaced by
 // lambda* = 2 lambda mu / (lambda + 2 mu) (Zienkiewicz & Taylor, vol. 1, §6.2); unit thickness.
 
-#include <Kokkos_Core.hpp>
-
+#include "kernels/kernel_macros.hpp"
 #include "kernels/quadrature.hpp"
 #include "kernels/shape_functions.hpp"
 #include "kernels/topology.hpp"
@@ -29,9 +28,9 @@ struct ElasticConstants {
 /// in 2D plane stress lambda* = 2 lambda mu / (lambda + 2 mu) = E nu / (1 - nu^2).
 /// plane_stress is ignored unless dimension == 2.
 /// \pre E > 0, -1 < nu < 1/2 (validated by the input layer).
-KOKKOS_INLINE_FUNCTION ElasticConstants elastic_constants(double youngs_modulus,
-                                                          double poissons_ratio, int dimension,
-                                                          bool plane_stress) {
+GROUT_INLINE_FUNCTION ElasticConstants elastic_constants(double youngs_modulus,
+                                                         double poissons_ratio, int dimension,
+                                                         bool plane_stress) {
   const double E = youngs_modulus, nu = poissons_ratio;
   ElasticConstants c{E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)), E / (2.0 * (1.0 + nu))};
   if (dimension == 2 && plane_stress) c.lambda = E * nu / (1.0 - nu * nu);
@@ -40,7 +39,7 @@ KOKKOS_INLINE_FUNCTION ElasticConstants elastic_constants(double youngs_modulus,
 
 /// Polynomial degree of the full Gauss rule of a first-order solid element: 1 point on
 /// tri3/tet4 (constant strain), 2 per direction on quad4/hex8.
-KOKKOS_INLINE_FUNCTION constexpr int full_integration_degree(Topology t) {
+GROUT_INLINE_FUNCTION constexpr int full_integration_degree(Topology t) {
   return (t == Topology::tri3 || t == Topology::tet4) ? 1 : 3;
 }
 
@@ -52,10 +51,10 @@ KOKKOS_INLINE_FUNCTION constexpr int full_integration_degree(Topology t) {
 /// \return unsupported unless topology_dimension(topology) == dimension in {2, 3}; inverted if
 /// det J <= 0 at a quadrature point (outputs then undefined).
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION ElementStatus linear_elastic_element(Topology topology, int dimension,
-                                                            const double* X, const Scalar* u,
-                                                            ElasticConstants c, Scalar* f_int,
-                                                            double* K) {
+GROUT_INLINE_FUNCTION ElementStatus linear_elastic_element(Topology topology, int dimension,
+                                                           const double* X, const Scalar* u,
+                                                           ElasticConstants c, Scalar* f_int,
+                                                           double* K) {
   const int dim = dimension;
   if (dim < 2 || dim > 3 || topology_dimension(topology) != dim) return ElementStatus::unsupported;
   const int nodes = topology_num_nodes(topology);
@@ -118,10 +117,10 @@ KOKKOS_INLINE_FUNCTION ElementStatus linear_elastic_element(Topology topology, i
 /// plane stress sigma_zz = 0. poissons_ratio is used only for plane strain.
 /// \pre X, u: [nodes * dimension] node-major; stress: room for 6.
 /// \return as linear_elastic_element (stress undefined unless ok).
-KOKKOS_INLINE_FUNCTION ElementStatus linear_elastic_stress(Topology topology, int dimension,
-                                                           const double* X, const double* u,
-                                                           ElasticConstants c, bool plane_strain,
-                                                           double poissons_ratio, double* stress) {
+GROUT_INLINE_FUNCTION ElementStatus linear_elastic_stress(Topology topology, int dimension,
+                                                          const double* X, const double* u,
+                                                          ElasticConstants c, bool plane_strain,
+                                                          double poissons_ratio, double* stress) {
   const int dim = dimension;
   if (dim < 2 || dim > 3 || topology_dimension(topology) != dim) return ElementStatus::unsupported;
   const int nodes = topology_num_nodes(topology);

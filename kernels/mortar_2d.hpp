@@ -24,11 +24,11 @@
 // (its four pair coefficients once, then 8 flops and a division per Gauss point), and each
 // master-node projection of step 1 takes one square root and one division.
 
-#include <Kokkos_Core.hpp>
 #include <cmath>
 
 #include "kernels/dual_basis.hpp"
 #include "kernels/gauss_line.hpp"
+#include "kernels/kernel_macros.hpp"
 #include "kernels/mortar_types.hpp"
 
 namespace grout {
@@ -38,14 +38,14 @@ constexpr double mortar_2d_overlap_tol = 1e-12;  ///< overlaps shorter than this
 
 /// 2D cross product u × v = u_x v_y − u_y v_x.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION Scalar cross_2d(const Scalar u[2], const Scalar v[2]) {
+GROUT_INLINE_FUNCTION Scalar cross_2d(const Scalar u[2], const Scalar v[2]) {
   return u[0] * v[1] - u[1] * v[0];
 }
 
 /// \brief Slave point x¹(ξ) and (non-normalised) interpolated normal n¹(ξ) = Σ N_j n_j.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION void slave_point_2d(const Scalar xs[2][2], const Scalar ns[2][2],
-                                           const Scalar& xi, Scalar x[2], Scalar n[2]) {
+GROUT_INLINE_FUNCTION void slave_point_2d(const Scalar xs[2][2], const Scalar ns[2][2],
+                                          const Scalar& xi, Scalar x[2], Scalar n[2]) {
   Scalar N[2];
   line2_shape(xi, N);
   for (int d = 0; d < 2; ++d) {
@@ -66,8 +66,8 @@ struct MortarSlave2D {
 /// \brief Fills the MortarSlave2D of the slave segment (xs, ns).
 /// \return degenerate if the segment has zero length, ok otherwise.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus mortar_slave_2d(const Scalar xs[2][2], const Scalar ns[2][2],
-                                                    MortarSlave2D<Scalar>& s) {
+GROUT_INLINE_FUNCTION MortarStatus mortar_slave_2d(const Scalar xs[2][2], const Scalar ns[2][2],
+                                                   MortarSlave2D<Scalar>& s) {
   using std::sqrt;
   for (int k = 0; k < 2; ++k) {
     s.a[k] = 0.5 * (xs[0][k] + xs[1][k]);
@@ -93,8 +93,8 @@ KOKKOS_INLINE_FUNCTION MortarStatus mortar_slave_2d(const Scalar xs[2][2], const
 /// element (smallest |ξ|: |q/A| < |C/q| ⇔ q² < |A C|) is returned. ξ may lie outside [−1, 1].
 /// \return projection_failed if no real root exists.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus project_to_slave_2d(const MortarSlave2D<Scalar>& s,
-                                                        const Scalar y[2], Scalar& xi) {
+GROUT_INLINE_FUNCTION MortarStatus project_to_slave_2d(const MortarSlave2D<Scalar>& s,
+                                                       const Scalar y[2], Scalar& xi) {
   using std::abs;
   using std::sqrt;
   const Scalar am[2] = {s.a[0] - y[0], s.a[1] - y[1]};
@@ -120,10 +120,10 @@ KOKKOS_INLINE_FUNCTION MortarStatus project_to_slave_2d(const MortarSlave2D<Scal
 /// half edge. η may lie outside [−1, 1]. Used for Gauss points (n = n¹(ξ_g)) and for slave nodes
 /// (n = n_j). \return projection_failed if n is parallel to the master edge.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus project_along_normal_to_master_2d(const Scalar xm[2][2],
-                                                                      const Scalar x[2],
-                                                                      const Scalar n[2],
-                                                                      Scalar& eta) {
+GROUT_INLINE_FUNCTION MortarStatus project_along_normal_to_master_2d(const Scalar xm[2][2],
+                                                                     const Scalar x[2],
+                                                                     const Scalar n[2],
+                                                                     Scalar& eta) {
   Scalar am[2], b[2];
   for (int k = 0; k < 2; ++k) {
     am[k] = 0.5 * (xm[0][k] + xm[1][k]) - x[k];
@@ -143,9 +143,9 @@ KOKKOS_INLINE_FUNCTION MortarStatus project_along_normal_to_master_2d(const Scal
 /// \return no_overlap if ξ_b − ξ_a ≤ mortar_2d_overlap_tol, projection_failed if a master node
 /// has no projection, ok otherwise.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus mortar_overlap_2d(const MortarSlave2D<Scalar>& slave,
-                                                      const Scalar xm[2][2], Scalar& xi_a,
-                                                      Scalar& xi_b) {
+GROUT_INLINE_FUNCTION MortarStatus mortar_overlap_2d(const MortarSlave2D<Scalar>& slave,
+                                                     const Scalar xm[2][2], Scalar& xi_a,
+                                                     Scalar& xi_b) {
   xi_a = 0.0;
   xi_b = 0.0;
   Scalar xi_m[2];
@@ -171,10 +171,11 @@ KOKKOS_INLINE_FUNCTION MortarStatus mortar_overlap_2d(const MortarSlave2D<Scalar
 /// \return the overlap status; capacity_exceeded for an unsupported n_gauss, projection_failed
 /// if n¹(ξ_g) is parallel to the master edge (|b² × n¹| ≤ 1e-14 |b²| |n¹|).
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus
-mortar_integration_points_2d(const MortarSlave2D<Scalar>& slave, const Scalar xm[2][2], int n_gauss,
-                             Scalar xi_s[max_gauss_line_points],
-                             Scalar eta_m[max_gauss_line_points], Scalar w[max_gauss_line_points]) {
+GROUT_INLINE_FUNCTION MortarStatus mortar_integration_points_2d(const MortarSlave2D<Scalar>& slave,
+                                                                const Scalar xm[2][2], int n_gauss,
+                                                                Scalar xi_s[max_gauss_line_points],
+                                                                Scalar eta_m[max_gauss_line_points],
+                                                                Scalar w[max_gauss_line_points]) {
   for (int g = 0; g < max_gauss_line_points; ++g) xi_s[g] = eta_m[g] = w[g] = 0.0;
   if (n_gauss < 1 || n_gauss > max_gauss_line_points) return MortarStatus::capacity_exceeded;
   if (!(slave.det_j > 0.0)) return MortarStatus::degenerate;
@@ -212,17 +213,19 @@ mortar_integration_points_2d(const MortarSlave2D<Scalar>& slave, const Scalar xm
 
 /// mortar_integration_points_2d from the slave nodes and nodal normals.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus
-mortar_integration_points_2d(const Scalar xs[2][2], const Scalar ns[2][2], const Scalar xm[2][2],
-                             int n_gauss, Scalar xi_s[max_gauss_line_points],
-                             Scalar eta_m[max_gauss_line_points], Scalar w[max_gauss_line_points]) {
+GROUT_INLINE_FUNCTION MortarStatus mortar_integration_points_2d(const Scalar xs[2][2],
+                                                                const Scalar ns[2][2],
+                                                                const Scalar xm[2][2], int n_gauss,
+                                                                Scalar xi_s[max_gauss_line_points],
+                                                                Scalar eta_m[max_gauss_line_points],
+                                                                Scalar w[max_gauss_line_points]) {
   MortarSlave2D<Scalar> s;
   mortar_slave_2d(xs, ns, s);
   return mortar_integration_points_2d(s, xm, n_gauss, xi_s, eta_m, w);
 }
 
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION void zero_pair_result_2d(MortarPairResult<Scalar>& out) {
+GROUT_INLINE_FUNCTION void zero_pair_result_2d(MortarPairResult<Scalar>& out) {
   out.n_slave = 2;
   out.n_master = 2;
   out.overlap = 0.0;
@@ -234,8 +237,8 @@ KOKKOS_INLINE_FUNCTION void zero_pair_result_2d(MortarPairResult<Scalar>& out) {
 
 /// Adds one integration point (slave ξ, master η, weight w) to D_jj += w Φ_j, M_jl += w Φ_j N²_l.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION void add_mortar_point_2d(const Scalar& xi, const Scalar& eta,
-                                                const Scalar& w, MortarPairResult<Scalar>& out) {
+GROUT_INLINE_FUNCTION void add_mortar_point_2d(const Scalar& xi, const Scalar& eta, const Scalar& w,
+                                               MortarPairResult<Scalar>& out) {
   Scalar Phi[2], Nm[2];
   line2_dual_shape(xi, Phi);
   line2_shape(eta, Nm);
@@ -251,9 +254,9 @@ KOKKOS_INLINE_FUNCTION void add_mortar_point_2d(const Scalar& xi, const Scalar& 
 /// are summed in local variables and stored once.
 /// \return ok, no_overlap (out zero), degenerate, projection_failed or capacity_exceeded.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus integrate_mortar_2d(const MortarSlave2D<Scalar>& slave,
-                                                        const Scalar xm[2][2], int n_gauss,
-                                                        MortarPairResult<Scalar>& out) {
+GROUT_INLINE_FUNCTION MortarStatus integrate_mortar_2d(const MortarSlave2D<Scalar>& slave,
+                                                       const Scalar xm[2][2], int n_gauss,
+                                                       MortarPairResult<Scalar>& out) {
   zero_pair_result_2d(out);
   Scalar xi[max_gauss_line_points], eta[max_gauss_line_points], w[max_gauss_line_points];
   const MortarStatus s = mortar_integration_points_2d(slave, xm, n_gauss, xi, eta, w);
@@ -282,10 +285,9 @@ KOKKOS_INLINE_FUNCTION MortarStatus integrate_mortar_2d(const MortarSlave2D<Scal
 /// \brief integrate_mortar_2d from the slave nodes and nodal normals.
 /// \pre ns: unit (or at least non-zero) slave nodal normals.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus integrate_mortar_2d(const Scalar xs[2][2],
-                                                        const Scalar ns[2][2],
-                                                        const Scalar xm[2][2], int n_gauss,
-                                                        MortarPairResult<Scalar>& out) {
+GROUT_INLINE_FUNCTION MortarStatus integrate_mortar_2d(const Scalar xs[2][2], const Scalar ns[2][2],
+                                                       const Scalar xm[2][2], int n_gauss,
+                                                       MortarPairResult<Scalar>& out) {
   MortarSlave2D<Scalar> s;
   mortar_slave_2d(xs, ns, s);
   return integrate_mortar_2d(s, xm, n_gauss, out);
@@ -296,10 +298,9 @@ KOKKOS_INLINE_FUNCTION MortarStatus integrate_mortar_2d(const Scalar xs[2][2],
 /// `integrate_mortar_3d(int n_slave, const Scalar xs[4][3], const Scalar ns[4][3], int n_master,
 ///  const Scalar xm[4][3], MortarPairResult<Scalar>& out)`.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus integrate_mortar_2d(const Scalar xs[2][2],
-                                                        const Scalar ns[2][2],
-                                                        const Scalar xm[2][2],
-                                                        MortarPairResult<Scalar>& out) {
+GROUT_INLINE_FUNCTION MortarStatus integrate_mortar_2d(const Scalar xs[2][2], const Scalar ns[2][2],
+                                                       const Scalar xm[2][2],
+                                                       MortarPairResult<Scalar>& out) {
   return integrate_mortar_2d(xs, ns, xm, mortar_2d_gauss_points, out);
 }
 
@@ -308,11 +309,11 @@ KOKKOS_INLINE_FUNCTION MortarStatus integrate_mortar_2d(const Scalar xs[2][2],
 /// projection along n¹(ξ_i) misses the master (|η| > 1) is dropped (Farah, Popp, Wall 2015).
 /// \return no_overlap if every point was dropped.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus integrate_mortar_2d_collocation(const Scalar xs[2][2],
-                                                                    const Scalar ns[2][2],
-                                                                    const Scalar xm[2][2],
-                                                                    int n_points,
-                                                                    MortarPairResult<Scalar>& out) {
+GROUT_INLINE_FUNCTION MortarStatus integrate_mortar_2d_collocation(const Scalar xs[2][2],
+                                                                   const Scalar ns[2][2],
+                                                                   const Scalar xm[2][2],
+                                                                   int n_points,
+                                                                   MortarPairResult<Scalar>& out) {
   using std::sqrt;
   zero_pair_result_2d(out);
   if (n_points < 1) return MortarStatus::capacity_exceeded;

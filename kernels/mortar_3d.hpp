@@ -25,13 +25,13 @@
 // roots, not polynomial): no rule is exact, the error falls with the degree. The default 6
 // (12 points) leaves margin for these with a moderate cost; 8 is available.
 
-#include <Kokkos_Core.hpp>
 #include <cmath>
 #include <type_traits>
 
 #include "kernels/dual_basis_3d.hpp"
 #include "kernels/face_geometry_3d.hpp"
 #include "kernels/gauss_triangle.hpp"
+#include "kernels/kernel_macros.hpp"
 #include "kernels/mortar_types.hpp"
 #include "kernels/polygon_clipping.hpp"
 
@@ -49,8 +49,8 @@ struct AuxiliaryPlane {
 
 /// \brief Plane coordinates y = ((x − x₀)·t₁, (x − x₀)·t₂) of x projected along n₀.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION void project_on_plane(const AuxiliaryPlane<Scalar>& plane, const Scalar x[3],
-                                             Scalar y[2]) {
+GROUT_INLINE_FUNCTION void project_on_plane(const AuxiliaryPlane<Scalar>& plane, const Scalar x[3],
+                                            Scalar y[2]) {
   Scalar v[3];
   for (int d = 0; d < 3; ++d) v[d] = x[d] - plane.x0[d];
   y[0] = detail3d::dot(v, plane.t1);
@@ -60,8 +60,8 @@ KOKKOS_INLINE_FUNCTION void project_on_plane(const AuxiliaryPlane<Scalar>& plane
 /// \brief Auxiliary plane of a slave face (Popp et al. 2010, sec. 3.2, step 1-2).
 /// \return degenerate for a zero-area slave face, else ok.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus auxiliary_plane(int n_slave, const Scalar xs[max_face_nodes][3],
-                                                    AuxiliaryPlane<Scalar>& plane) {
+GROUT_INLINE_FUNCTION MortarStatus auxiliary_plane(int n_slave, const Scalar xs[max_face_nodes][3],
+                                                   AuxiliaryPlane<Scalar>& plane) {
   if (face_centre_normal(n_slave, xs, plane.x0, plane.n0) != MortarStatus::ok)
     return MortarStatus::degenerate;
   Scalar e[3];
@@ -74,8 +74,8 @@ KOKKOS_INLINE_FUNCTION MortarStatus auxiliary_plane(int n_slave, const Scalar xs
 /// \brief Slave-surface area per plane area at ξ¹: |g₁ × g₂| / (n₀ · (g₁ × g₂)); ≤ 0 if the
 /// face folds over the plane.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION Scalar slave_area_ratio(int n_slave, const Scalar xs[max_face_nodes][3],
-                                               const Scalar n0[3], const Scalar xi[2]) {
+GROUT_INLINE_FUNCTION Scalar slave_area_ratio(int n_slave, const Scalar xs[max_face_nodes][3],
+                                              const Scalar n0[3], const Scalar xi[2]) {
   using std::sqrt;
   Scalar g[2][3], c[3];
   face_tangents(n_slave, xs, xi, g);
@@ -90,7 +90,7 @@ namespace detail3d {
 /// (|p₁ − p₂ + p₃ − p₄| ≤ 1e-13 |diagonals|), only with Scalar = double — for a Fad scalar the
 /// derivative of ξ(y) with respect to the nodes is not affine in y even then.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION bool affine_in_plane(int n, const Scalar p[max_face_nodes][2]) {
+GROUT_INLINE_FUNCTION bool affine_in_plane(int n, const Scalar p[max_face_nodes][2]) {
   using std::abs;
   if (n == 3) return true;
   if (!std::is_same<Scalar, double>::value || n != 4) return false;
@@ -107,7 +107,7 @@ namespace detail3d {
 
 /// Cell loop of for_each_mortar_point_3d with a GaussTriangle<Degree> rule per cell.
 template <int Degree, class Scalar, class PointFunctor>
-KOKKOS_INLINE_FUNCTION MortarStatus integrate_cells(
+GROUT_INLINE_FUNCTION MortarStatus integrate_cells(
     int n_slave, const Scalar xs[max_face_nodes][3], int n_master,
     const AuxiliaryPlane<Scalar>& plane, const Scalar pm[max_face_nodes][2], int nv,
     const Scalar poly[max_clip_vertices][2], const Scalar yc[2], bool slave_affine,
@@ -154,11 +154,11 @@ KOKKOS_INLINE_FUNCTION MortarStatus integrate_cells(
 /// \return ok; no_overlap (nothing called); degenerate (slave face);
 /// projection_failed (a back-projection did not converge); capacity_exceeded.
 template <int Degree = mortar_3d_triangle_degree, class Scalar, class PointFunctor>
-KOKKOS_INLINE_FUNCTION MortarStatus for_each_mortar_point_3d(int n_slave,
-                                                             const Scalar xs[max_face_nodes][3],
-                                                             int n_master,
-                                                             const Scalar xm[max_face_nodes][3],
-                                                             PointFunctor& f) {
+GROUT_INLINE_FUNCTION MortarStatus for_each_mortar_point_3d(int n_slave,
+                                                            const Scalar xs[max_face_nodes][3],
+                                                            int n_master,
+                                                            const Scalar xm[max_face_nodes][3],
+                                                            PointFunctor& f) {
   if ((n_slave != 3 && n_slave != 4) || (n_master != 3 && n_master != 4))
     return MortarStatus::degenerate;
   AuxiliaryPlane<Scalar> plane;
@@ -211,8 +211,8 @@ template <class Scalar>
 struct AccumulateMortarPair {
   const Scalar (*A)[max_face_nodes];
   MortarPairResult<Scalar>* out;
-  KOKKOS_INLINE_FUNCTION void operator()(const Scalar xi_s[2], const Scalar xi_m[2],
-                                         const Scalar& w) const {
+  GROUT_INLINE_FUNCTION void operator()(const Scalar xi_s[2], const Scalar xi_m[2],
+                                        const Scalar& w) const {
     Scalar Phi[max_face_nodes], Nm[max_face_nodes];
     dual_shape_functions_3d(out->n_slave, A, xi_s, Phi);
     face_shape_functions(out->n_master, xi_m, Nm);
@@ -226,8 +226,8 @@ struct AccumulateMortarPair {
 };
 
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION void reset_pair_result(int n_slave, int n_master,
-                                              MortarPairResult<Scalar>& out) {
+GROUT_INLINE_FUNCTION void reset_pair_result(int n_slave, int n_master,
+                                             MortarPairResult<Scalar>& out) {
   out.n_slave = n_slave;
   out.n_master = n_master;
   out.overlap = 0.0;
@@ -243,7 +243,7 @@ KOKKOS_INLINE_FUNCTION void reset_pair_result(int n_slave, int n_master,
 /// integration (see the file comment), with precomputed dual coefficients A (Φ_j = Σ_k A_jk
 /// N¹_k, dual_basis_coefficients_3d). On any status but ok, `out` holds zeros.
 template <int Degree = mortar_3d_triangle_degree, class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus integrate_mortar_3d_dual(
+GROUT_INLINE_FUNCTION MortarStatus integrate_mortar_3d_dual(
     int n_slave, const Scalar xs[max_face_nodes][3], const Scalar A[max_face_nodes][max_face_nodes],
     int n_master, const Scalar xm[max_face_nodes][3], MortarPairResult<Scalar>& out) {
   detail3d::reset_pair_result(n_slave, n_master, out);
@@ -258,7 +258,7 @@ KOKKOS_INLINE_FUNCTION MortarStatus integrate_mortar_3d_dual(
 /// \pre n_slave, n_master ∈ {3, 4}; node order gives the slave normal (right-hand rule).
 /// `ns` (slave nodal normals) is not needed by the auxiliary-plane projection (n₀ is used).
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus integrate_mortar_3d(
+GROUT_INLINE_FUNCTION MortarStatus integrate_mortar_3d(
     int n_slave, const Scalar xs[max_face_nodes][3], const Scalar ns[max_face_nodes][3],
     int n_master, const Scalar xm[max_face_nodes][3], MortarPairResult<Scalar>& out) {
   (void)ns;
@@ -278,7 +278,7 @@ KOKKOS_INLINE_FUNCTION MortarStatus integrate_mortar_3d(
 /// Converges to integrate_mortar_3d as k grows (O(1/k): the overlap boundary cuts cells).
 /// \return ok; no_overlap (no point hits, out zero); degenerate (slave face or k < 1).
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus integrate_mortar_3d_collocation(
+GROUT_INLINE_FUNCTION MortarStatus integrate_mortar_3d_collocation(
     int n_slave, const Scalar xs[max_face_nodes][3], const Scalar ns[max_face_nodes][3],
     int n_master, const Scalar xm[max_face_nodes][3], int n_points_per_direction,
     MortarPairResult<Scalar>& out) {

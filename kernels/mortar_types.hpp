@@ -7,7 +7,7 @@
 // (DESIGN.md §2; Popp et al. 2010, eqs. 9-10). A later scatter sums the pair contributions
 // per slave node j / master node l.
 
-#include <Kokkos_Core.hpp>
+#include "kernels/kernel_macros.hpp"
 
 namespace grout {
 

@@ -21,9 +21,9 @@
 // the output vertices are differentiable functions of the input vertices between
 // topology changes.
 
-#include <Kokkos_Core.hpp>
 #include <cmath>
 
+#include "kernels/kernel_macros.hpp"
 #include "kernels/mortar_types.hpp"
 
 namespace grout {
@@ -34,7 +34,7 @@ constexpr double clip_sliver_area_tolerance = 1e-12;  ///< default rel_area_tol
 
 /// \brief Signed area ½ Σ_i (p_i × p_{i+1}) of a polygon (> 0 counter-clockwise).
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION Scalar polygon_signed_area(int n, const Scalar p[][2]) {
+GROUT_INLINE_FUNCTION Scalar polygon_signed_area(int n, const Scalar p[][2]) {
   Scalar a = 0.0;
   for (int i = 0; i < n; ++i) {
     const int j = i + 1 == n ? 0 : i + 1;
@@ -52,10 +52,10 @@ KOKKOS_INLINE_FUNCTION Scalar polygon_signed_area(int n, const Scalar p[][2]) {
 /// capacity_exceeded (more than max_clip_vertices result vertices; cannot happen for convex
 /// tri/quad inputs).
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION MortarStatus
-clip_polygons(int n_subject, const Scalar subject[][2], int n_clip, const Scalar clip[][2],
-              Scalar result[max_clip_vertices][2], int& n_result,
-              double rel_area_tol = clip_sliver_area_tolerance) {
+GROUT_INLINE_FUNCTION MortarStatus clip_polygons(int n_subject, const Scalar subject[][2],
+                                                 int n_clip, const Scalar clip[][2],
+                                                 Scalar result[max_clip_vertices][2], int& n_result,
+                                                 double rel_area_tol = clip_sliver_area_tolerance) {
   using std::abs;
   constexpr int cap = 2 * max_clip_vertices;  // working capacity (intermediate polygons)
   n_result = 0;

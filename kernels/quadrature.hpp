@@ -9,8 +9,7 @@
 // simplices, degree per direction for tensor rules. Weights include the reference measure
 // (they sum to 2, 4, 8, 1/2, 1/6).
 
-#include <Kokkos_Core.hpp>
-
+#include "kernels/kernel_macros.hpp"
 #include "kernels/topology.hpp"
 
 namespace grout {
@@ -29,7 +28,7 @@ struct QuadraturePoint {
 /// Abscissae are the roots of P_n, weights 2 / ((1 - x^2) P_n'(x)^2) (Abramowitz & Stegun,
 /// table 25.4; values to double precision).
 /// \return false if n is not in 1..max_gauss_points_1d or i not in 0..n-1.
-KOKKOS_INLINE_FUNCTION bool gauss_legendre_1d(int n, int i, double& x, double& w) {
+GROUT_INLINE_FUNCTION bool gauss_legendre_1d(int n, int i, double& x, double& w) {
   // Rules n = 1..5 stored one after the other; rule n starts at offset n(n-1)/2.
   // clang-format off
   static constexpr double points[15] = {
@@ -55,7 +54,7 @@ KOKKOS_INLINE_FUNCTION bool gauss_legendre_1d(int n, int i, double& x, double& w
 
 /// Points per direction of the tensor Gauss rule exact for degree `degree` per direction
 /// (2n - 1 >= degree), 0 if more than max_gauss_points_1d would be needed.
-KOKKOS_INLINE_FUNCTION int gauss_points_per_direction(int degree) {
+GROUT_INLINE_FUNCTION int gauss_points_per_direction(int degree) {
   const int n = degree < 1 ? 1 : (degree + 2) / 2;
   return n <= max_gauss_points_1d ? n : 0;
 }
@@ -67,12 +66,12 @@ KOKKOS_INLINE_FUNCTION int gauss_points_per_direction(int degree) {
 /// Strang & Fix (1973), table 4.1; values to double precision.
 /// Stored as (xi, eta, w) with weights normalised to sum 1 (multiplied by the area 1/2 in
 /// quadrature_point). Rule offsets: degree 1 -> 0, 2 -> 1, 4 -> 4, 5 -> 10.
-KOKKOS_INLINE_FUNCTION int triangle_rule_offset(int degree, int& num_points) {
+GROUT_INLINE_FUNCTION int triangle_rule_offset(int degree, int& num_points) {
   num_points = degree <= 1 ? 1 : degree == 2 ? 3 : degree <= 4 ? 6 : degree == 5 ? 7 : 0;
   return degree <= 1 ? 0 : degree == 2 ? 1 : degree <= 4 ? 4 : 10;
 }
 
-KOKKOS_INLINE_FUNCTION void triangle_rule_point(int k, double& xi, double& eta, double& w) {
+GROUT_INLINE_FUNCTION void triangle_rule_point(int k, double& xi, double& eta, double& w) {
   constexpr double a2 = 1.0 / 6.0, b2 = 2.0 / 3.0, w2 = 1.0 / 3.0;
   constexpr double a4 = 0.4459484909159649, b4 = 0.10810301816807023, w4a = 0.22338158967801147;
   constexpr double c4 = 0.09157621350977074, d4 = 0.8168475729804585, w4c = 0.10995174365532187;
@@ -98,12 +97,12 @@ KOKKOS_INLINE_FUNCTION void triangle_rule_point(int k, double& xi, double& eta, 
 /// a = (5 + 3 sqrt 5)/20, b = (5 - sqrt 5)/20), degree 3 (5 points; the centroid weight -4/5 is
 /// negative). Stored as (xi, eta, zeta, w), weights normalised to sum 1.
 /// Rule offsets: degree 1 -> 0, 2 -> 1, 3 -> 5.
-KOKKOS_INLINE_FUNCTION int tetrahedron_rule_offset(int degree, int& num_points) {
+GROUT_INLINE_FUNCTION int tetrahedron_rule_offset(int degree, int& num_points) {
   num_points = degree <= 1 ? 1 : degree == 2 ? 4 : degree == 3 ? 5 : 0;
   return degree <= 1 ? 0 : degree == 2 ? 1 : 5;
 }
 
-KOKKOS_INLINE_FUNCTION void tetrahedron_rule_point(int k, double xi[3], double& w) {
+GROUT_INLINE_FUNCTION void tetrahedron_rule_point(int k, double xi[3], double& w) {
   constexpr double a = 0.5854101966249684, b = 0.1381966011250105;
   constexpr double c = 0.5, d = 1.0 / 6.0;
   // clang-format off
@@ -119,7 +118,7 @@ KOKKOS_INLINE_FUNCTION void tetrahedron_rule_point(int k, double xi[3], double& 
 
 /// Number of points of the rule on topology t exact for polynomials of degree `degree`
 /// (see the header comment), 0 if no such rule is tabulated.
-KOKKOS_INLINE_FUNCTION int quadrature_num_points(Topology t, int degree) {
+GROUT_INLINE_FUNCTION int quadrature_num_points(Topology t, int degree) {
   int n = 0;
   switch (t) {
     case Topology::line2:
@@ -142,7 +141,7 @@ KOKKOS_INLINE_FUNCTION int quadrature_num_points(Topology t, int degree) {
 
 /// \brief Point q of the rule quadrature_num_points(t, degree) describes.
 /// \pre 0 <= q < quadrature_num_points(t, degree) (otherwise the weight returned is 0).
-KOKKOS_INLINE_FUNCTION QuadraturePoint quadrature_point(Topology t, int degree, int q) {
+GROUT_INLINE_FUNCTION QuadraturePoint quadrature_point(Topology t, int degree, int q) {
   QuadraturePoint p{{0.0, 0.0, 0.0}, 0.0};
   const int num_points = quadrature_num_points(t, degree);
   if (q < 0 || q >= num_points) return p;

@@ -11,8 +11,7 @@
 //                   nodes at zeta = -1, nodes 4-7 the same at zeta = +1
 // (Hughes, The Finite Element Method, §3.2, §3.5 for the formulas; node order of Exodus.)
 
-#include <Kokkos_Core.hpp>
-
+#include "kernels/kernel_macros.hpp"
 #include "kernels/quadrature.hpp"
 #include "kernels/topology.hpp"
 
@@ -37,9 +36,9 @@ struct NonDeduced {
 /// Templated so that xi may carry derivatives (Sacado Fad) for projected points.
 /// \return the number of nodes, 0 for an unknown topology.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION int shape_functions(Topology t, const Scalar* xi,
-                                           typename NonDeduced<Scalar>::type* N,
-                                           typename NonDeduced<Scalar>::type* dN_dxi) {
+GROUT_INLINE_FUNCTION int shape_functions(Topology t, const Scalar* xi,
+                                          typename NonDeduced<Scalar>::type* N,
+                                          typename NonDeduced<Scalar>::type* dN_dxi) {
   static constexpr double s[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                                      {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
   switch (t) {
@@ -108,9 +107,9 @@ KOKKOS_INLINE_FUNCTION int shape_functions(Topology t, const Scalar* xi,
 /// X[a * dim + i] are nodal coordinates (Scalar, e.g. current coordinates under AD).
 /// \return unsupported unless topology_dimension(t) == dim, inverted if det_J <= 0.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION ElementStatus shape_gradients(Topology t, int dim, const Scalar* X,
-                                                     const double* xi, double* N, Scalar* dN_dX,
-                                                     Scalar& det_J) {
+GROUT_INLINE_FUNCTION ElementStatus shape_gradients(Topology t, int dim, const Scalar* X,
+                                                    const double* xi, double* N, Scalar* dN_dX,
+                                                    Scalar& det_J) {
   if (dim < 1 || dim > 3 || topology_dimension(t) != dim) return ElementStatus::unsupported;
   double dN[max_element_nodes * 3];
   const int n = shape_functions(t, xi, N, dN);
@@ -158,8 +157,8 @@ KOKKOS_INLINE_FUNCTION ElementStatus shape_gradients(Topology t, int dim, const 
 /// length/area Jacobian (dA = |a| dxi). N (nullable) gets the shape function values.
 /// \return the number of side nodes, 0 if (side, dim) is not a side of a dim-D solid.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION int side_area_vector(Topology side, int dim, const Scalar* X,
-                                            const double* xi, double* N, Scalar* a) {
+GROUT_INLINE_FUNCTION int side_area_vector(Topology side, int dim, const Scalar* X,
+                                           const double* xi, double* N, Scalar* a) {
   if (dim < 2 || dim > 3 || topology_dimension(side) != dim - 1) return 0;
   // Sized for any topology: the compiler cannot see that `side` is never a solid.
   double dN[max_element_nodes * 3];
@@ -189,7 +188,7 @@ KOKKOS_INLINE_FUNCTION int side_area_vector(Topology side, int dim, const Scalar
 /// (topology_dimension(t) == dim - 1), A = sum_q w_q |a(xi_q)| (exact for planar sides).
 /// The signed value is returned for solids (negative/partly negative if inverted); 0 for an
 /// unsupported (topology, dim).
-KOKKOS_INLINE_FUNCTION double element_measure(Topology t, int dim, const double* X) {
+GROUT_INLINE_FUNCTION double element_measure(Topology t, int dim, const double* X) {
   const bool simplex = t == Topology::tri3 || t == Topology::tet4;
   const int degree = simplex ? 1 : 3;
   const int num_points = quadrature_num_points(t, degree);
@@ -204,7 +203,7 @@ KOKKOS_INLINE_FUNCTION double element_measure(Topology t, int dim, const double*
     } else {
       double a[3] = {0.0, 0.0, 0.0};
       if (side_area_vector(t, dim, X, p.xi, nullptr, a) == 0) return 0.0;
-      measure += p.weight * Kokkos::Experimental::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+      measure += p.weight * kmath::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
     }
   }
   return measure;

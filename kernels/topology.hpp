@@ -10,7 +10,7 @@
 // that its normal (right-hand rule in 3D, (dx,dy) -> (dy,-dx) in 2D) points out of the
 // element.
 
-#include <Kokkos_Core.hpp>
+#include "kernels/kernel_macros.hpp"
 
 namespace grout {
 
@@ -19,11 +19,11 @@ enum class Topology : int { line2 = 0, tri3 = 1, quad4 = 2, tet4 = 3, hex8 = 4 }
 constexpr int max_element_nodes = 8;
 constexpr int max_side_nodes = 4;
 
-KOKKOS_INLINE_FUNCTION constexpr int topology_dimension(Topology t) {
+GROUT_INLINE_FUNCTION constexpr int topology_dimension(Topology t) {
   return t == Topology::line2 ? 1 : (t == Topology::tri3 || t == Topology::quad4) ? 2 : 3;
 }
 
-KOKKOS_INLINE_FUNCTION constexpr int topology_num_nodes(Topology t) {
+GROUT_INLINE_FUNCTION constexpr int topology_num_nodes(Topology t) {
   switch (t) {
     case Topology::line2:
       return 2;
@@ -39,7 +39,7 @@ KOKKOS_INLINE_FUNCTION constexpr int topology_num_nodes(Topology t) {
   return 0;
 }
 
-KOKKOS_INLINE_FUNCTION constexpr int topology_num_sides(Topology t) {
+GROUT_INLINE_FUNCTION constexpr int topology_num_sides(Topology t) {
   switch (t) {
     case Topology::line2:
       return 2;
@@ -56,7 +56,7 @@ KOKKOS_INLINE_FUNCTION constexpr int topology_num_sides(Topology t) {
 }
 
 /// Topology of a side of an element of topology t (tet4 -> tri3, hex8 -> quad4, 2D -> line2).
-KOKKOS_INLINE_FUNCTION constexpr Topology side_topology(Topology t) {
+GROUT_INLINE_FUNCTION constexpr Topology side_topology(Topology t) {
   return t == Topology::tet4   ? Topology::tri3
          : t == Topology::hex8 ? Topology::quad4
                                : Topology::line2;
@@ -64,7 +64,7 @@ KOKKOS_INLINE_FUNCTION constexpr Topology side_topology(Topology t) {
 
 /// \brief 0-based local nodes of Exodus side `side` (1-based) of topology t.
 /// \return number of side nodes, 0 if the side number is out of range.
-KOKKOS_INLINE_FUNCTION int side_local_nodes(Topology t, int side, int nodes[max_side_nodes]) {
+GROUT_INLINE_FUNCTION int side_local_nodes(Topology t, int side, int nodes[max_side_nodes]) {
   constexpr int tri3[3][2] = {{0, 1}, {1, 2}, {2, 0}};
   constexpr int quad4[4][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
   constexpr int tet4[4][3] = {{0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 2, 1}};

@@ -1,0 +1,208 @@
+#pragma once
+// Probes: the per-pair mortar kernels and the small-strain element kernel evaluated on fixed
+// inputs, each probe writing its statuses and results into a flat array of doubles.
+//
+// The same functions are compiled three ways (unit_tests/cuda_compile/CMakeLists.txt):
+//   - by the host compiler with Kokkos (kernel_probes_host.cpp): the reference results;
+//   - by nvcc as CUDA device code, one __global__ wrapper per probe (kernel_probes.cu):
+//     the device compile shows that the kernels are valid device code;
+//   - by nvcc for the host, without Kokkos (GROUT_KERNELS_NO_KOKKOS, kernel_probes.cu's main):
+//     its results must agree with the reference (same math whichever macro path is taken).
+// GROUT_KERNEL_PROBES lists the probes once for all three.
+
+#include "kernels/dual_basis.hpp"
+#include "kernels/dual_basis_3d.hpp"
+#include "kernels/face_normal.hpp"
+#include "kernels/kernel_macros.hpp"
+#include "kernels/linear_elastic.hpp"
+#include "kernels/mortar_2d.hpp"
+#include "kernels/mortar_3d.hpp"
+#include "kernels/polygon_clipping.hpp"
+
+/// X(name) for every probe grout::probes::probe_<name>.
+#define GROUT_KERNEL_PROBES(X) \
+  X(dual_basis_2d)             \
+  X(mortar_2d)                 \
+  X(clip_polygons)             \
+  X(dual_basis_3d)             \
+  X(mortar_3d)                 \
+  X(face_normal)               \
+  X(linear_elastic_2d)         \
+  X(linear_elastic_3d)
+
+namespace grout {
+namespace probes {
+
+constexpr int max_probe_values = 1024;  ///< capacity of one probe's output
+
+/// Output of one probe: values in order; `failures` counts statuses other than ok (the probe
+/// inputs are chosen so that every kernel succeeds).
+struct ProbeOutput {
+  double* values;
+  int n = 0;
+  int failures = 0;
+  GROUT_INLINE_FUNCTION void put(double v) {
+    if (n < max_probe_values) values[n] = v;
+    ++n;
+  }
+  template <class Status>
+  GROUT_INLINE_FUNCTION void put_status(Status s) {
+    put(static_cast<int>(s));
+    if (static_cast<int>(s) != 0) ++failures;
+  }
+  GROUT_INLINE_FUNCTION void put_pair(const MortarPairResult<double>& r) {
+    put(r.overlap);
+    for (int j = 0; j < r.n_slave; ++j) put(r.D[j]);
+    for (int j = 0; j < r.n_slave; ++j)
+      for (int l = 0; l < r.n_master; ++l) put(r.M[j][l]);
+  }
+};
+
+/// Slave and master LINE2 of the 2D probes: non-parallel, partly overlapping, master reversed.
+GROUT_INLINE_FUNCTION void line_pair_2d(double xs[2][2], double ns[2][2], double xm[2][2]) {
+  const double s[2][2] = {{0.0, 0.0}, {2.0, 0.2}}, m[2][2] = {{2.3, -0.5}, {0.4, -0.35}};
+  for (int k = 0; k < 2; ++k)
+    for (int d = 0; d < 2; ++d) xs[k][d] = s[k][d], xm[k][d] = m[k][d];
+  // Nodal normals tilted either way from the element normal (as averaged normals would be).
+  ns[0][0] = 0.05, ns[0][1] = -1.0;
+  ns[1][0] = 0.2, ns[1][1] = -1.0;
+  normalize_vector<2>(ns[0]);
+  normalize_vector<2>(ns[1]);
+}
+
+/// Warped QUAD4 slave, TRI3 and (non-parallelogram) QUAD4 masters of the 3D probes.
+GROUT_INLINE_FUNCTION void faces_3d(double xs[max_face_nodes][3], double xt[max_face_nodes][3],
+                                    double xq[max_face_nodes][3]) {
+  const double s[4][3] = {{0.0, 0.0, 0.0}, {1.0, 0.0, 0.02}, {1.1, 1.0, -0.01}, {0.0, 0.9, 0.01}};
+  const double t[4][3] = {{-0.2, 0.1, 0.05}, {0.4, 1.2, 0.04}, {0.9, -0.1, 0.06}, {0, 0, 0}};
+  const double q[4][3] = {{0.3, -0.2, 0.05}, {0.25, 1.1, 0.04}, {1.3, 0.8, 0.07}, {1.2, 0.1, 0.06}};
+  for (int k = 0; k < 4; ++k)
+    for (int d = 0; d < 3; ++d) xs[k][d] = s[k][d], xt[k][d] = t[k][d], xq[k][d] = q[k][d];
+}
+
+/// LINE2 dual basis (closed form and the general A = D M⁻¹ route) and its shape functions.
+GROUT_INLINE_FUNCTION void probe_dual_basis_2d(ProbeOutput& out) {
+  double xs[2][2], ns[2][2], xm[2][2], A[2][2];
+  line_pair_2d(xs, ns, xm);
+  out.put_status(dual_basis_coefficients_line2(xs, A));
+  for (int j = 0; j < 2; ++j)
+    for (int k = 0; k < 2; ++k) out.put(A[j][k]);
+  const double De[3] = {0.4, 0.5, 0.3};
+  const double Me[3][3] = {{0.2, 0.05, 0.01}, {0.05, 0.3, 0.04}, {0.01, 0.04, 0.15}};
+  double A3[3][3];
+  out.put_status(dual_basis_coefficients<double, 3>(De, Me, A3));
+  for (int j = 0; j < 3; ++j)
+    for (int k = 0; k < 3; ++k) out.put(A3[j][k]);
+  double Phi[2], N[2];
+  line2_dual_shape(0.3, Phi);
+  line2_shape(-0.7, N);
+  for (int j = 0; j < 2; ++j) out.put(Phi[j]), out.put(N[j]);
+}
+
+/// 2D segment-based mortar integration (default and 3-point Gauss) and the collocation variant.
+GROUT_INLINE_FUNCTION void probe_mortar_2d(ProbeOutput& out) {
+  double xs[2][2], ns[2][2], xm[2][2];
+  line_pair_2d(xs, ns, xm);
+  MortarPairResult<double> r;
+  out.put_status(integrate_mortar_2d(xs, ns, xm, r));
+  out.put_pair(r);
+  out.put_status(integrate_mortar_2d(xs, ns, xm, 3, r));
+  out.put_pair(r);
+  out.put_status(integrate_mortar_2d_collocation(xs, ns, xm, 7, r));
+  out.put_pair(r);
+}
+
+/// Convex quadrilateral clipped by a triangle, and the area of the intersection.
+GROUT_INLINE_FUNCTION void probe_clip_polygons(ProbeOutput& out) {
+  const double subject[4][2] = {{0.0, 0.0}, {1.0, 0.1}, {0.9, 1.0}, {-0.1, 0.8}};
+  const double clip[3][2] = {{0.5, -0.3}, {1.3, 0.6}, {0.2, 1.2}};
+  double result[max_clip_vertices][2];
+  int n_result = 0;
+  out.put_status(clip_polygons(4, subject, 3, clip, result, n_result));
+  out.put(n_result);
+  for (int i = 0; i < n_result && i < max_clip_vertices; ++i)
+    out.put(result[i][0]), out.put(result[i][1]);
+  out.put(polygon_signed_area(n_result, result));
+}
+
+/// 3D dual basis on the warped QUAD4 and a TRI3, and Φ at a point.
+GROUT_INLINE_FUNCTION void probe_dual_basis_3d(ProbeOutput& out) {
+  double xs[max_face_nodes][3], xt[max_face_nodes][3], xq[max_face_nodes][3];
+  faces_3d(xs, xt, xq);
+  double A[max_face_nodes][max_face_nodes], Phi[max_face_nodes];
+  const double xi[2] = {0.2, -0.4};
+  out.put_status(dual_basis_coefficients_3d(4, xs, A));
+  for (int j = 0; j < 4; ++j)
+    for (int k = 0; k < 4; ++k) out.put(A[j][k]);
+  dual_shape_functions_3d(4, A, xi, Phi);
+  for (int j = 0; j < 4; ++j) out.put(Phi[j]);
+  out.put_status(dual_basis_coefficients_3d(3, xt, A));
+  const double xt_ref[2] = {0.25, 0.4};
+  dual_shape_functions_3d(3, A, xt_ref, Phi);
+  for (int j = 0; j < 3; ++j) out.put(Phi[j]);
+}
+
+/// 3D exact segment-based mortar integration (clipping, triangulation, back-projection) of the
+/// QUAD4 slave with a TRI3 and a QUAD4 master, and the collocation variant.
+GROUT_INLINE_FUNCTION void probe_mortar_3d(ProbeOutput& out) {
+  double xs[max_face_nodes][3], xt[max_face_nodes][3], xq[max_face_nodes][3];
+  faces_3d(xs, xt, xq);
+  MortarPairResult<double> r;
+  out.put_status(integrate_mortar_3d(4, xs, xs, 3, xt, r));
+  out.put_pair(r);
+  out.put_status(integrate_mortar_3d(4, xs, xs, 4, xq, r));
+  out.put_pair(r);
+  out.put_status(integrate_mortar_3d_collocation(4, xs, xs, 4, xq, 5, r));
+  out.put_pair(r);
+}
+
+/// Element normals of a LINE2, TRI3 and warped QUAD4 face, and the tangents.
+GROUT_INLINE_FUNCTION void probe_face_normal(ProbeOutput& out) {
+  double xs[max_face_nodes][3], xt[max_face_nodes][3], xq[max_face_nodes][3];
+  faces_3d(xs, xt, xq);
+  double n[3], t[2], t1[3], t2[3];
+  out.put_status(face_normal(2, 2, xs, n));
+  tangent_2d(n, t);
+  for (int d = 0; d < 2; ++d) out.put(n[d]), out.put(t[d]);
+  out.put_status(face_normal(3, 3, xt, n));
+  for (int d = 0; d < 3; ++d) out.put(n[d]);
+  out.put_status(face_normal(3, 4, xs, n));
+  tangents_3d(n, t1, t2);
+  for (int d = 0; d < 3; ++d) out.put(n[d]), out.put(t1[d]), out.put(t2[d]);
+}
+
+/// Force, stiffness and mean stress of one solid element with a non-trivial displacement.
+GROUT_INLINE_FUNCTION void element_probe(ProbeOutput& out, Topology t, int dim, const double* X,
+                                         bool plane_stress) {
+  const ElasticConstants c = elastic_constants(210.0, 0.3, dim, plane_stress);
+  const int n = topology_num_nodes(t) * dim;
+  double u[max_element_dofs], f[max_element_dofs], K[max_element_dofs * max_element_dofs];
+  double stress[6];
+  for (int r = 0; r < n; ++r) u[r] = 1e-3 * ((r * 7) % 5 - 2) + 2e-4 * X[r];
+  out.put_status(linear_elastic_element(t, dim, X, u, c, f, K));
+  for (int r = 0; r < n; ++r) out.put(f[r]);
+  for (int r = 0; r < n * n; ++r) out.put(K[r]);
+  out.put_status(linear_elastic_stress(t, dim, X, u, c, !plane_stress, 0.3, stress));
+  for (int k = 0; k < 6; ++k) out.put(stress[k]);
+  out.put(element_measure(t, dim, X));
+}
+
+/// Distorted QUAD4 (plane strain) and TRI3 (plane stress).
+GROUT_INLINE_FUNCTION void probe_linear_elastic_2d(ProbeOutput& out) {
+  const double quad[8] = {0.0, 0.0, 1.1, 0.1, 1.0, 0.9, -0.1, 1.2};
+  const double tri[6] = {0.0, 0.0, 1.0, 0.2, 0.3, 0.8};
+  element_probe(out, Topology::quad4, 2, quad, false);
+  element_probe(out, Topology::tri3, 2, tri, true);
+}
+
+/// Distorted HEX8 and a TET4.
+GROUT_INLINE_FUNCTION void probe_linear_elastic_3d(ProbeOutput& out) {
+  const double hex[24] = {0.0, 0.0, 0.0, 1.0, 0.1, 0.0, 1.1, 1.0, 0.1, 0.0,  0.9, -0.1,
+                          0.1, 0.0, 1.0, 1.0, 0.0, 1.1, 1.0, 1.1, 0.9, -0.1, 1.0, 1.0};
+  const double tet[12] = {0.0, 0.0, 0.0, 1.0, 0.1, 0.0, 0.2, 0.9, 0.1, 0.1, 0.2, 1.1};
+  element_probe(out, Topology::hex8, 3, hex, false);
+  element_probe(out, Topology::tet4, 3, tet, false);
+}
+
+}  // namespace probes
+}  // namespace grout
