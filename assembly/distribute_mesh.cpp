@@ -38,7 +38,8 @@ class Buffer {
     std::size_t n = 0;
     get(n);
     values.resize(n);
-    std::memcpy(static_cast<void*>(values.data()), bytes.data() + at, n * sizeof(T));
+    // An empty vector's data() may be null, which memcpy must not get even for 0 bytes.
+    if (n > 0) std::memcpy(static_cast<void*>(values.data()), bytes.data() + at, n * sizeof(T));
     at += n * sizeof(T);
   }
   void get(std::string& s) {

@@ -33,10 +33,13 @@ struct LinearSolver::Impl {
   std::string last_type;
 };
 
-// KLU2 (gathered to one rank: the same answer on any number of ranks). MUMPS is faster in 3D
-// but its distributed factorisation changes the last digits between rank counts.
-std::string default_direct_type() {
-  return "amesos2";
+// 3D: MUMPS, 18-50x faster than KLU2 on 3D systems of 1e4-3e4 unknowns. 2D: KLU2, as fast
+// as MUMPS there and, gathered to one rank, the same answer bit for bit on any number of ranks;
+// MUMPS's BLAS-based factorisation rounds differently from run to run and rank count to rank
+// count, which the 2D point-contact and Hertz cases amplify (docs/performance.md, "MUMPS as
+// the default direct solver in 3D").
+std::string default_direct_type(int dim) {
+  return dim == 3 ? "mumps" : "amesos2";
 }
 
 // Measured with KLU2 (docs/input.md, "type: auto"; docs/performance.md, "Iterative solver").
@@ -45,7 +48,7 @@ long long auto_iterative_threshold(int dim) {
 }
 
 std::string auto_linear_solver_type(long long global_unknowns, int dim) {
-  return global_unknowns >= auto_iterative_threshold(dim) ? "belos" : default_direct_type();
+  return global_unknowns >= auto_iterative_threshold(dim) ? "belos" : default_direct_type(dim);
 }
 
 LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::string& where)
@@ -193,7 +196,8 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   // reduced system goes to the direct solver.
   const int iterations =
       condensation.statistics().zero_diagonals > 0
-          ? solve_system(condensation.matrix(), condensation.rhs(), y, default_direct_type(), "")
+          ? solve_system(condensation.matrix(), condensation.rhs(), y,
+                         default_direct_type(impl_->dim > 0 ? impl_->dim : 2), "")
           : solve_system(condensation.matrix(), condensation.rhs(), y, type,
                          impl_->belos_type_given ? impl_->belos_type : "GMRES");
   condensation.expand(y, x);
@@ -205,7 +209,7 @@ int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector
                                const std::string& type, const std::string& belos_type) {
   if (type == "amesos2") return solve_direct(K, b, x);
   if (type == "mumps") {
-    if (!impl_->mumps)  // the direct fallback of another type: MUMPS with its defaults
+    if (!impl_->mumps)  // type: auto or the direct fallback of belos: MUMPS's defaults
       impl_->mumps = std::make_unique<MumpsSolver>(
           mumps_options_from(Teuchos::ParameterList(), "grout/solver/Linear Solver/MUMPS"));
     impl_->mumps->solve(K, b, x);

@@ -1,12 +1,13 @@
 #pragma once
 // Linear solves K x = b, chosen by the `solver/Linear Solver` sublist:
-//   type: auto (default)     the direct solver default_direct_type() (KLU2) for a system of
+//   type: auto (default)     the direct solver default_direct_type(dim) (MUMPS in 3D, KLU2
+//                            in 2D) for a system of
 //                            fewer than auto_iterative_threshold(dim) global unknowns,
 //                            otherwise the iterative path (type: belos with its defaults).
 //   type: mumps              sparse direct MUMPS solve on the distributed matrix
 //                            (nonlinear/mumps_solver.hpp; `MUMPS` sublist: ordering,
 //                            symmetric).
-//   type: amesos2 (default)  direct KLU2 solve. Debian's KLU2 is silently wrong on a
+//   type: amesos2            direct KLU2 solve. Debian's KLU2 is silently wrong on a
 //                            communicator of more than one rank (TOOLCHAIN.md), so the
 //                            system is gathered to rank 0 and solved on a 1-rank
 //                            communicator, then scattered back.
@@ -36,8 +37,9 @@
 
 namespace grout {
 
-/// The direct solver that `type: auto` picks for small systems.
-std::string default_direct_type();
+/// The direct solver that `type: auto` picks for small systems in `dim` dimensions: mumps in
+/// 3D, amesos2 (KLU2) in 2D.
+std::string default_direct_type(int dim);
 /// `type: auto` uses the iterative path from this many global unknowns (u and λ) on.
 long long auto_iterative_threshold(int dim);
 /// The type `type: auto` resolves to for a system of `global_unknowns` in `dim` dimensions.
@@ -63,8 +65,9 @@ class LinearSolver {
   bool condenses_multipliers() const;
   // --- end condensed multipliers ---
 
-  /// Nodal coordinates (node-major x0 y0 [z0] x1 ..., every node on every rank): the
-  /// iterative path builds the rigid-body near-null space of MueLu from them.
+  /// Nodal coordinates (node-major x0 y0 [z0] x1 ..., every node on every rank) and the
+  /// dimension: the iterative path builds the rigid-body near-null space of MueLu from them,
+  /// and `type: auto` picks its solver by the dimension (2 when never called).
   void set_coordinates(std::vector<double> coordinates, int dim);
   /// The type of the last solve (auto resolved): amesos2 or belos; empty before any solve.
   const std::string& last_type() const;

@@ -244,10 +244,12 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   MPI_Allreduce(MPI_IN_PLACE, &same_layout, 1, MPI_INT, MPI_MIN, mpi_comm);
   if (!same_layout) {
     s.gid_numbering = gid_numbering;
-    s.source = gid_numbering
-                   ? row_map
-                   : Teuchos::RCP<const Map>(new Map(n, std::size_t(n_local), 0, row_map->getComm()));
-    s.root = Teuchos::rcp(new Map(n, std::size_t(comm.getRank() == 0 ? n : 0), 0, row_map->getComm()));
+    s.source =
+        gid_numbering
+            ? row_map
+            : Teuchos::RCP<const Map>(new Map(n, std::size_t(n_local), 0, row_map->getComm()));
+    s.root =
+        Teuchos::rcp(new Map(n, std::size_t(comm.getRank() == 0 ? n : 0), 0, row_map->getComm()));
     s.to_root = Teuchos::rcp(new Export(s.source, s.root));
     // The analysed pattern is in the old numbering.
     s.analysed = false;

@@ -75,16 +75,18 @@ TEST(LinearSolver, BelosGmresWithMueLuConverges) {
 TEST(LinearSolver, AutoPicksTheDirectSolverForSmallSystems) {
   for (int dim : {2, 3}) {
     const long long n = auto_iterative_threshold(dim);
-    EXPECT_EQ(auto_linear_solver_type(n - 1, dim), default_direct_type());
+    EXPECT_EQ(auto_linear_solver_type(n - 1, dim), default_direct_type(dim));
     EXPECT_EQ(auto_linear_solver_type(n, dim), "belos");
   }
   EXPECT_GT(auto_iterative_threshold(2), auto_iterative_threshold(3));
+  EXPECT_EQ(default_direct_type(3), "mumps");
+  EXPECT_EQ(default_direct_type(2), "amesos2");
   LinearSolver solver(Teuchos::ParameterList(), "test");
   const auto A = tridiagonal(200);
   Vector b(A->getRowMap()), x(A->getRowMap());
   b.randomize();
   EXPECT_EQ(solver.solve(A, b, x), 1);
-  EXPECT_EQ(solver.last_type(), default_direct_type());
+  EXPECT_EQ(solver.last_type(), default_direct_type(2));  // no coordinates given: 2D
   EXPECT_LT(relative_residual(*A, x, b), 1e-10);
 }
 
