@@ -108,6 +108,13 @@ void index_slave_nodes(ContactSurface& s) {
 
 }  // namespace
 
+void set_slave_faces(ContactSurface& s, SurfaceFaces slave) {
+  s.slave = std::move(slave);
+  s.slave_index.clear();
+  s.slave_node_faces.clear();
+  index_slave_nodes(s);
+}
+
 std::string shared_node_message(const Input& input, const ContactInput& contact, GlobalIndex n) {
   return input.file + ": grout/contact/" + contact.name + ": slave '" + contact.slave +
          "' and master '" + contact.master + "' share node " + std::to_string(n + 1) +

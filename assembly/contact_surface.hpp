@@ -64,6 +64,11 @@ LocalContactFaces build_local_contact_surface(const Mesh& mesh, const Input& inp
 /// The input error for a node (0-based) on both surfaces of `contact`.
 std::string shared_node_message(const Input& input, const ContactInput& contact, GlobalIndex node);
 
+/// Sets the slave faces of `s` and indexes their nodes (slave_nodes, slave_index,
+/// slave_node_faces); `s.integrate` is left as it is. For callers with their own surfaces
+/// (api/ MortarCoupling); then set_master_faces.
+void set_slave_faces(ContactSurface& s, SurfaceFaces slave);
+
 /// Sets the master faces of `s` (ascending ids) and its node list (slave and master nodes).
 void set_master_faces(ContactSurface& s, SurfaceFaces master);
 

@@ -2,6 +2,7 @@
 # so that another CMake project does
 #   find_package(Grout REQUIRED)
 #   target_link_libraries(app PRIVATE Grout::grout)   # or Grout::kernels for kernels only
+#   target_link_libraries(app PRIVATE Grout::mortar)  # the embedding API, <grout/mortar_coupling.hpp>
 include(CMakePackageConfigHelpers)
 
 set_target_properties(grout_kokkos_deps PROPERTIES EXPORT_NAME kokkos_deps)
@@ -10,10 +11,11 @@ set_target_properties(grout_kernels PROPERTIES EXPORT_NAME kernels)
 set_target_properties(grout_io PROPERTIES EXPORT_NAME io)
 set_target_properties(grout_assembly PROPERTIES EXPORT_NAME assembly)
 set_target_properties(grout_nonlinear PROPERTIES EXPORT_NAME nonlinear)
+set_target_properties(grout_mortar PROPERTIES EXPORT_NAME mortar)
 set_target_properties(grout PROPERTIES EXPORT_NAME grout)
 
 install(TARGETS grout_kokkos_deps grout_trilinos_deps grout_kernels grout_io grout_assembly
-                grout_nonlinear grout
+                grout_nonlinear grout_mortar grout
   EXPORT GroutTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -21,6 +23,9 @@ install(TARGETS grout_kokkos_deps grout_trilinos_deps grout_kernels grout_io gro
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/kernels ${PROJECT_SOURCE_DIR}/io
                   ${PROJECT_SOURCE_DIR}/assembly ${PROJECT_SOURCE_DIR}/nonlinear
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/grout FILES_MATCHING PATTERN "*.hpp")
+# The embedding API: <grout/mortar_coupling.hpp> (Grout::mortar).
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/api/grout DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+  FILES_MATCHING PATTERN "*.hpp")
 
 set(grout_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/Grout)
 install(EXPORT GroutTargets NAMESPACE Grout:: DESTINATION ${grout_cmake_dir})

@@ -1,0 +1,148 @@
+#pragma once
+// grout::MortarCoupling: Grout's mortar terms for a host code's own contact surfaces, from
+// plain arrays (docs/embedding.md is the tutorial). Installed as <grout/mortar_coupling.hpp>,
+// target Grout::mortar.
+//
+// For a slave surface Γ¹ and a master surface Γ² (LINE2 in 2D, TRI3/QUAD4 in 3D), with the dual
+// multiplier basis Φ_j (Popp et al. 2010, eqs. 9-10, 30; DESIGN.md §2):
+//   D_jj = ∫ Φ_j dA                  per slave node j (D is diagonal for the dual basis)
+//   M_jl = ∫ Φ_j (N²_l ∘ χ) dA       slave node j → master node l (CRS)
+//   g̃_j  = −n_j · (D_jj x¹_j − Σ_l M_jl x²_l)       weighted gap, > 0 open, < 0 penetrating
+//   f¹_j = +D_jj λ_j,  f²_l = −Σ_j M_jl λ_j          nodal contact forces for a multiplier λ
+// n_j is the averaged unit normal at slave node j, outward from the slave body (towards the
+// master). λ_j follows Grout's driver (docs/input.md): the traction on the slave is −λ_j and
+// the normal pressure λ_n = n_j · λ_j is > 0 in compression; f¹, f² are the contact terms of the
+// residual r = f_int − f_ext + f_c (the force on slave node j is −f¹_j). Σ f¹ + Σ f² = 0 for
+// any λ (Σ_l M_jl = D_jj pair by pair).
+//
+// Serial when no communicator is given. With one, each rank passes the faces it owns (every
+// face owned by exactly one rank, nodes numbered by global ids shared by both surfaces); the
+// master faces a rank needs, and the slave faces around its nodes (for the nodal normals), come
+// through Grout's parallel coarse search (assembly/contact_distribution). D, M, gaps and
+// forces are then this rank's contributions: the host sums them over the ranks by node id, as
+// it assembles element contributions. Normals and tangents are complete on every rank.
+//
+// Errors: every check of the host's data throws MortarCouplingError with the offending value
+// (with a communicator, on every rank: an error one rank finds is agreed on collectively).
+// Nothing returned is NaN.
+
+#include <mpi.h>
+
+#include <cstddef>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include "kernels/mortar_types.hpp"
+
+namespace grout {
+
+/// Wrong sizes, face types, node ids or options, non-finite coordinates, degenerate faces.
+class MortarCouplingError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+/// Lagrange multiplier basis. Only `dual` is implemented (the kernels integrate the dual
+/// basis, which makes D diagonal); `standard` is rejected with MortarCouplingError.
+enum class MultiplierBasis { dual, standard };
+
+struct MortarCouplingOptions {
+  MortarIntegration integration = MortarIntegration::exact;  ///< or collocation
+  MultiplierBasis multipliers = MultiplierBasis::dual;
+  int collocation_points = 20;  ///< collocation: per slave element (2D) or per direction (3D)
+  double search_factor = 0.5;   ///< face boxes grown by this fraction of the face size
+  bool derivatives = false;     ///< also compute ∂D, ∂M, ∂g̃ / ∂coordinates (Sacado AD)
+};
+
+/// One surface (this rank's part) as plain arrays, not owned: MortarCoupling copies them.
+struct SurfaceArrays {
+  /// 2: LINE2 (2D); 3: TRI3; 4: QUAD4, or a mix of QUAD4 and TRI3 rows padded with −1.
+  int nodes_per_face = 2;
+  const int* faces = nullptr;  ///< n_faces × nodes_per_face, row indices into `coordinates`
+  std::size_t n_faces = 0;
+  const double* coordinates = nullptr;  ///< n_nodes × dim, row-major (any consistent length unit)
+  std::size_t n_nodes = 0;
+  /// Optional: a global id per coordinate row, from one numbering shared by both surfaces
+  /// (required with a communicator of more than one rank). Default: slave rows 0 … n_s − 1,
+  /// master rows n_s … n_s + n_m − 1.
+  const long long* node_ids = nullptr;
+};
+
+/// Helper: SurfaceArrays over std::vectors (they must outlive the constructor call).
+SurfaceArrays surface_arrays(int nodes_per_face, const std::vector<int>& faces,
+                             const std::vector<double>& coordinates, int dim,
+                             const std::vector<long long>& node_ids = {});
+
+/// One entry of a sparse derivative: ∂(quantity `row`) / ∂(coordinate `column`), with
+/// column = node id · dim + component (node ids as in SurfaceArrays::node_ids). Each
+/// (row, column) appears once.
+struct DerivativeTriplet {
+  int row;
+  long long column;
+  double value;
+};
+
+/// Nodal contact forces of one multiplier field (see the file comment for the signs).
+struct ContactForces {
+  std::vector<double> slave;            ///< per slave row, dim components: +D_jj λ_j
+  std::vector<long long> master_nodes;  ///< ids of the master nodes with an M entry (ascending)
+  std::vector<double> master;           ///< per master_nodes entry, dim: −Σ_j M_jl λ_j
+};
+
+class MortarCoupling {
+ public:
+  /// Copies the surfaces and checks them (sizes, face types, ids), then update()s with their
+  /// coordinates. \pre Kokkos is initialised (e.g. Kokkos::ScopeGuard) for the object's life.
+  /// comm: MPI_COMM_NULL for serial use; otherwise collective over comm (the constructor and
+  /// update()).
+  MortarCoupling(int dim, const SurfaceArrays& slave, const SurfaceArrays& master,
+                 const MortarCouplingOptions& options = {}, MPI_Comm comm = MPI_COMM_NULL);
+  ~MortarCoupling();
+  MortarCoupling(MortarCoupling&&) noexcept;
+  MortarCoupling& operator=(MortarCoupling&&) noexcept;
+
+  /// Recomputes everything at new coordinates (same rows and layout as at construction:
+  /// n_nodes × dim each). Collective with a communicator.
+  void update(const double* slave_coordinates, const double* master_coordinates);
+  /// The same, checking the sizes.
+  void update(const std::vector<double>& slave_coordinates,
+              const std::vector<double>& master_coordinates);
+
+  int dim() const;
+  std::size_t num_slave_nodes() const;  ///< slave coordinate rows
+
+  /// D_jj per slave row (0 for rows whose faces overlap no master face).
+  const std::vector<double>& D() const;
+  /// M in CRS: row j's entries are [M_offsets[j], M_offsets[j+1]), master node ids in
+  /// M_columns (ascending per row), values in M_values.
+  const std::vector<std::size_t>& M_offsets() const;
+  const std::vector<long long>& M_columns() const;
+  const std::vector<double>& M_values() const;
+  /// g̃_j per slave row (0 where D_jj = 0).
+  const std::vector<double>& weighted_gaps() const;
+  /// Unit averaged nodal normals, per slave row × dim (0 for rows on no slave face).
+  const std::vector<double>& normals() const;
+  /// Unit tangents per slave row × (dim − 1) × dim: 2D τ = (−n_y, n_x); 3D (τ₁, τ₂, n)
+  /// right-handed, τ₁ from the coordinate axis least aligned with n.
+  const std::vector<double>& tangents() const;
+  /// (slave face, master face) pairs with a non-empty overlap in the last update.
+  int overlapping_pairs() const;
+
+  /// Forces of the multiplier field lambda (per slave row × dim).
+  ContactForces contact_forces(const double* lambda) const;
+  ContactForces contact_forces(const std::vector<double>& lambda) const;
+
+  /// Exact derivatives (options.derivatives): rows are slave rows for D and the gaps, and
+  /// positions in M_values for M. Throw MortarCouplingError if derivatives were not requested.
+  const std::vector<DerivativeTriplet>& D_derivatives() const;
+  const std::vector<DerivativeTriplet>& M_derivatives() const;
+  const std::vector<DerivativeTriplet>& gap_derivatives() const;
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace grout
