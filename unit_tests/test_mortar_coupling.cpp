@@ -1,0 +1,345 @@
+// grout::MortarCoupling (api/), the embedding API: Σ D = slave measure, the weighted gap of a
+// known offset, force balance for any multiplier field, exact derivatives against central
+// differences, the two evaluation paths against each other, the distributed evaluation
+// against the serial one (on 2 ranks), and the errors.
+
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <random>
+
+#include "grout/mortar_coupling.hpp"
+
+namespace grout {
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+/// Two surfaces as plain arrays, ids: slave rows 0 … n_s − 1, master rows n_s … .
+struct Surfaces {
+  int dim = 2, cols_s = 2, cols_m = 2;
+  std::vector<double> xs, xm;
+  std::vector<int> fs, fm;
+  std::vector<long long> ids_s, ids_m;
+  double slave_measure = 0.0;
+  std::size_t ns() const { return xs.size() / dim; }
+  std::size_t nm() const { return xm.size() / dim; }
+};
+
+void number(Surfaces& s) {
+  s.ids_s.resize(s.ns());
+  s.ids_m.resize(s.nm());
+  for (std::size_t i = 0; i < s.ns(); ++i) s.ids_s[i] = (long long)i;
+  for (std::size_t i = 0; i < s.nm(); ++i) s.ids_m[i] = (long long)(s.ns() + i);
+}
+
+/// 2D: slave arc of radius R (n segments, counter-clockwise: normal outward), master arc of
+/// radius R + delta over a wider angle (m segments, clockwise: normal inward).
+Surfaces arcs_2d(int n, int m, double R, double delta) {
+  Surfaces s;
+  const double t0 = 0.2, t1 = 1.2, pad = 0.05;
+  for (int i = 0; i <= n; ++i) {
+    const double t = t0 + (t1 - t0) * i / n;
+    s.xs.insert(s.xs.end(), {R * std::cos(t), R * std::sin(t)});
+    if (i < n) s.fs.insert(s.fs.end(), {i, i + 1});
+  }
+  for (int i = 0; i <= m; ++i) {
+    const double t = t1 + pad - (t1 - t0 + 2 * pad) * i / m;
+    s.xm.insert(s.xm.end(), {(R + delta) * std::cos(t), (R + delta) * std::sin(t)});
+    if (i < m) s.fm.insert(s.fm.end(), {i, i + 1});
+  }
+  s.slave_measure = n * 2.0 * R * std::sin(0.5 * (t1 - t0) / n);
+  number(s);
+  return s;
+}
+
+/// 3D: slave QUAD4 faces on a cylinder of radius R (axis z, n × n, normal outward), master
+/// TRI3 faces on radius R + delta over a wider patch (m × m cells cut in two, normal inward).
+Surfaces cylinders_3d(int n, int m, double R, double delta) {
+  Surfaces s;
+  s.dim = 3;
+  s.cols_s = 4;
+  s.cols_m = 3;
+  const double t0 = 0.2, t1 = 1.0, L = 0.8, pad = 0.05;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double t = t0 + (t1 - t0) * i / n;
+      s.xs.insert(s.xs.end(), {R * std::cos(t), R * std::sin(t), L * j / n});
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i;
+      s.fs.insert(s.fs.end(), {a, a + 1, a + n + 2, a + n + 1});
+    }
+  for (int j = 0; j <= m; ++j)
+    for (int i = 0; i <= m; ++i) {
+      const double t = t0 - pad + (t1 - t0 + 2 * pad) * i / m;
+      s.xm.insert(s.xm.end(), {(R + delta) * std::cos(t), (R + delta) * std::sin(t),
+                               -pad + (L + 2 * pad) * j / m});
+    }
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < m; ++i) {
+      const int a = j * (m + 1) + i, b = a + 1, c = a + m + 2, d = a + m + 1;
+      s.fm.insert(s.fm.end(), {a, d, b});  // clockwise seen from outside
+      s.fm.insert(s.fm.end(), {b, d, c});
+    }
+  s.slave_measure = n * 2.0 * R * std::sin(0.5 * (t1 - t0) / n) * L;
+  number(s);
+  return s;
+}
+
+/// The faces of rank r of p: [n r/p, n (r+1)/p) of each surface; every coordinate row.
+std::vector<int> my_faces(const std::vector<int>& faces, int cols, int rank, int size) {
+  const std::size_t n = faces.size() / cols;
+  const std::size_t f0 = n * rank / size, f1 = n * (rank + 1) / size;
+  return {faces.begin() + f0 * cols, faces.begin() + f1 * cols};
+}
+
+MortarCoupling couple(const Surfaces& s, MortarCouplingOptions o = {},
+                      MPI_Comm comm = MPI_COMM_NULL) {
+  int rank = 0, size = 1;
+  if (comm != MPI_COMM_NULL) MPI_Comm_rank(comm, &rank), MPI_Comm_size(comm, &size);
+  static thread_local std::vector<int> fs, fm;  // must outlive the constructor call only
+  fs = my_faces(s.fs, s.cols_s, rank, size);
+  fm = my_faces(s.fm, s.cols_m, rank, size);
+  return MortarCoupling(s.dim, surface_arrays(s.cols_s, fs, s.xs, s.dim, s.ids_s),
+                        surface_arrays(s.cols_m, fm, s.xm, s.dim, s.ids_m), o, comm);
+}
+
+double sum_over_ranks(double v, MPI_Comm comm) {
+  if (comm == MPI_COMM_NULL) return v;
+  double sum = 0.0;
+  MPI_Allreduce(&v, &sum, 1, MPI_DOUBLE, MPI_SUM, comm);
+  return sum;
+}
+
+std::vector<Surfaces> cases() {
+  return {arcs_2d(12, 17, 1.0, 0.01), cylinders_3d(6, 8, 1.0, 0.01)};
+}
+
+TEST(MortarCoupling, SumOfDEqualsSlaveMeasure) {
+  for (MPI_Comm comm : {MPI_COMM_NULL, MPI_COMM_WORLD})
+    for (const Surfaces& s : cases())
+      for (bool derivatives : {false, true}) {
+        MortarCouplingOptions o;
+        o.derivatives = derivatives;
+        const MortarCoupling c = couple(s, o, comm);
+        double sum = 0.0;
+        for (double d : c.D()) sum += d;
+        EXPECT_NEAR(sum_over_ranks(sum, comm), s.slave_measure, 1e-12)
+            << s.dim << "D, derivatives " << derivatives;
+      }
+}
+
+TEST(MortarCoupling, WeightedGapOfKnownOffset) {
+  // A flat inclined interface: the arcs/cylinders unrolled, (r, θ, z) → θ τ₁ + z τ₂ + (r − 1) n,
+  // so that the master is the slave plane moved by delta along the slave normal n and
+  // g̃_j = −n·(D_jj x_j − Σ_l M_jl x_l) = delta Σ_l M_jl = delta D_jj exactly.
+  const double delta = 0.003;
+  for (int dim : {2, 3}) {
+    Surfaces s = dim == 2 ? arcs_2d(8, 11, 1.0, delta) : cylinders_3d(4, 6, 1.0, delta);
+    const double t1[3] = {0.8, 0.6, 0.0}, t2[3] = {-0.36, 0.48, 0.8};
+    const double n[3] = {dim == 2 ? 0.6 : 0.48, dim == 2 ? -0.8 : -0.64, dim == 2 ? 0.0 : 0.6};
+    for (auto* x : {&s.xs, &s.xm})
+      for (std::size_t i = 0; i < x->size() / dim; ++i) {
+        double* p = &(*x)[i * dim];
+        const double r = std::hypot(p[0], p[1]), theta = std::atan2(p[1], p[0]);
+        const double z = dim == 3 ? p[2] : 0.0;
+        for (int d = 0; d < dim; ++d) p[d] = theta * t1[d] + z * t2[d] + (r - 1.0) * n[d];
+      }
+    for (bool derivatives : {false, true}) {
+      MortarCouplingOptions o;
+      o.derivatives = derivatives;
+      const MortarCoupling c = couple(s, o);
+      for (std::size_t j = 0; j < c.num_slave_nodes(); ++j) {
+        EXPECT_NEAR(c.weighted_gaps()[j], delta * c.D()[j], 1e-14) << dim << "D node " << j;
+        double nn = 0.0;
+        for (int d = 0; d < dim; ++d) nn += c.normals()[j * dim + d] * n[d];
+        EXPECT_NEAR(std::abs(nn), 1.0, 1e-12);
+      }
+    }
+  }
+}
+
+TEST(MortarCoupling, ForcesBalanceForAnyMultiplier) {
+  std::mt19937 rng(14);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (MPI_Comm comm : {MPI_COMM_NULL, MPI_COMM_WORLD})
+    for (const Surfaces& s : cases())
+      for (auto scheme : {MortarIntegration::exact, MortarIntegration::collocation}) {
+        MortarCouplingOptions o;
+        o.integration = scheme;
+        const MortarCoupling c = couple(s, o, comm);
+        std::vector<double> lambda(c.num_slave_nodes() * s.dim);
+        for (double& l : lambda) l = u(rng);
+        const ContactForces f = c.contact_forces(lambda);
+        for (int d = 0; d < s.dim; ++d) {
+          double total = 0.0, scale = 0.0;
+          for (std::size_t j = 0; j < f.slave.size() / s.dim; ++j)
+            total += f.slave[j * s.dim + d], scale += std::abs(f.slave[j * s.dim + d]);
+          for (std::size_t l = 0; l < f.master_nodes.size(); ++l) total += f.master[l * s.dim + d];
+          EXPECT_NEAR(sum_over_ranks(total, comm), 0.0, 1e-13 * (1.0 + scale));
+        }
+      }
+}
+
+// The values-only path (kernel launches) and the derivative path (evaluate_contact_mortar).
+TEST(MortarCoupling, BothPathsAgree) {
+  for (const Surfaces& s : cases()) {
+    MortarCouplingOptions o;
+    const MortarCoupling a = couple(s, o);
+    o.derivatives = true;
+    const MortarCoupling b = couple(s, o);
+    ASSERT_EQ(a.M_offsets(), b.M_offsets());
+    ASSERT_EQ(a.M_columns(), b.M_columns());
+    EXPECT_EQ(a.overlapping_pairs(), b.overlapping_pairs());
+    for (std::size_t j = 0; j < a.num_slave_nodes(); ++j) {
+      EXPECT_NEAR(a.D()[j], b.D()[j], 1e-13);
+      EXPECT_NEAR(a.weighted_gaps()[j], b.weighted_gaps()[j], 1e-14);
+    }
+    for (std::size_t k = 0; k < a.M_values().size(); ++k)
+      EXPECT_NEAR(a.M_values()[k], b.M_values()[k], 1e-13);
+    for (std::size_t k = 0; k < a.normals().size(); ++k)
+      EXPECT_NEAR(a.normals()[k], b.normals()[k], 1e-14);
+    for (std::size_t k = 0; k < a.tangents().size(); ++k)
+      EXPECT_NEAR(a.tangents()[k], b.tangents()[k], 1e-14);
+  }
+}
+
+// A distributed evaluation sums (over the ranks) to the serial one; normals agree everywhere.
+TEST(MortarCoupling, DistributedEqualsSerial) {
+  for (const Surfaces& s : cases()) {
+    const MortarCoupling serial = couple(s);
+    const MortarCoupling dist = couple(s, {}, MPI_COMM_WORLD);
+    for (std::size_t j = 0; j < serial.num_slave_nodes(); ++j) {
+      EXPECT_NEAR(sum_over_ranks(dist.D()[j], MPI_COMM_WORLD), serial.D()[j], 1e-14);
+      EXPECT_NEAR(sum_over_ranks(dist.weighted_gaps()[j], MPI_COMM_WORLD),
+                  serial.weighted_gaps()[j], 1e-15);
+      if (dist.D()[j] != 0.0) {
+        for (int d = 0; d < s.dim; ++d)
+          EXPECT_NEAR(dist.normals()[j * s.dim + d], serial.normals()[j * s.dim + d], 1e-15);
+      }
+    }
+  }
+}
+
+// Dense matrix (rows × (n_nodes · dim)) of one quantity's triplets.
+using Dense = std::map<std::pair<int, long long>, double>;
+
+TEST(MortarCoupling, DerivativesMatchCentralDifferences) {
+  for (Surfaces s : {arcs_2d(4, 5, 1.0, 0.02), cylinders_3d(2, 3, 1.0, 0.02)}) {
+    MortarCouplingOptions o;
+    o.derivatives = true;
+    MortarCoupling c = couple(s, o);
+    Dense dD, dM, dg;
+    for (const auto& t : c.D_derivatives()) dD[{t.row, t.column}] += t.value;
+    for (const auto& t : c.M_derivatives()) dM[{t.row, t.column}] += t.value;
+    for (const auto& t : c.gap_derivatives()) dg[{t.row, t.column}] += t.value;
+    ASSERT_FALSE(dD.empty() || dM.empty() || dg.empty());
+    const std::vector<std::size_t> offsets = c.M_offsets();
+    const std::vector<long long> columns = c.M_columns();
+    const double h = 1e-6;
+    double worst = 0.0;
+    const std::size_t n_nodes = s.ns() + s.nm();
+    for (std::size_t node = 0; node < n_nodes; ++node)
+      for (int d = 0; d < s.dim; ++d) {
+        const long long column = (long long)node * s.dim + d;
+        double& x = node < s.ns() ? s.xs[node * s.dim + d] : s.xm[(node - s.ns()) * s.dim + d];
+        const double x0 = x;
+        x = x0 + h;
+        c.update(s.xs, s.xm);
+        const std::vector<double> Dp = c.D(), Mp = c.M_values(), gp = c.weighted_gaps();
+        ASSERT_EQ(c.M_columns(), columns);
+        x = x0 - h;
+        c.update(s.xs, s.xm);
+        const std::vector<double> Dm = c.D(), Mm = c.M_values(), gm = c.weighted_gaps();
+        x = x0;
+        for (std::size_t j = 0; j < Dp.size(); ++j) {
+          const double fd_D = (Dp[j] - Dm[j]) / (2 * h), fd_g = (gp[j] - gm[j]) / (2 * h);
+          const auto at = [&](const Dense& m, int row) {
+            const auto it = m.find({row, column});
+            return it == m.end() ? 0.0 : it->second;
+          };
+          EXPECT_NEAR(at(dD, int(j)), fd_D, 1e-6) << s.dim << "D: D_" << j << " / " << column;
+          EXPECT_NEAR(at(dg, int(j)), fd_g, 1e-6) << s.dim << "D: g_" << j << " / " << column;
+          worst =
+              std::max({worst, std::abs(at(dD, int(j)) - fd_D), std::abs(at(dg, int(j)) - fd_g)});
+          for (std::size_t k = offsets[j]; k < offsets[j + 1]; ++k) {
+            const double fd_M = (Mp[k] - Mm[k]) / (2 * h);
+            EXPECT_NEAR(at(dM, int(k)), fd_M, 1e-6) << s.dim << "D: M_" << k << " / " << column;
+            worst = std::max(worst, std::abs(at(dM, int(k)) - fd_M));
+          }
+        }
+      }
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", worst);
+    RecordProperty("worst_" + std::to_string(s.dim) + "d", text);
+  }
+}
+
+TEST(MortarCoupling, ClearErrors) {
+  const Surfaces s = arcs_2d(4, 5, 1.0, 0.01);
+  const auto throws_with = [](const std::function<void()>& f, const std::string& text) {
+    try {
+      f();
+      ADD_FAILURE() << "no error; expected '" << text << "'";
+    } catch (const MortarCouplingError& e) {
+      EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+    }
+  };
+  const auto make = [&](const Surfaces& t, MortarCouplingOptions o = {}, int cols = 2) {
+    MortarCoupling(t.dim, surface_arrays(cols, t.fs, t.xs, t.dim),
+                   surface_arrays(2, t.fm, t.xm, t.dim), o);
+  };
+  MortarCouplingOptions standard;
+  standard.multipliers = MultiplierBasis::standard;
+  throws_with([&] { make(s, standard); }, "standard multipliers are not supported");
+  throws_with(
+      [&] {
+        MortarCoupling(4, surface_arrays(2, s.fs, s.xs, 2), surface_arrays(2, s.fm, s.xm, 2));
+      },
+      "dim = 4");
+  Surfaces quads = s;
+  quads.fs.resize(4);  // one "face" of 4 nodes in 2D
+  throws_with([&] { make(quads, {}, 4); }, "nodes_per_face = 4 in 2D");
+  Surfaces bad_index = s;
+  bad_index.fs[3] = 99;
+  throws_with([&] { make(bad_index); }, "face 1 node 1 = 99 is not a coordinate row");
+  Surfaces degenerate = s;
+  degenerate.xs[2] = degenerate.xs[0], degenerate.xs[3] = degenerate.xs[1];  // rows 0, 1 coincide
+  throws_with([&] { make(degenerate); }, "slave surface: face 0 (rows 0 1) is degenerate");
+  Surfaces nan = s;
+  nan.xm[3] = std::nan("");
+  throws_with([&] { make(nan); }, "master surface: coordinate 1 of row 1 is nan");
+  throws_with([&] { surface_arrays(2, {0, 1, 2}, s.xs, 2); }, "3 face entries");
+  MortarCoupling c = couple(s);
+  throws_with([&] { c.update(s.xs, std::vector<double>(3)); }, "3 master coordinates");
+  throws_with([&] { c.contact_forces(std::vector<double>(1)); }, "1 multiplier values");
+  throws_with([&] { c.D_derivatives(); }, "derivatives were not requested");
+  const std::vector<long long> twice(s.nm(), 7), overlapping(s.nm(), 0);
+  const auto with_ids = [&](const std::vector<long long>& ids) {
+    MortarCoupling(2, surface_arrays(2, s.fs, s.xs, 2, s.ids_s),
+                   surface_arrays(2, s.fm, s.xm, 2, ids));
+  };
+  throws_with([&] { with_ids(twice); }, "master surface: node id 7 is given twice");
+  std::vector<long long> shared = s.ids_m;
+  shared[2] = 3;
+  throws_with([&] { with_ids(shared); }, "node id 3 is on both surfaces");
+  // A master that faces no slave: zeros, no NaN.
+  Surfaces far = s;
+  for (std::size_t i = 0; i < far.xm.size(); i += 2) far.xm[i] += 10.0;
+  const MortarCoupling none = couple(far);
+  EXPECT_EQ(none.overlapping_pairs(), 0);
+  for (std::size_t j = 0; j < none.num_slave_nodes(); ++j) {
+    EXPECT_EQ(none.D()[j], 0.0);
+    EXPECT_EQ(none.weighted_gaps()[j], 0.0);
+    EXPECT_TRUE(std::isfinite(none.normals()[2 * j]));
+  }
+  EXPECT_TRUE(none.M_values().empty());
+}
+
+}  // namespace
+}  // namespace grout
