@@ -1,0 +1,200 @@
+// A host code's use of Grout's mortar terms (docs/embedding.md): two curved, non-matching
+// contact surfaces built here, handed to grout::MortarCoupling as plain arrays, and three
+// checks on what comes back:
+//   1. Σ_j D_jj = the slave surface's measure (length in 2D, area in 3D);
+//   2. the nodal gap g̃_j / D_jj of a master placed at a known normal offset δ equals δ up to
+//      the chord error of the faceted surfaces;
+//   3. the contact forces of a pressure field balance: Σ f¹ + Σ f² = 0.
+// 2D: slave arc of radius R (LINE2), master arc of radius R + δ. 3D: slave cylinder patch of
+// radius R (QUAD4), master patch of radius R + δ (TRI3). Runs serially or on any number of
+// ranks (each rank owns a slice of the faces of both surfaces). Exits 1 if a check fails.
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <grout/mortar_coupling.hpp>
+#include <vector>
+
+namespace {
+
+constexpr double R = 1.0, delta = 0.01, t0 = 0.2, t1 = 1.2, length = 0.8, pad = 0.05;
+
+/// One surface as the host holds it: global node ids and coordinates, faces by global id.
+struct Surface {
+  int nodes_per_face = 2;
+  std::vector<long long> ids;
+  std::vector<double> x;
+  std::vector<long long> faces;
+};
+
+/// Nodes of a structured (n_t + 1) × (n_z + 1) grid on the cylinder of radius r over the angles
+/// [a, b] and heights [z0, z1] (2D: one row, z ignored), ids from `first`.
+void add_grid_nodes(Surface& s, int dim, int n_t, int n_z, double r, double a, double b, double z0,
+                    double z1, long long first) {
+  for (int j = 0; j <= (dim == 2 ? 0 : n_z); ++j)
+    for (int i = 0; i <= n_t; ++i) {
+      const double t = a + (b - a) * i / n_t;
+      s.ids.push_back(first++);
+      s.x.insert(s.x.end(), {r * std::cos(t), r * std::sin(t)});
+      if (dim == 3) s.x.push_back(z0 + (z1 - z0) * j / n_z);
+    }
+}
+
+/// Slave: n_t (× n_t in 3D) faces at radius R, normals outward (towards the master).
+/// Master: m_t (× m_t) faces at radius R + δ over a wider patch, normals inward.
+void build_surfaces(int dim, int n_t, int m_t, Surface& slave, Surface& master) {
+  slave.nodes_per_face = dim == 2 ? 2 : 4;
+  master.nodes_per_face = dim == 2 ? 2 : 3;
+  add_grid_nodes(slave, dim, n_t, n_t, R, t0, t1, 0.0, length, 0);
+  const long long first_master = (long long)slave.ids.size();
+  add_grid_nodes(master, dim, m_t, m_t, R + delta, t1 + pad, t0 - pad, -pad, length + pad,
+                 first_master);
+  if (dim == 2) {
+    for (int i = 0; i < n_t; ++i) slave.faces.insert(slave.faces.end(), {i, i + 1});
+    for (int i = 0; i < m_t; ++i)
+      master.faces.insert(master.faces.end(), {first_master + i, first_master + i + 1});
+    return;
+  }
+  for (int j = 0; j < n_t; ++j)
+    for (int i = 0; i < n_t; ++i) {
+      const long long a = j * (n_t + 1) + i;
+      slave.faces.insert(slave.faces.end(), {a, a + 1, a + n_t + 2, a + n_t + 1});
+    }
+  // The master grid runs from large to small angles: its faces, in the slave's (a, b, c, d)
+  // order cut in two triangles, have inward normals (towards the slave).
+  for (int j = 0; j < m_t; ++j)
+    for (int i = 0; i < m_t; ++i) {
+      const long long a = first_master + j * (m_t + 1) + i, b = a + 1, c = a + m_t + 2,
+                      d = a + m_t + 1;
+      master.faces.insert(master.faces.end(), {a, b, d, b, c, d});
+    }
+}
+
+/// This rank's slice of a surface's faces, as SurfaceArrays rows: the nodes of those faces
+/// only (local rows), with their global ids.
+struct RankArrays {
+  std::vector<int> faces;
+  std::vector<double> x;
+  std::vector<long long> ids;
+};
+RankArrays my_part(const Surface& s, int dim, int rank, int size) {
+  const std::size_t n = s.faces.size() / s.nodes_per_face;
+  const std::size_t f0 = n * rank / size, f1 = n * (rank + 1) / size;
+  RankArrays part;
+  std::vector<int> row(s.ids.size(), -1);
+  const long long first = s.ids.front();
+  for (std::size_t f = f0; f < f1; ++f)
+    for (int a = 0; a < s.nodes_per_face; ++a) {
+      const std::size_t node = std::size_t(s.faces[f * s.nodes_per_face + a] - first);
+      if (row[node] < 0) {
+        row[node] = int(part.ids.size());
+        part.ids.push_back(s.ids[node]);
+        part.x.insert(part.x.end(), &s.x[node * dim], &s.x[node * dim] + dim);
+      }
+      part.faces.push_back(row[node]);
+    }
+  return part;
+}
+
+/// The chord error of a faceted arc of radius r with angular step h: r (1 − cos(h/2)).
+double sagitta(double r, double h) {
+  return r * (1.0 - std::cos(0.5 * h));
+}
+
+int check(int dim, MPI_Comm comm) {
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  const int n_t = dim == 2 ? 24 : 8, m_t = dim == 2 ? 31 : 11;
+  Surface slave, master;
+  build_surfaces(dim, n_t, m_t, slave, master);
+  const RankArrays s = my_part(slave, dim, rank, size), m = my_part(master, dim, rank, size);
+
+  // The calls: construct (checks the data, first update), update at each new configuration,
+  // read back.
+  grout::MortarCouplingOptions options;  // exact integration, dual multipliers
+  grout::MortarCoupling coupling(
+      dim, grout::surface_arrays(slave.nodes_per_face, s.faces, s.x, dim, s.ids),
+      grout::surface_arrays(master.nodes_per_face, m.faces, m.x, dim, m.ids), options, comm);
+  coupling.update(s.x, m.x);  // (unchanged here; a host calls this after every motion)
+
+  // D and g̃ are this rank's contributions: sum them over the ranks by node id (a host would
+  // assemble them like its element vectors).
+  const std::size_t n_slave_nodes = slave.ids.size();
+  std::vector<double> D(n_slave_nodes, 0.0), g(n_slave_nodes, 0.0);
+  for (std::size_t r = 0; r < s.ids.size(); ++r) {
+    D[s.ids[r]] += coupling.D()[r];
+    g[s.ids[r]] += coupling.weighted_gaps()[r];
+  }
+  MPI_Allreduce(MPI_IN_PLACE, D.data(), int(n_slave_nodes), MPI_DOUBLE, MPI_SUM, comm);
+  MPI_Allreduce(MPI_IN_PLACE, g.data(), int(n_slave_nodes), MPI_DOUBLE, MPI_SUM, comm);
+
+  // 1. Σ D = slave measure (the faceted surface's: chords × axial length).
+  const double chord = 2.0 * R * std::sin(0.5 * (t1 - t0) / n_t);
+  const double measure = n_t * chord * (dim == 3 ? length : 1.0);
+  double sum_D = 0.0;
+  for (double d : D) sum_D += d;
+  const bool area_ok = std::abs(sum_D - measure) <= 1e-12 * measure;
+
+  // 2. Nodal gap g̃_j / D_jj = δ within the chord errors of both surfaces.
+  const double tol = sagitta(R, (t1 - t0) / n_t) + sagitta(R + delta, (t1 - t0 + 2 * pad) / m_t);
+  double worst_gap = 0.0;
+  for (std::size_t j = 0; j < n_slave_nodes; ++j)
+    worst_gap = std::max(worst_gap, std::abs(g[j] / D[j] - delta));
+  const bool gap_ok = worst_gap <= tol;
+
+  // 3. Forces of a uniform pressure p (λ_j = p n_j, Grout's sign: λ_n > 0 in compression)
+  // plus a tangential part: Σ f¹ + Σ f² = 0, summed over the ranks.
+  const double p = 2.5;
+  std::vector<double> lambda(s.ids.size() * dim);
+  for (std::size_t r = 0; r < s.ids.size(); ++r)
+    for (int d = 0; d < dim; ++d)
+      lambda[r * dim + d] =
+          p * coupling.normals()[r * dim + d] + 0.3 * coupling.tangents()[r * (dim - 1) * dim + d];
+  const grout::ContactForces f = coupling.contact_forces(lambda);
+  double total[3] = {0.0, 0.0, 0.0}, slave_total[3] = {0.0, 0.0, 0.0};
+  for (std::size_t r = 0; r < s.ids.size(); ++r)
+    for (int d = 0; d < dim; ++d) slave_total[d] += f.slave[r * dim + d];
+  for (std::size_t l = 0; l < f.master_nodes.size(); ++l)
+    for (int d = 0; d < dim; ++d) total[d] += f.master[l * dim + d];
+  for (int d = 0; d < dim; ++d) total[d] += slave_total[d];
+  MPI_Allreduce(MPI_IN_PLACE, total, 3, MPI_DOUBLE, MPI_SUM, comm);
+  MPI_Allreduce(MPI_IN_PLACE, slave_total, 3, MPI_DOUBLE, MPI_SUM, comm);
+  const double imbalance =
+      std::sqrt(total[0] * total[0] + total[1] * total[1] + total[2] * total[2]);
+  const double resultant =
+      std::sqrt(slave_total[0] * slave_total[0] + slave_total[1] * slave_total[1] +
+                slave_total[2] * slave_total[2]);
+  const bool balance_ok = resultant > 0.0 && imbalance <= 1e-13 * p * measure;
+
+  if (rank == 0) {
+    std::printf("embed_mortar %dD on %d rank%s: sum D = %.15g (slave %s %.15g) %s\n", dim, size,
+                size > 1 ? "s" : "", sum_D, dim == 2 ? "length" : "area", measure,
+                area_ok ? "ok" : "FAILED");
+    std::printf("  gap of the offset %g: worst |g - delta| = %.3g (chord bound %.3g) %s\n", delta,
+                worst_gap, tol, gap_ok ? "ok" : "FAILED");
+    std::printf("  forces: |sum f_slave| = %.6g, |sum f_slave + sum f_master| = %.3g %s\n",
+                resultant, imbalance, balance_ok ? "ok" : "FAILED");
+  }
+  return area_ok && gap_ok && balance_ok ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  MPI_Init(&argc, &argv);
+  int failed = 0;
+  {
+    Kokkos::ScopeGuard kokkos(argc, argv);  // the host initialises Kokkos (and MPI) itself
+    try {
+      failed = check(2, MPI_COMM_WORLD) + check(3, MPI_COMM_WORLD);
+    } catch (const grout::MortarCouplingError& e) {
+      std::fprintf(stderr, "embed_mortar: %s\n", e.what());
+      failed = 1;
+    }
+  }
+  MPI_Finalize();
+  return failed ? 1 : 0;
+}
