@@ -380,13 +380,17 @@ void MortarCoupling::Impl::refresh_coordinates() {
 }
 
 void MortarCoupling::Impl::finish_M() {
-  master_nodes = M_columns;
-  std::sort(master_nodes.begin(), master_nodes.end());
-  master_nodes.erase(std::unique(master_nodes.begin(), master_nodes.end()), master_nodes.end());
-  M_master.resize(M_columns.size());
-  for (std::size_t k = 0; k < M_columns.size(); ++k)
-    M_master[k] = int(std::lower_bound(master_nodes.begin(), master_nodes.end(), M_columns[k]) -
-                      master_nodes.begin());
+  // surface.nodes is sorted by id: marking the positions orders the master nodes by id.
+  master_index.assign(surface.nodes.size(), -1);
+  for (int i : M_position) master_index[i] = 0;
+  master_nodes.clear();
+  for (std::size_t i = 0; i < master_index.size(); ++i)
+    if (master_index[i] == 0) {
+      master_index[i] = int(master_nodes.size());
+      master_nodes.push_back(surface.nodes[i]);
+    }
+  M_master.resize(M_position.size());
+  for (std::size_t k = 0; k < M_position.size(); ++k) M_master[k] = master_index[M_position[k]];
 }
 
 int MortarCoupling::dim() const {

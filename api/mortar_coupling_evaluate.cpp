@@ -19,8 +19,8 @@ namespace grout {
 
 namespace {
 
-/// Sorts a row's (master id, value) entries by id.
-void sort_row(std::vector<std::pair<long long, double>>& row) {
+/// Sorts a row's (master position, value) entries by position (positions are in id order).
+void sort_row(std::vector<std::pair<int, double>>& row) {
   std::sort(row.begin(), row.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
 }
 
@@ -64,11 +64,12 @@ void MortarCoupling::Impl::evaluate_values() {
   M_offsets.assign(n_rows + 1, 0);
   M_columns.clear();
   M_values.clear();
+  M_position.clear();
   pairs = 0;
   for (std::size_t f = 0; f < n_own_slave_faces; ++f)
     for (int p = candidates.offsets(f); p < candidates.offsets(f + 1); ++p)
       if (results(p).overlap > 0.0) ++pairs;
-  std::vector<std::pair<long long, double>> row;
+  std::vector<std::pair<int, double>> row;  // (master position in surface.nodes, M_jl)
   for (std::size_t r = 0; r < n_rows; ++r) {
     M_offsets[r + 1] = M_offsets[r];
     const int j = slave_row_index[r], i = slave_row_position[r];
@@ -89,9 +90,9 @@ void MortarCoupling::Impl::evaluate_values() {
         const MortarPairResult<double>& pair = results(p);
         if (!(pair.overlap > 0.0)) continue;
         D_r += pair.D[a];
-        const auto& master_nodes_of = surface.master.nodes[candidates.masters(p)];
+        const int m = candidates.masters(p);
         for (int l = 0; l < pair.n_master; ++l) {
-          const long long id = master_nodes_of[l];
+          const int id = master_faces(m, l);  // positions are in id order
           auto it =
               std::find_if(row.begin(), row.end(), [&](const auto& e) { return e.first == id; });
           if (it == row.end())
@@ -103,8 +104,9 @@ void MortarCoupling::Impl::evaluate_values() {
     }
     D[r] = D_r;
     sort_row(row);
-    for (const auto& [id, value] : row) {
-      M_columns.push_back(id);
+    for (const auto& [i_m, value] : row) {
+      M_columns.push_back(surface.nodes[i_m]);
+      M_position.push_back(i_m);
       M_values.push_back(value);
     }
     M_offsets[r + 1] = M_columns.size();
@@ -128,6 +130,7 @@ void MortarCoupling::Impl::evaluate_derivatives() {
   M_offsets.assign(n_rows + 1, 0);
   M_columns.clear();
   M_values.clear();
+  M_position.clear();
   dD.clear();
   dM.clear();
   dg.clear();
@@ -162,9 +165,11 @@ void MortarCoupling::Impl::evaluate_derivatives() {
     for (auto it = begin; it != end; ++it) {
       const long long master = it->first.second;
       const MortarValue& Mjl = it->second;
-      const auto& xl = x[position(master)];
+      const std::size_t i_m = position(master);
+      const auto& xl = x[i_m];
       const int k = int(M_values.size());
       M_columns.push_back(master);
+      M_position.push_back(int(i_m));
       M_values.push_back(Mjl.value);
       for (const auto& [dof, dv] : Mjl.gradient) dM.push_back({k, dof, dv});
       for (int d = 0; d < dim; ++d) {

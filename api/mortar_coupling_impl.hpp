@@ -62,8 +62,10 @@ struct MortarCoupling::Impl {
   std::vector<std::size_t> M_offsets;
   std::vector<long long> M_columns;
   std::vector<double> M_values;
+  std::vector<int> M_position;  ///< per M entry: its master node's position in surface.nodes
   std::vector<long long> master_nodes;  ///< sorted unique M_columns
   std::vector<int> M_master;            ///< per M entry: index in master_nodes
+  std::vector<int> master_index;        ///< work array of finish_M, per surface.nodes
   int pairs = 0;
   std::vector<DerivativeTriplet> dD, dM, dg;
 
@@ -71,7 +73,7 @@ struct MortarCoupling::Impl {
   void refresh_coordinates();   ///< x and coords from the host arrays
   void evaluate_values();       ///< kernel launches (values only)
   void evaluate_derivatives();  ///< evaluate_contact_mortar (values and exact derivatives)
-  void finish_M();              ///< master_nodes, M_master
+  void finish_M();              ///< master_nodes, M_master (from M_position)
 };
 
 }  // namespace grout
