@@ -78,6 +78,31 @@ void FaceSet::add(GlobalIndex id, int n, const GlobalIndex* face_nodes, const do
     std::copy(node_payload, node_payload + std::size_t(n) * payload_size, payload.end() - per_face);
 }
 
+FaceSet merge_face_sets(const FaceSet& a, const FaceSet& b) {
+  FaceSet merged;
+  merged.dimension = a.dimension;
+  merged.payload_size = a.payload_size;
+  const std::size_t per_face = std::size_t(max_face_nodes) * a.payload_size;
+  const auto append = [&](const FaceSet& from, std::size_t f) {
+    merged.ids.push_back(from.ids[f]);
+    merged.num_nodes.push_back(from.num_nodes[f]);
+    merged.nodes.push_back(from.nodes[f]);
+    merged.coordinates.push_back(from.coordinates[f]);
+    merged.payload.insert(merged.payload.end(), from.payload.begin() + f * per_face,
+                          from.payload.begin() + (f + 1) * per_face);
+  };
+  std::size_t i = 0, j = 0;
+  while (i < a.size() || j < b.size()) {
+    if (j == b.size() || (i < a.size() && a.ids[i] <= b.ids[j])) {
+      if (j < b.size() && a.ids[i] == b.ids[j]) ++j;
+      append(a, i++);
+    } else {
+      append(b, j++);
+    }
+  }
+  return merged;
+}
+
 SearchRegion search_region(const FaceSet& faces, double factor, const std::vector<char>& include) {
   SearchRegion region;
   for (std::size_t f = 0; f < faces.size(); ++f) {

@@ -63,6 +63,10 @@ SearchRegion search_region(const FaceSet& faces, double factor,
 FaceSet ghost_master_faces(const FaceSet& owned_master, const SearchRegion& region, double factor,
                            MPI_Comm comm);
 
+/// The faces of `a` and `b` (each sorted by id, with the same payload size), sorted by id,
+/// each id once (a face in both keeps a's record).
+FaceSet merge_face_sets(const FaceSet& a, const FaceSet& b);
+
 /// Collective all-to-all of variable-length messages: send[r] goes to rank r (send.size()
 /// = comm size, an empty message for no data). Returns the messages received, concatenated
 /// in rank order; recv_counts (if given) gets their sizes.

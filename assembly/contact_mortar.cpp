@@ -224,7 +224,8 @@ void compress_gradient(SparseGradient& g) {
 
 ContactMortar evaluate_contact_mortar(const ContactSurface& s,
                                       const std::vector<std::array<double, 3>>& x,
-                                      const ContactMortarOptions& options) {
+                                      const ContactMortarOptions& options,
+                                      const std::vector<std::array<double, 3>>* search_x) {
   ContactMortar result;
   const int n_slave_nodes = int(s.slave_nodes.size());
   result.frames.resize(n_slave_nodes);
@@ -241,15 +242,20 @@ ContactMortar evaluate_contact_mortar(const ContactSurface& s,
   for (int j = 0; j < n_slave_nodes; ++j)
     if (framed[j]) result.frames[j] = slave_frame(s, x, j, options.derivatives);
 
-  // Coarse search on the current positions.
+  // Coarse search on the positions x (and search_x, if given).
   const int dim = s.dimension;
-  Kokkos::View<double**> coords("grout::contact_coords", s.nodes.size(), dim);
-  for (std::size_t i = 0; i < s.nodes.size(); ++i)
-    for (int d = 0; d < dim; ++d) coords(i, d) = x[i][d];
   const auto slave_faces = face_view(s, s.slave, evaluated);
   const auto master_faces = face_view(s, s.master);
-  SearchCandidates<Kokkos::HostSpace> candidates;
-  coarse_search(slave_faces, master_faces, coords, options.search_factor, candidates);
+  const auto search_on = [&](const std::vector<std::array<double, 3>>& positions,
+                             SearchCandidates<Kokkos::HostSpace>& found) {
+    Kokkos::View<double**> coords("grout::contact_coords", s.nodes.size(), dim);
+    for (std::size_t i = 0; i < s.nodes.size(); ++i)
+      for (int d = 0; d < dim; ++d) coords(i, d) = positions[i][d];
+    coarse_search(slave_faces, master_faces, coords, options.search_factor, found);
+  };
+  SearchCandidates<Kokkos::HostSpace> candidates, more;
+  search_on(x, candidates);
+  if (search_x) search_on(*search_x, more);
   // Pairs in (slave face, master face) order: the master faces are in id order, so every
   // sum over pairs runs in the same order however the faces are distributed.
   SlaveDualCache<pair_vars_3d> dual_cache;
@@ -259,7 +265,11 @@ ContactMortar evaluate_contact_mortar(const ContactSurface& s,
     masters.clear();
     for (int p = candidates.offsets(k); p < candidates.offsets(k + 1); ++p)
       masters.push_back(candidates.masters(p));
+    if (search_x)
+      for (int p = more.offsets(k); p < more.offsets(k + 1); ++p)
+        masters.push_back(more.masters(p));
     std::sort(masters.begin(), masters.end());
+    masters.erase(std::unique(masters.begin(), masters.end()), masters.end());
     for (int m : masters) {
       if (dim == 2)
         add_pair<pair_vars_2d>(s, x, options, f, m, result, nullptr);

@@ -53,8 +53,15 @@ void compress_gradient(SparseGradient& g);
 /// for the slave nodes all of whose faces are selected; frames are left empty for slave
 /// nodes of no selected face. Pairs are summed in (slave face, master face) order. The D
 /// and M gradients are compressed (compress_gradient).
+///
+/// `search_x` (optional, positions like x): the (slave, master) candidate pairs are those of
+/// a coarse search on x together with those of one on search_x. The linearised contact of
+/// small-strain bodies integrates on the reference positions x but must pair the faces that
+/// the current positions bring together: a curved interface's gap grows like r², so faces
+/// that close under load can lie many face sizes apart in the reference configuration.
 ContactMortar evaluate_contact_mortar(const ContactSurface& surface,
                                       const std::vector<std::array<double, 3>>& x,
-                                      const ContactMortarOptions& options);
+                                      const ContactMortarOptions& options,
+                                      const std::vector<std::array<double, 3>>* search_x = nullptr);
 
 }  // namespace grout

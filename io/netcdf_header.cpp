@@ -85,6 +85,19 @@ class HeaderReader {
     skip_padded(length, what + " name");
   }
 
+  /// A name, read (its length checked against the file like any other).
+  std::string read_name(const std::string& what) {
+    const uint64_t length = count();
+    if (length > left())
+      fail(what + " name of " + std::to_string(length) + " bytes runs past the end of the file");
+    std::string text(std::size_t(length), '\0');
+    file_.read(&text[0], std::streamsize(length));
+    if (!file_) fail("cannot read the header");
+    file_.seekg(std::streamoff(position_));
+    skip_padded(length, what + " name");
+    return text;
+  }
+
   bool cdf5_ = false;
 
  private:
@@ -113,15 +126,36 @@ uint64_t list_length(HeaderReader& in, uint32_t expected_tag, const std::string&
   return n;
 }
 
+// Global attributes that the Exodus library reads into one number (ex_open, ex_large_model:
+// nc_get_att_int/float into a scalar, so a longer attribute overruns its stack; found by
+// fuzz_exodus_reader), and the title it reads into a buffer of MAX_LINE_LENGTH + 1 bytes.
+bool exodus_scalar_attribute(const std::string& name) {
+  return name == "file_size" || name == "api_version" || name == "version" ||
+         name == "floating_point_word_size" || name == "maximum_name_length" ||
+         name == "int64_status";
+}
+constexpr uint64_t exodus_max_line_length = 80;
+
 void skip_attributes(HeaderReader& in, const std::string& owner) {
+  const bool global = owner == "global";
   const uint64_t n = list_length(in, tag_attribute, owner + " attribute");
   in.need(n, 12, owner + " attributes");  // name length, type, length: 4 bytes each at least
   for (uint64_t a = 0; a < n; ++a) {
-    in.name(owner + " attribute");
+    std::string name;
+    if (global)
+      name = in.read_name(owner + " attribute");
+    else
+      in.name(owner + " attribute");
     const uint64_t type = in.u32();
     const uint64_t bytes = type_size(uint32_t(type), in.cdf5_);
     if (bytes == 0) in.fail(owner + " attribute of unknown type " + std::to_string(type));
     const uint64_t length = in.count();
+    if (global && exodus_scalar_attribute(name) && length != 1)
+      in.fail("global attribute '" + name + "' has " + std::to_string(length) +
+              " values (Exodus reads one)");
+    if (global && name == "title" && length > exodus_max_line_length)
+      in.fail("global attribute 'title' has " + std::to_string(length) + " characters (at most " +
+              std::to_string(exodus_max_line_length) + ")");
     in.need(length, bytes, owner + " attribute values");
     in.skip_padded(length * bytes, owner + " attribute values");
   }

@@ -350,38 +350,51 @@ void MechanicsProblem::ghost_master_faces_of(Interface& c, const Vector* u_base,
       u_old[d] = uob(lid, 0);
     }
   };
+  // The current geometry searches on the current positions. The reference geometry searches
+  // on the reference positions and, once there is a displacement, on the current ones too:
+  // faces that the load brings together must be paired even if they lie far apart in the
+  // reference configuration (evaluate_contact_mortar's search_x).
+  bool current = c.current_geometry;
   const auto search_coordinates = [&](const double X[3], const double u[3], double x[3]) {
-    for (int d = 0; d < 3; ++d) x[d] = c.current_geometry ? X[d] + u[d] : X[d];
+    for (int d = 0; d < 3; ++d) x[d] = current ? X[d] + u[d] : X[d];
   };
   constexpr int payload = 9;  // X, u, u_old per node
-  // Owned master faces, and the region of the evaluated slave faces.
-  FaceSet owned;
-  owned.dimension = dim;
-  owned.payload_size = payload;
-  for (std::size_t f = 0; f < c.owned_master.size(); ++f) {
-    double x[max_face_nodes][3], values[max_face_nodes * payload];
-    for (int a = 0; a < c.owned_master.num_nodes[f]; ++a) {
-      double* v = values + a * payload;
-      node_values(c.owned_master.nodes[f][a], v, v + 3, v + 6);
-      search_coordinates(v, v + 3, x[a]);
+  // Owned master faces, and the region of the evaluated slave faces; the master faces that
+  // overlap the region, from every rank.
+  const auto ghost_faces = [&] {
+    FaceSet owned;
+    owned.dimension = dim;
+    owned.payload_size = payload;
+    for (std::size_t f = 0; f < c.owned_master.size(); ++f) {
+      double x[max_face_nodes][3], values[max_face_nodes * payload];
+      for (int a = 0; a < c.owned_master.num_nodes[f]; ++a) {
+        double* v = values + a * payload;
+        node_values(c.owned_master.nodes[f][a], v, v + 3, v + 6);
+        search_coordinates(v, v + 3, x[a]);
+      }
+      owned.add(c.owned_master.ids[f], c.owned_master.num_nodes[f], c.owned_master.nodes[f].data(),
+                x, values);
     }
-    owned.add(c.owned_master.ids[f], c.owned_master.num_nodes[f], c.owned_master.nodes[f].data(), x,
-              values);
-  }
-  const SurfaceFaces& slave = c.surface.slave;
-  FaceSet slave_set;
-  slave_set.dimension = dim;
-  for (std::size_t f = 0; f < slave.size(); ++f) {
-    double x[max_face_nodes][3], X[3], u[3], u_old[3];
-    for (int a = 0; a < slave.num_nodes[f]; ++a) {
-      node_values(slave.nodes[f][a], X, u, u_old);
-      search_coordinates(X, u, x[a]);
+    const SurfaceFaces& slave = c.surface.slave;
+    FaceSet slave_set;
+    slave_set.dimension = dim;
+    for (std::size_t f = 0; f < slave.size(); ++f) {
+      double x[max_face_nodes][3], X[3], u[3], u_old[3];
+      for (int a = 0; a < slave.num_nodes[f]; ++a) {
+        node_values(slave.nodes[f][a], X, u, u_old);
+        search_coordinates(X, u, x[a]);
+      }
+      slave_set.add(slave.ids[f], slave.num_nodes[f], slave.nodes[f].data(), x);
     }
-    slave_set.add(slave.ids[f], slave.num_nodes[f], slave.nodes[f].data(), x);
+    return ghost_master_faces(
+        owned, search_region(slave_set, c.options.search_factor, c.surface.integrate),
+        c.options.search_factor, raw_comm_);
+  };
+  FaceSet ghost = ghost_faces();
+  if (!c.current_geometry && u_base) {  // the reference geometry under a displacement
+    current = true;
+    ghost = merge_face_sets(ghost, ghost_faces());
   }
-  const FaceSet ghost = ghost_master_faces(
-      owned, search_region(slave_set, c.options.search_factor, c.surface.integrate),
-      c.options.search_factor, raw_comm_);
 
   SurfaceFaces master;
   master.ids = ghost.ids;
@@ -419,6 +432,12 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
   for (std::size_t i = 0; i < n_nodes; ++i)
     for (int d = 0; d < dim; ++d) positions[i][d] = c.X[i][d] + c.u[i][d];
   const bool tied = c.input.type == ContactKind::tied;
+  if (!c.current_geometry) {
+    // Integrated on the reference positions, paired on the reference and current ones.
+    ContactMortarOptions reference_options = c.options;
+    reference_options.derivatives = false;
+    c.reference = evaluate_contact_mortar(s, c.X, reference_options, &positions);
+  }
   const ContactMortar mortar =
       c.current_geometry ? evaluate_contact_mortar(s, positions, c.options) : ContactMortar();
   const ContactMortar& m = c.current_geometry ? mortar : c.reference;

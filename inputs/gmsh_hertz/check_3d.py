@@ -11,7 +11,8 @@ which adds the hemispheres' bulk compression to Hertz' local approach delta.
 Computed a and p0: least-squares fit of p^2 = p0^2 (1 - r^2/a^2) to the slave nodes with
 p > 0 (nodal contact_pressure, r = sqrt(x^2 + y^2) of the reference position). The mesh has
 a/h = 5.4 (h = 0.03 near the contact point) and TET4 faces, hence the 15 % tolerance (the 2D
-cases, with b/h = 12, hold 5 %).
+cases, with b/h = 12, hold 5 %); the finer mesh (h = 0.015, a/h = 11) is checked at 5 %
+(usage: check_3d.py [STEM [TOL]]). On both, the largest nodal pressure is within 10 % of p0.
 """
 import math
 import os
@@ -26,7 +27,8 @@ from grout_results import Results  # noqa: E402
 R, E, NU = 1.0, 200.0, 0.3
 R_STAR = 1.0 / (1.0 / R + 1.0 / R)
 E_STAR = 1.0 / (2 * (1 - NU ** 2) / E)
-TOL = 0.15
+TOL = 0.15       # a and p0 on the default mesh (a/h = 5.4); the finer mesh passes its own
+PEAK_TOL = 0.10  # largest nodal pressure against p0
 
 
 def hertz_sphere(F):
@@ -42,7 +44,7 @@ def fit(r, p):
     return math.sqrt(-c[0] / c[1]), math.sqrt(c[0])
 
 
-def main(stem):
+def main(stem, tol):
     failures = []
     res = Results("np1/%s.e" % stem)
     s = cc.node_set(res, "upper_contact_nodes")
@@ -57,19 +59,28 @@ def main(stem):
     if msg:
         failures.append(msg)
     ea, ep = abs(a - a_h) / a_h, abs(p0 - p0_h) / p0_h
+    p_max = float(p.max())
+    em = abs(p_max - p0_h) / p0_h
     print("%s: F = %.5g, a = %.5f (Hertz %.5f, err %.1f %%), p0 = %.5g (Hertz %.5g, err %.1f %%), "
-          "%d nodes in contact, 1 vs 2 ranks %.1e"
-          % (stem, F, a, a_h, 100 * ea, p0, p0_h, 100 * ep, int((p > 0).sum()), diff))
+          "largest nodal pressure %.5g (err %.1f %%), %d nodes in contact, 1 vs 2 ranks %.1e"
+          % (stem, F, a, a_h, 100 * ea, p0, p0_h, 100 * ep, p_max, 100 * em, int((p > 0).sum()),
+             diff))
     if not F > 0:
         failures.append("no contact force")
-    if not ea <= TOL:
-        failures.append("contact radius error %.1f %% > %.0f %%" % (100 * ea, 100 * TOL))
-    if not ep <= TOL:
-        failures.append("peak pressure error %.1f %% > %.0f %%" % (100 * ep, 100 * TOL))
+    if not ea <= tol:
+        failures.append("contact radius error %.1f %% > %.0f %%" % (100 * ea, 100 * tol))
+    if not ep <= tol:
+        failures.append("peak pressure error %.1f %% > %.0f %%" % (100 * ep, 100 * tol))
+    # No pressure spikes (faces left unpaired at the edge of the contact zone gave nodal
+    # pressures of 12-26 x p0 on finer meshes).
+    if not em <= PEAK_TOL:
+        failures.append("largest nodal pressure %.5g is %.1f %% off Hertz' p0 (> %.0f %%)"
+                        % (p_max, 100 * em, 100 * PEAK_TOL))
     for f in failures:
         print("FAIL:", f)
     return 1 if failures else 0
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1] if len(sys.argv) > 1 else "hemispheres"))
+    sys.exit(main(sys.argv[1] if len(sys.argv) > 1 else "hemispheres",
+                  float(sys.argv[2]) if len(sys.argv) > 2 else TOL))
