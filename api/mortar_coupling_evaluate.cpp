@@ -26,6 +26,21 @@ void sort_row(std::vector<std::pair<int, double>>& row) {
 
 }  // namespace
 
+void MortarCoupling::Impl::clear_results() {
+  const std::size_t n_rows = slave.n_nodes;
+  D.assign(n_rows, 0.0);
+  gaps.assign(n_rows, 0.0);
+  normals.assign(n_rows * dim, 0.0);
+  tangents.assign(n_rows * (dim - 1) * dim, 0.0);
+  M_offsets.assign(n_rows + 1, 0);
+  M_columns.clear();
+  M_values.clear();
+  M_position.clear();
+  dD.clear();
+  dM.clear();
+  dg.clear();
+}
+
 void MortarCoupling::Impl::evaluate_values() {
   const std::string what = "grout::MortarCoupling::update: ";
   MortarOptions kernel_options;
@@ -57,14 +72,7 @@ void MortarCoupling::Impl::evaluate_values() {
 
   // D and M per slave row: the pairs of the row's own faces, faces in order.
   const std::size_t n_rows = slave.n_nodes;
-  D.assign(n_rows, 0.0);
-  gaps.assign(n_rows, 0.0);
-  normals.assign(n_rows * dim, 0.0);
-  tangents.assign(n_rows * (dim - 1) * dim, 0.0);
-  M_offsets.assign(n_rows + 1, 0);
-  M_columns.clear();
-  M_values.clear();
-  M_position.clear();
+  clear_results();
   pairs = 0;
   for (std::size_t f = 0; f < n_own_slave_faces; ++f)
     for (int p = candidates.offsets(f); p < candidates.offsets(f + 1); ++p)
@@ -123,17 +131,7 @@ void MortarCoupling::Impl::evaluate_derivatives() {
   pairs = mortar.pairs;
 
   const std::size_t n_rows = slave.n_nodes;
-  D.assign(n_rows, 0.0);
-  gaps.assign(n_rows, 0.0);
-  normals.assign(n_rows * dim, 0.0);
-  tangents.assign(n_rows * (dim - 1) * dim, 0.0);
-  M_offsets.assign(n_rows + 1, 0);
-  M_columns.clear();
-  M_values.clear();
-  M_position.clear();
-  dD.clear();
-  dM.clear();
-  dg.clear();
+  clear_results();
   const auto position = [&](long long id) {
     return std::size_t(std::lower_bound(surface.nodes.begin(), surface.nodes.end(), id) -
                        surface.nodes.begin());

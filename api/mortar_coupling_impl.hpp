@@ -71,6 +71,7 @@ struct MortarCoupling::Impl {
 
   void build();                 ///< surface, host_row, row maps and views from the face sets
   void refresh_coordinates();   ///< x and coords from the host arrays
+  void clear_results();         ///< zero D, gaps, frames; empty M and the derivatives
   void evaluate_values();       ///< kernel launches (values only)
   void evaluate_derivatives();  ///< evaluate_contact_mortar (values and exact derivatives)
   void finish_M();              ///< master_nodes, M_master (from M_position)
