@@ -1,11 +1,12 @@
 """Render a Grout result with ParaView: the deformed mesh coloured by a nodal field (default
 contact_pressure), at one time step, to a PNG.
 
-    xvfb-run -a /usr/bin/python3 tools/render_result.py results.e picture.png \
+    tools/render results.e picture.png \
         [--field contact_pressure] [--time T] [--scale S] [--zoom-contact] [--size 1200 800]
 
 Debian 12: python3-paraview provides `paraview.simple` for /usr/bin/python3 (and pvpython);
-rendering off-screen needs an X server, hence xvfb-run (packages xvfb, xauth).
+rendering off-screen needs an X server: tools/render starts Xvfb (package xvfb) and runs this
+script under it; by hand, `xvfb-run -a /usr/bin/python3 tools/render_result.py ...` works too.
 
 The file is read with the ExodusIIReader, which moves the nodes by the displacement field
 itself (ApplyDisplacements, scaled by DisplacementMagnitude): no Warp By Vector filter, which

@@ -4,7 +4,7 @@ bodies, the red of the maximum, 4, along the interface).
 
     python3 check_render.py np1/contact_2d.e picture.png
 
-Exit code 77 (ctest: skipped) without ParaView's Python modules or xvfb-run.
+Exit code 77 (ctest: skipped) without ParaView's Python modules or Xvfb.
 """
 import importlib.util
 import os
@@ -19,8 +19,8 @@ ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 
 
 def main(exodus, png):
-    if shutil.which("xvfb-run") is None:
-        print("check_render: skipped: xvfb-run is not installed (Debian: xvfb, xauth)")
+    if shutil.which("Xvfb") is None:
+        print("check_render: skipped: Xvfb is not installed (Debian: xvfb)")
         return 77
     if importlib.util.find_spec("paraview") is None:
         print("check_render: skipped: ParaView's Python modules are not installed (python3-paraview)")
