@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "io/errors.hpp"
@@ -180,9 +182,14 @@ void check_netcdf_header(const std::string& path) {
   const uint64_t num_dims = list_length(in, tag_dimension, "dimension");
   in.need(num_dims, 8, "dimensions");
   std::vector<uint64_t> dims(num_dims);
+  std::map<std::string, uint64_t> dimension;  // name -> length
   for (uint64_t& length : dims) {
-    in.name("dimension");
+    const std::string name = in.read_name("dimension");
     length = in.count();
+    // Names are unique in a valid netCDF file; a repeated one makes the library return the
+    // first while Exodus expects another (a fuzzed file with num_nod_ns2 renamed num_nod_ns1).
+    if (!dimension.emplace(name, length).second)
+      in.fail("dimension '" + name + "' is defined twice");
   }
 
   skip_attributes(in, "global");
