@@ -181,10 +181,10 @@ const std::string& LinearSolver::last_type() const {
 
 int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: linear solve"));
+  const int dim = impl_->dim > 0 ? impl_->dim : 2;  // 2 when set_coordinates was never called
   const std::string type = impl_->type != "auto"
                                ? impl_->type
-                               : auto_linear_solver_type((long long)K->getGlobalNumRows(),
-                                                         impl_->dim > 0 ? impl_->dim : 2);
+                               : auto_linear_solver_type((long long)K->getGlobalNumRows(), dim);
   impl_->last_type = type;
   // The iterative path works on the displacement-only (condensed) system by default.
   const bool condense = impl_->condense_given ? impl_->condense : type == "belos";
@@ -198,8 +198,7 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   // reduced system goes to the direct solver.
   const int iterations =
       condensation.statistics().zero_diagonals > 0
-          ? solve_system(condensation.matrix(), condensation.rhs(), y,
-                         default_direct_type(impl_->dim > 0 ? impl_->dim : 2), "")
+          ? solve_system(condensation.matrix(), condensation.rhs(), y, default_direct_type(dim), "")
           : solve_system(condensation.matrix(), condensation.rhs(), y, type,
                          impl_->belos_type_given ? impl_->belos_type : "GMRES");
   condensation.expand(y, x);

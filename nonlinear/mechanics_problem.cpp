@@ -350,18 +350,15 @@ void MechanicsProblem::ghost_master_faces_of(Interface& c, const Vector* u_base,
       u_old[d] = uob(lid, 0);
     }
   };
-  // The current geometry searches on the current positions. The reference geometry searches
-  // on the reference positions and, once there is a displacement, on the current ones too:
-  // faces that the load brings together must be paired even if they lie far apart in the
-  // reference configuration (evaluate_contact_mortar's search_x).
-  bool current = c.current_geometry;
-  const auto search_coordinates = [&](const double X[3], const double u[3], double x[3]) {
+  // Positions to search on: current (X + u) or reference (X).
+  const auto search_coordinates = [](bool current, const double X[3], const double u[3],
+                                     double x[3]) {
     for (int d = 0; d < 3; ++d) x[d] = current ? X[d] + u[d] : X[d];
   };
   constexpr int payload = 9;  // X, u, u_old per node
   // Owned master faces, and the region of the evaluated slave faces; the master faces that
-  // overlap the region, from every rank.
-  const auto ghost_faces = [&] {
+  // overlap the region, from every rank, searched on the current or the reference positions.
+  const auto ghost_faces = [&](bool current) {
     FaceSet owned;
     owned.dimension = dim;
     owned.payload_size = payload;
@@ -370,7 +367,7 @@ void MechanicsProblem::ghost_master_faces_of(Interface& c, const Vector* u_base,
       for (int a = 0; a < c.owned_master.num_nodes[f]; ++a) {
         double* v = values + a * payload;
         node_values(c.owned_master.nodes[f][a], v, v + 3, v + 6);
-        search_coordinates(v, v + 3, x[a]);
+        search_coordinates(current, v, v + 3, x[a]);
       }
       owned.add(c.owned_master.ids[f], c.owned_master.num_nodes[f], c.owned_master.nodes[f].data(),
                 x, values);
@@ -382,7 +379,7 @@ void MechanicsProblem::ghost_master_faces_of(Interface& c, const Vector* u_base,
       double x[max_face_nodes][3], X[3], u[3], u_old[3];
       for (int a = 0; a < slave.num_nodes[f]; ++a) {
         node_values(slave.nodes[f][a], X, u, u_old);
-        search_coordinates(X, u, x[a]);
+        search_coordinates(current, X, u, x[a]);
       }
       slave_set.add(slave.ids[f], slave.num_nodes[f], slave.nodes[f].data(), x);
     }
@@ -390,11 +387,12 @@ void MechanicsProblem::ghost_master_faces_of(Interface& c, const Vector* u_base,
         owned, search_region(slave_set, c.options.search_factor, c.surface.integrate),
         c.options.search_factor, raw_comm_);
   };
-  FaceSet ghost = ghost_faces();
-  if (!c.current_geometry && u_base) {  // the reference geometry under a displacement
-    current = true;
-    ghost = merge_face_sets(ghost, ghost_faces());
-  }
+  // The current geometry searches on the current positions. The reference geometry searches
+  // on the reference positions and, once there is a displacement, on the current ones too:
+  // faces that the load brings together must be paired even if they lie far apart in the
+  // reference configuration (evaluate_contact_mortar's search_x).
+  FaceSet ghost = ghost_faces(c.current_geometry);
+  if (!c.current_geometry && u_base) ghost = merge_face_sets(ghost, ghost_faces(true));
 
   SurfaceFaces master;
   master.ids = ghost.ids;

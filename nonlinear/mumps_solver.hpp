@@ -6,10 +6,10 @@
 // Every rank hands MUMPS the rows it owns of the distributed Tpetra matrix (distributed
 // assembled input, ICNTL(18) = 3, 1-based indices: the row map's global ids when they are
 // 0 .. n-1, so that MUMPS sees the same matrix on any number of ranks, else a contiguous
-// renumbering of the row map); the right-hand side is gathered on rank 0 and the solution scattered back with a
-// Tpetra Export/Import. The symbolic analysis (ordering) is done once per sparsity pattern and
-// reused while only the values change (Newton iterations with an unchanged active set); the
-// numeric factorisation is reused while the values do not change either.
+// renumbering of the row map); the right-hand side is gathered on rank 0 and the solution scattered
+// back with a Tpetra Export/Import. The symbolic analysis (ordering) is done once per sparsity
+// pattern and reused while only the values change (Newton iterations with an unchanged active set);
+// the numeric factorisation is reused while the values do not change either.
 
 #include <Teuchos_ParameterList.hpp>
 #include <memory>

@@ -7,13 +7,7 @@ build=$1
 shift
 source_dir=$(cd "$(dirname "$0")" && pwd)
 work=$build/embed-mortar-test
-rm -rf "$work"
-cmake --install "$build" --prefix "$work/install" > /dev/null
-launcher=()
-command -v ccache > /dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-cmake -S "$source_dir" -B "$work/build" -G Ninja -DCMAKE_PREFIX_PATH="$work/install" \
-  "${launcher[@]}" > /dev/null
-cmake --build "$work/build" > /dev/null
+"$source_dir/../../tools/build_against_install" "$build" "$source_dir" "$work"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 "$@" -np 1 "$work/build/embed_mortar"
 "$@" -np 2 "$work/build/embed_mortar"
