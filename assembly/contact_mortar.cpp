@@ -222,6 +222,56 @@ void compress_gradient(SparseGradient& g) {
   g.resize(out);
 }
 
+namespace {
+
+// The slave faces evaluated (surface.integrate) and, per evaluated face, its candidate master
+// faces (indices into s.master, ascending): a coarse search on x, together with one on
+// search_x when given.
+struct Candidates {
+  std::vector<int> evaluated;
+  std::vector<std::vector<int>> masters;
+};
+Candidates find_candidates(const ContactSurface& s, const std::vector<std::array<double, 3>>& x,
+                           const ContactMortarOptions& options,
+                           const std::vector<std::array<double, 3>>* search_x) {
+  Candidates c;
+  for (std::size_t f = 0; f < s.slave.size(); ++f)
+    if (s.integrate.empty() || s.integrate[f]) c.evaluated.push_back(int(f));
+  const int dim = s.dimension;
+  const auto slave_faces = face_view(s, s.slave, c.evaluated);
+  const auto master_faces = face_view(s, s.master);
+  c.masters.resize(c.evaluated.size());
+  const auto search_on = [&](const std::vector<std::array<double, 3>>& positions) {
+    Kokkos::View<double**> coords("grout::contact_coords", s.nodes.size(), dim);
+    for (std::size_t i = 0; i < s.nodes.size(); ++i)
+      for (int d = 0; d < dim; ++d) coords(i, d) = positions[i][d];
+    SearchCandidates<Kokkos::HostSpace> found;
+    coarse_search(slave_faces, master_faces, coords, options.search_factor, found);
+    for (std::size_t k = 0; k < c.evaluated.size(); ++k)
+      for (int p = found.offsets(k); p < found.offsets(k + 1); ++p)
+        c.masters[k].push_back(found.masters(p));
+  };
+  search_on(x);
+  if (search_x) search_on(*search_x);
+  for (auto& m : c.masters) {
+    std::sort(m.begin(), m.end());
+    m.erase(std::unique(m.begin(), m.end()), m.end());
+  }
+  return c;
+}
+
+}  // namespace
+
+std::vector<std::pair<GlobalIndex, GlobalIndex>> contact_pairs(
+    const ContactSurface& s, const std::vector<std::array<double, 3>>& x,
+    const ContactMortarOptions& options, const std::vector<std::array<double, 3>>* search_x) {
+  const Candidates c = find_candidates(s, x, options, search_x);
+  std::vector<std::pair<GlobalIndex, GlobalIndex>> pairs;
+  for (std::size_t k = 0; k < c.evaluated.size(); ++k)
+    for (int m : c.masters[k]) pairs.emplace_back(s.slave.ids[c.evaluated[k]], s.master.ids[m]);
+  return pairs;
+}
+
 ContactMortar evaluate_contact_mortar(const ContactSurface& s,
                                       const std::vector<std::array<double, 3>>& x,
                                       const ContactMortarOptions& options,
@@ -230,48 +280,23 @@ ContactMortar evaluate_contact_mortar(const ContactSurface& s,
   const int n_slave_nodes = int(s.slave_nodes.size());
   result.frames.resize(n_slave_nodes);
   result.D.resize(n_slave_nodes);
-  // The slave faces evaluated here, and the nodal frames their pairs use.
-  std::vector<int> evaluated;
+  // The slave faces evaluated here and their candidate master faces; the nodal frames their
+  // pairs use.
+  const Candidates candidates = find_candidates(s, x, options, search_x);
   std::vector<char> framed(n_slave_nodes, 0);
-  for (std::size_t f = 0; f < s.slave.size(); ++f) {
-    if (!s.integrate.empty() && !s.integrate[f]) continue;
-    evaluated.push_back(int(f));
+  for (int f : candidates.evaluated)
     for (int a = 0; a < s.slave.num_nodes[f]; ++a)
       framed[s.slave_index.at(s.slave.nodes[f][a])] = 1;
-  }
   for (int j = 0; j < n_slave_nodes; ++j)
     if (framed[j]) result.frames[j] = slave_frame(s, x, j, options.derivatives);
 
-  // Coarse search on the positions x (and search_x, if given).
-  const int dim = s.dimension;
-  const auto slave_faces = face_view(s, s.slave, evaluated);
-  const auto master_faces = face_view(s, s.master);
-  const auto search_on = [&](const std::vector<std::array<double, 3>>& positions,
-                             SearchCandidates<Kokkos::HostSpace>& found) {
-    Kokkos::View<double**> coords("grout::contact_coords", s.nodes.size(), dim);
-    for (std::size_t i = 0; i < s.nodes.size(); ++i)
-      for (int d = 0; d < dim; ++d) coords(i, d) = positions[i][d];
-    coarse_search(slave_faces, master_faces, coords, options.search_factor, found);
-  };
-  SearchCandidates<Kokkos::HostSpace> candidates, more;
-  search_on(x, candidates);
-  if (search_x) search_on(*search_x, more);
   // Pairs in (slave face, master face) order: the master faces are in id order, so every
   // sum over pairs runs in the same order however the faces are distributed.
   SlaveDualCache<pair_vars_3d> dual_cache;
-  std::vector<int> masters;
-  for (std::size_t k = 0; k < evaluated.size(); ++k) {
-    const int f = evaluated[k];
-    masters.clear();
-    for (int p = candidates.offsets(k); p < candidates.offsets(k + 1); ++p)
-      masters.push_back(candidates.masters(p));
-    if (search_x)
-      for (int p = more.offsets(k); p < more.offsets(k + 1); ++p)
-        masters.push_back(more.masters(p));
-    std::sort(masters.begin(), masters.end());
-    masters.erase(std::unique(masters.begin(), masters.end()), masters.end());
-    for (int m : masters) {
-      if (dim == 2)
+  for (std::size_t k = 0; k < candidates.evaluated.size(); ++k) {
+    const int f = candidates.evaluated[k];
+    for (int m : candidates.masters[k]) {
+      if (s.dimension == 2)
         add_pair<pair_vars_2d>(s, x, options, f, m, result, nullptr);
       else
         add_pair<pair_vars_3d>(s, x, options, f, m, result, &dual_cache);

@@ -64,4 +64,12 @@ ContactMortar evaluate_contact_mortar(const ContactSurface& surface,
                                       const ContactMortarOptions& options,
                                       const std::vector<std::array<double, 3>>* search_x = nullptr);
 
+/// The (slave face id, master face id) candidate pairs that evaluate_contact_mortar with the
+/// same arguments integrates, in that order: a coarse search, without the integration. Callers
+/// that keep a ContactMortar of fixed positions use it to see whether the pairing changed.
+std::vector<std::pair<GlobalIndex, GlobalIndex>> contact_pairs(
+    const ContactSurface& surface, const std::vector<std::array<double, 3>>& x,
+    const ContactMortarOptions& options,
+    const std::vector<std::array<double, 3>>* search_x = nullptr);
+
 }  // namespace grout

@@ -30,6 +30,8 @@ struct MechanicsProblem::Interface {
   ContactMortarOptions options;
   bool current_geometry = false;  ///< normals, D, M on the current configuration
   ContactMortar reference;        ///< D, M and normals of the reference configuration
+  /// The (slave face, master face) pairs `reference` was integrated over.
+  std::vector<std::pair<GlobalIndex, GlobalIndex>> reference_pairs;
   // Per node of surface.nodes at the last evaluation: reference coordinates, displacement,
   // displacement of the last converged step.
   std::vector<std::array<double, 3>> X, u, u_old;
@@ -152,6 +154,7 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
       ContactMortarOptions reference_options = c->options;
       reference_options.derivatives = false;
       c->reference = evaluate_contact_mortar(c->surface, X, reference_options);
+      c->reference_pairs = contact_pairs(c->surface, X, reference_options);
     }
     interfaces_.push_back(std::move(c));
   }
@@ -431,10 +434,15 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
     for (int d = 0; d < dim; ++d) positions[i][d] = c.X[i][d] + c.u[i][d];
   const bool tied = c.input.type == ContactKind::tied;
   if (!c.current_geometry) {
-    // Integrated on the reference positions, paired on the reference and current ones.
+    // Integrated on the reference positions, paired on the reference and current ones: the
+    // integration again only when the pairing changed.
     ContactMortarOptions reference_options = c.options;
     reference_options.derivatives = false;
-    c.reference = evaluate_contact_mortar(s, c.X, reference_options, &positions);
+    auto pairs = contact_pairs(s, c.X, reference_options, &positions);
+    if (pairs != c.reference_pairs) {
+      c.reference = evaluate_contact_mortar(s, c.X, reference_options, &positions);
+      c.reference_pairs = std::move(pairs);
+    }
   }
   const ContactMortar mortar =
       c.current_geometry ? evaluate_contact_mortar(s, positions, c.options) : ContactMortar();
