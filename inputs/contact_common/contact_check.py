@@ -26,6 +26,11 @@ def node_set(results, name):
     """0-based node indices of the Exodus node set `name` (the results file carries the mesh's
     sets)."""
     names = _names(results.ds, "ns_names")
+    if name not in names and name + "_nodes" in names:
+        # grout_mesh names the node set of side set X `X_nodes` (since 33bff00; it was X
+        # before): scripts written against the old name, such as
+        # ../shared/anchors/getfem/summarize.py, still find it.
+        name = name + "_nodes"
     if name not in names:
         raise KeyError("%s: no node set '%s' (has %s)" % (results.path, name, names))
     return np.array(results.ds.variables["node_ns%d" % (names.index(name) + 1)][:]) - 1
