@@ -46,6 +46,10 @@ struct MortarCoupling::Impl {
   std::vector<std::pair<int, int>> host_row;  ///< per surface.nodes: (0 slave / 1 master, row)
   std::vector<int> slave_row_index;           ///< slave row → index in surface.slave_nodes, −1
   std::vector<int> slave_row_position;        ///< slave row → position in surface.nodes, −1
+  /// Per slave row, the (own slave face, local node) pairs it is on (CRS): the read-back of D
+  /// and M visits a row's faces without a search.
+  std::vector<int> row_face_offsets;
+  std::vector<std::pair<int, int>> row_faces;
 
   // Kernel path (no derivatives): the launches of kernels/ on Views.
   Kokkos::View<int**> normal_faces, master_faces;
@@ -55,7 +59,8 @@ struct MortarCoupling::Impl {
   Kokkos::View<double*> g_tilde;
   SearchCandidates<Kokkos::HostSpace> candidates;
   CoarseSearchWorkspace<Kokkos::HostSpace> workspace;
-  Kokkos::View<MortarPairResult<double>*> results;
+  Kokkos::View<MortarPairResult<double>*> results;     ///< dual basis
+  Kokkos::View<MortarPairMatrices<double>*> matrices;  ///< other bases (full D per pair)
 
   // Results, per slave row.
   std::vector<double> D, gaps, normals, tangents;
@@ -63,18 +68,36 @@ struct MortarCoupling::Impl {
   std::vector<long long> M_columns;
   std::vector<double> M_values;
   std::vector<int> M_position;  ///< per M entry: its master node's position in surface.nodes
-  std::vector<long long> master_nodes;  ///< sorted unique M_columns
-  std::vector<int> M_master;            ///< per M entry: index in master_nodes
-  std::vector<int> master_index;        ///< work array of finish_M, per surface.nodes
+  /// D as CRS (columns slave node ids): standard basis, from the pairs; dual, the diagonal,
+  /// filled on first read (fill_diagonal_D).
+  std::vector<std::size_t> D_offsets;
+  std::vector<long long> D_columns;
+  std::vector<double> D_values;
+  std::vector<int> D_position;  ///< per D entry: its slave node's position in surface.nodes
+  bool D_crs_ready = false;
+  /// Work arrays of the read-back: per surface.nodes, the slot of a master node in the current
+  /// row (−1 when absent); the row's (position, value) entries.
+  std::vector<int> slot;
+  std::vector<std::pair<int, double>> row_entries, row_D_entries;
+  std::vector<double> view_x[2];  ///< update(View): gathered strided coordinates
+  bool tangents_ready = false;    ///< tangents are filled on first read after an update
   int pairs = 0;
   std::vector<DerivativeTriplet> dD, dM, dg;
 
-  void build();                 ///< surface, host_row, row maps and views from the face sets
-  void refresh_coordinates();   ///< x and coords from the host arrays
-  void clear_results();         ///< zero D, gaps, frames; empty M and the derivatives
-  void evaluate_values();       ///< kernel launches (values only)
+  void build();  ///< surface, host_row, row maps and views from the face sets
+  /// x (derivatives) or coords (values) from the host arrays; false if one is not finite.
+  bool refresh_coordinates(const double* xs, const double* xm);
+  void clear_results();  ///< zero D, gaps, frames; empty M and the derivatives
+  /// Kernel launches (values only); false if a slave face has no normal (degenerate).
+  bool evaluate_values();
+  /// D, M (CRS), gaps, normals per slave row from the pair results of the launches.
+  template <class Results>
+  void read_back(const Results& pair_results);
+  void fill_diagonal_D();
   void evaluate_derivatives();  ///< evaluate_contact_mortar (values and exact derivatives)
-  void finish_M();              ///< master_nodes, M_master (from M_position)
+  void fill_tangents();         ///< tangents per slave row (values path: on first read)
+  /// Master node ids with an M entry (ascending) and each M entry's index among them.
+  void master_nodes_of_M(std::vector<long long>& nodes, std::vector<int>& entry_node) const;
 };
 
 }  // namespace grout
