@@ -510,7 +510,6 @@ void MortarCoupling::Impl::build() {
     coords = Kokkos::View<double**>("grout::MortarCoupling::coords", n, dim);
     nodal_normals = Kokkos::View<double**>("grout::MortarCoupling::normals", n, dim);
     nodal_tangents = Kokkos::View<double***>("grout::MortarCoupling::tangents", n, dim - 1, dim);
-    g_tilde = Kokkos::View<double*>("grout::MortarCoupling::g_tilde", n);
     for (std::size_t i = 0; i < n; ++i)
       for (int d = 0; d < dim; ++d) coords(i, d) = x[i][d];
   }
@@ -535,19 +534,25 @@ bool MortarCoupling::Impl::refresh_coordinates(const double* xs, const double* x
   return nan_probe == 0.0;
 }
 
+int MortarCoupling::Impl::position_of(long long id) const {
+  return int(std::lower_bound(surface.nodes.begin(), surface.nodes.end(), id) -
+             surface.nodes.begin());
+}
+
 void MortarCoupling::Impl::master_nodes_of_M(std::vector<long long>& nodes,
                                              std::vector<int>& entry_node) const {
   // surface.nodes is sorted by id: marking the positions orders the master nodes by id.
-  std::vector<int> index(surface.nodes.size(), -1);
-  for (int i : M_position) index[i] = 0;
+  std::vector<int> index(surface.nodes.size(), -1), entry_position(M_columns.size());
+  for (std::size_t k = 0; k < M_columns.size(); ++k)
+    index[entry_position[k] = position_of(M_columns[k])] = 0;
   nodes.clear();
   for (std::size_t i = 0; i < index.size(); ++i)
     if (index[i] == 0) {
       index[i] = int(nodes.size());
       nodes.push_back(surface.nodes[i]);
     }
-  entry_node.resize(M_position.size());
-  for (std::size_t k = 0; k < M_position.size(); ++k) entry_node[k] = index[M_position[k]];
+  entry_node.resize(M_columns.size());
+  for (std::size_t k = 0; k < M_columns.size(); ++k) entry_node[k] = index[entry_position[k]];
 }
 
 int MortarCoupling::dim() const {
@@ -627,7 +632,7 @@ ContactForces MortarCoupling::contact_forces(const double* lambda) const {
       for (int d = 0; d < dim; ++d) f.slave[j * dim + d] = m.D[j] * lambda_j[d];
     } else {  // f¹_k += D_jk λ_j; the columns are nodes of this rank's faces: host slave rows
       for (std::size_t k = m.D_offsets[j]; k < m.D_offsets[j + 1]; ++k) {
-        const std::size_t row = std::size_t(m.host_row[m.D_position[k]].second);
+        const std::size_t row = std::size_t(m.host_row[m.position_of(m.D_columns[k])].second);
         for (int d = 0; d < dim; ++d) f.slave[row * dim + d] += m.D_values[k] * lambda_j[d];
       }
     }

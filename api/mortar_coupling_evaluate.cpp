@@ -1,8 +1,11 @@
 // The two evaluation paths of grout::MortarCoupling, both on Grout's own code:
 //  - values only: the kernel launches of kernels/ (compute_nodal_normals, coarse_search,
-//    mortar_integrate<Dim>, accumulate_weighted_gaps), the path perf/bench_mortar times; with
-//    standard multipliers the same launches for full pair matrices (mortar_integrate_matrices,
-//    accumulate_weighted_gaps_matrices), and D as CRS too;
+//    mortar_integrate<Dim>; the pair kernels of bench_mortar), then one pass over the slave rows
+//    that assembles D and M (CRS) and evaluates g̃_j = −n_j·(D_jj x¹_j − Σ_l M_jl x²_l) from the
+//    assembled row, as the driver does (nonlinear/mechanics_problem.cpp) — instead of
+//    accumulate_weighted_gaps, which would stream the pair results a second time; with
+//    standard multipliers the same launch for full pair matrices (mortar_integrate_matrices),
+//    and D as CRS too;
 //  - with derivatives: evaluate_contact_mortar (assembly/contact_mortar), the driver's own
 //    contact evaluation (Sacado forward AD through the same pair kernels), and the chain rule
 //    for the weighted gap.
@@ -29,7 +32,6 @@ void MortarCoupling::Impl::clear_results() {
   M_offsets.assign(n_rows + 1, 0);
   M_columns.clear();
   M_values.clear();
-  M_position.clear();
   dD.clear();
   dM.clear();
   dg.clear();
@@ -63,8 +65,6 @@ bool MortarCoupling::Impl::evaluate_values() {
               : mortar_integrate_3d(slave_faces, master_faces, coords, nodal_normals,
                                     candidates.offsets, candidates.masters, kernel_options,
                                     results));
-    accumulate_weighted_gaps(slave_faces, master_faces, coords, nodal_normals, candidates.offsets,
-                             candidates.masters, results, g_tilde);
     read_back(results);
     return true;
   }
@@ -79,37 +79,41 @@ bool MortarCoupling::Impl::evaluate_values() {
                  : mortar_integrate_matrices<3>(
                        space, slave_faces, master_faces, coords, nodal_normals, candidates.offsets,
                        candidates.masters, basis, kernel_options, matrices));
-  accumulate_weighted_gaps_matrices(space, slave_faces, master_faces, coords, nodal_normals,
-                                    candidates.offsets, candidates.masters, matrices, g_tilde);
   read_back(matrices);
   return true;
 }
 
 namespace {
 
-/// Insertion sort of a row's (position, value) entries by position, clearing their slots: a
-/// row has a handful of distinct nodes.
-void sort_row(std::vector<std::pair<int, double>>& row, std::vector<int>& slot) {
-  for (std::size_t e = 0; e < row.size(); ++e) {
-    slot[row[e].first] = -1;
-    const auto entry = row[e];
-    std::size_t k = e;
-    for (; k > 0 && row[k - 1].first > entry.first; --k) row[k] = row[k - 1];
-    row[k] = entry;
+/// A row's entries being merged: (position in surface.nodes, value), n used; the storage only
+/// grows (no allocation once it has reached the widest row).
+struct RowEntries {
+  std::vector<std::pair<int, double>>& storage;
+  std::size_t n = 0;
+  /// Adds value at `position` (a new entry if its slot is −1).
+  void add(int* slot, int position, double value) {
+    int& s = slot[position];
+    if (s >= 0) {
+      storage[std::size_t(s)].second += value;
+      return;
+    }
+    if (n == storage.size()) storage.resize(2 * n + 16);
+    s = int(n);
+    storage[n++] = {position, value};
   }
-}
-
-/// Adds value to the row's entry at `position` (a new entry if its slot is −1).
-inline void add_entry(std::vector<std::pair<int, double>>& row, std::vector<int>& slot,
-                      int position, double value) {
-  int& s = slot[position];
-  if (s < 0) {
-    s = int(row.size());
-    row.emplace_back(position, value);
-  } else {
-    row[s].second += value;
+  /// Insertion sort by position (a row has a handful of distinct nodes); clears the slots.
+  void sort(int* slot) {
+    for (std::size_t e = 0; e < n; ++e) {
+      slot[storage[e].first] = -1;
+      const auto entry = storage[e];
+      std::size_t k = e;
+      for (; k > 0 && storage[k - 1].first > entry.first; --k) storage[k] = storage[k - 1];
+      storage[k] = entry;
+    }
   }
-}
+  const std::pair<int, double>* begin() const { return storage.data(); }
+  const std::pair<int, double>* end() const { return storage.data() + n; }
+};
 
 }  // namespace
 
@@ -128,58 +132,72 @@ void MortarCoupling::Impl::read_back(const Results& pair_results) {
   M_offsets[0] = 0;
   M_columns.clear();
   M_values.clear();
-  M_position.clear();
   D_crs_ready = full_D;
   if (full_D) {
     D_offsets.resize(n_rows + 1);
     D_offsets[0] = 0;
     D_columns.clear();
     D_values.clear();
-    D_position.clear();
   }
-  pairs = 0;  // counted at each face's first node (every own face node is a slave row)
+  // Raw views of what the loop reads (the members would be reloaded after every store).
+  const int* const offsets = candidates.offsets.data();
+  const int* const masters = candidates.masters.data();
+  const Pair* const pair_data = pair_results.data();
+  const std::pair<int, int>* const faces_of_row = row_faces.data();
+  const int* const row_offsets = row_face_offsets.data();
+  const auto master_table = master_faces;
+  const auto slave_table = normal_faces;
+  int* const slots = slot.data();
+  int n_pairs = 0;  // counted at each face's first node (every own face node is a slave row)
   for (std::size_t r = 0; r < n_rows; ++r) {
     const int i = slave_row_position[r];
     double D_r = 0.0;
-    row_entries.clear();
-    row_D_entries.clear();
-    for (int k = row_face_offsets[r]; k < row_face_offsets[r + 1]; ++k) {
-      const auto [f, a] = row_faces[k];
-      for (int p = candidates.offsets(f); p < candidates.offsets(f + 1); ++p) {
-        const Pair& pair = pair_results(p);
+    RowEntries row_M{row_entries}, row_D{row_D_entries};
+    for (int k = row_offsets[r]; k < row_offsets[r + 1]; ++k) {
+      const auto [f, a] = faces_of_row[k];
+      for (int p = offsets[f]; p < offsets[f + 1]; ++p) {
+        const Pair& pair = pair_data[p];
         if (!(pair.overlap > 0.0)) continue;
-        pairs += a == 0;
+        n_pairs += a == 0;
         if constexpr (full_D) {
-          for (int b = 0; b < pair.n_slave; ++b)
-            add_entry(row_D_entries, slot, normal_faces(f, b), pair.D[a][b]);
+          for (int b = 0; b < pair.n_slave; ++b) row_D.add(slots, slave_table(f, b), pair.D[a][b]);
         } else {
           D_r += pair.D[a];
         }
-        const int m = candidates.masters(p);
-        for (int l = 0; l < pair.n_master; ++l)
-          add_entry(row_entries, slot, master_faces(m, l), pair.M[a][l]);
+        const int m = masters[p];
+        for (int l = 0; l < pair.n_master; ++l) row_M.add(slots, master_table(m, l), pair.M[a][l]);
       }
     }
     D[r] = D_r;  // standard: unused (D() throws)
-    gaps[r] = i >= 0 ? g_tilde(i) : 0.0;
-    for (int d = 0; d < dim; ++d) normals[r * dim + d] = i >= 0 ? nodal_normals(i, d) : 0.0;
-    sort_row(row_entries, slot);
-    for (const auto& [position, value] : row_entries) {
-      M_columns.push_back(surface.nodes[position]);
-      M_position.push_back(position);
-      M_values.push_back(value);
-    }
-    M_offsets[r + 1] = M_columns.size();
+    // v = Σ_k D_jk x¹_k − Σ_l M_jl x²_l (dual: D_jj x¹_j), g̃_j = −n_j · v.
+    double v[3] = {0.0, 0.0, 0.0};
     if (full_D) {
-      sort_row(row_D_entries, slot);
-      for (const auto& [position, value] : row_D_entries) {
+      row_D.sort(slots);
+      for (const auto& [position, value] : row_D) {
         D_columns.push_back(surface.nodes[position]);
-        D_position.push_back(position);
         D_values.push_back(value);
+        for (int d = 0; d < dim; ++d) v[d] += value * coords(position, d);
       }
       D_offsets[r + 1] = D_columns.size();
+    } else if (i >= 0) {
+      for (int d = 0; d < dim; ++d) v[d] = D_r * coords(i, d);
     }
+    row_M.sort(slots);
+    for (const auto& [position, value] : row_M) {
+      M_columns.push_back(surface.nodes[position]);
+      M_values.push_back(value);
+      for (int d = 0; d < dim; ++d) v[d] -= value * coords(position, d);
+    }
+    M_offsets[r + 1] = M_columns.size();
+    double g = 0.0;
+    for (int d = 0; d < dim; ++d) {
+      const double n = i >= 0 ? nodal_normals(i, d) : 0.0;
+      normals[r * dim + d] = n;
+      g -= n * v[d];
+    }
+    gaps[r] = g;
   }
+  pairs = n_pairs;
 }
 
 void MortarCoupling::Impl::fill_diagonal_D() {
@@ -188,11 +206,9 @@ void MortarCoupling::Impl::fill_diagonal_D() {
   D_offsets.assign(n_rows + 1, 0);
   D_columns.clear();
   D_values.clear();
-  D_position.clear();
   for (std::size_t r = 0; r < n_rows; ++r) {
     if (M_offsets[r + 1] > M_offsets[r]) {
       D_columns.push_back(slave.ids[r]);
-      D_position.push_back(slave_row_position[r]);
       D_values.push_back(D[r]);
     }
     D_offsets[r + 1] = D_columns.size();
@@ -263,7 +279,6 @@ void MortarCoupling::Impl::evaluate_derivatives() {
       const auto& xl = x[i_m];
       const int k = int(M_values.size());
       M_columns.push_back(master);
-      M_position.push_back(int(i_m));
       M_values.push_back(Mjl.value);
       for (const auto& [dof, dv] : Mjl.gradient) dM.push_back({k, dof, dv});
       for (int d = 0; d < dim; ++d) {

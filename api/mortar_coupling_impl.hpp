@@ -56,7 +56,6 @@ struct MortarCoupling::Impl {
   Kokkos::View<const int**> slave_faces;  ///< the first n_own_slave_faces rows of normal_faces
   Kokkos::View<double**> coords, nodal_normals;
   Kokkos::View<double***> nodal_tangents;
-  Kokkos::View<double*> g_tilde;
   SearchCandidates<Kokkos::HostSpace> candidates;
   CoarseSearchWorkspace<Kokkos::HostSpace> workspace;
   Kokkos::View<MortarPairResult<double>*> results;     ///< dual basis
@@ -67,13 +66,11 @@ struct MortarCoupling::Impl {
   std::vector<std::size_t> M_offsets;
   std::vector<long long> M_columns;
   std::vector<double> M_values;
-  std::vector<int> M_position;  ///< per M entry: its master node's position in surface.nodes
   /// D as CRS (columns slave node ids): standard basis, from the pairs; dual, the diagonal,
   /// filled on first read (fill_diagonal_D).
   std::vector<std::size_t> D_offsets;
   std::vector<long long> D_columns;
   std::vector<double> D_values;
-  std::vector<int> D_position;  ///< per D entry: its slave node's position in surface.nodes
   bool D_crs_ready = false;
   /// Work arrays of the read-back: per surface.nodes, the slot of a master node in the current
   /// row (−1 when absent); the row's (position, value) entries.
@@ -96,6 +93,8 @@ struct MortarCoupling::Impl {
   void fill_diagonal_D();
   void evaluate_derivatives();  ///< evaluate_contact_mortar (values and exact derivatives)
   void fill_tangents();         ///< tangents per slave row (values path: on first read)
+  /// Position of a node id in surface.nodes (sorted).
+  int position_of(long long id) const;
   /// Master node ids with an M entry (ascending) and each M entry's index among them.
   void master_nodes_of_M(std::vector<long long>& nodes, std::vector<int>& entry_node) const;
 };

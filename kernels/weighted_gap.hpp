@@ -6,7 +6,6 @@
 //   ũ_τ,j   =  τ_j · (D_jj Δx¹_j − Σ_l M_jl Δx²_l)        (increment over a step)
 //   ũ^obj_τ,j = −τ_j · ((D_jj − Dⁿ_jj) x¹_j − Σ_l (M_jl − Mⁿ_jl) x²_l)   (frame-indifferent)
 //
-// With the full D of a non-dual basis (MortarPairMatrices), D_jj x¹_j is Σ_k D_jk x¹_k.
 // Each is linear in (D, M), so a node's value is the sum of its pairs' contributions: the
 // *_pair functions return one pair's contribution for each slave node of the pair. They work
 // in 2D and 3D (Dim) and are templated on the scalar.
@@ -80,59 +79,6 @@ KOKKOS_INLINE_FUNCTION void weighted_slip_increment_objective_pair(
   for (int j = 0; j < pair.n_slave; ++j) slip[j] = -slip[j];
 }
 
-namespace detail {
-
-/// Σ_k D_jk u_k of one pair for slave node j (dual: D_jj u_j, MortarPairResult; full D_jk,
-/// MortarPairMatrices), u = coords(·, d) at the slave face s's nodes.
-template <class Faces, class Coords>
-KOKKOS_INLINE_FUNCTION double slave_term(const MortarPairResult<double>& pair, const Faces& faces,
-                                         int s, int j, const Coords& coords, int d) {
-  return pair.D[j] * coords(faces(s, j), d);
-}
-template <class Faces, class Coords>
-KOKKOS_INLINE_FUNCTION double slave_term(const MortarPairMatrices<double>& pair, const Faces& faces,
-                                         int s, int j, const Coords& coords, int d) {
-  double v = 0.0;
-  for (int k = 0; k < pair.n_slave; ++k) v += pair.D[j][k] * coords(faces(s, k), d);
-  return v;
-}
-
-/// The launch of accumulate_weighted_gaps for either pair result type.
-template <class ExecSpace, class Result>
-void accumulate_weighted_gaps_of(
-    const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
-    Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
-    Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
-    Kokkos::View<const double**, typename ExecSpace::memory_space> normals,
-    Kokkos::View<const int*, typename ExecSpace::memory_space> candidate_offsets,
-    Kokkos::View<const int*, typename ExecSpace::memory_space> candidates,
-    Kokkos::View<const Result*, typename ExecSpace::memory_space> results,
-    Kokkos::View<double*, typename ExecSpace::memory_space> g_tilde) {
-  const int dim = static_cast<int>(coords.extent(1));
-  Kokkos::deep_copy(space, g_tilde, 0.0);
-  Kokkos::parallel_for(
-      "grout::weighted_gap", Kokkos::RangePolicy<ExecSpace>(space, 0, slave_faces.extent(0)),
-      KOKKOS_LAMBDA(const int s) {
-        for (int p = candidate_offsets(s); p < candidate_offsets(s + 1); ++p) {
-          const Result& pair = results(p);
-          const int m = candidates(p);
-          for (int j = 0; j < pair.n_slave; ++j) {
-            const int node = slave_faces(s, j);
-            double v = 0.0;
-            for (int d = 0; d < dim; ++d) {
-              double vd = slave_term(pair, slave_faces, s, j, coords, d);
-              for (int l = 0; l < pair.n_master; ++l)
-                vd -= pair.M[j][l] * coords(master_faces(m, l), d);
-              v -= normals(node, d) * vd;
-            }
-            Kokkos::atomic_add(&g_tilde(node), v);
-          }
-        }
-      });
-}
-
-}  // namespace detail
-
 /// \brief Nodal weighted gaps g̃ (n_nodes) summed over every candidate pair, launch
 /// "grout::weighted_gap". Inputs as for mortar_integrate_2d (mortar_integrate.hpp): faces with
 /// −1 padding, coords and unit nodal normals (n_nodes, dim), the CRS candidate lists
@@ -148,26 +94,27 @@ void accumulate_weighted_gaps(
     Kokkos::View<const int*, typename ExecSpace::memory_space> candidates,
     Kokkos::View<const MortarPairResult<double>*, typename ExecSpace::memory_space> results,
     Kokkos::View<double*, typename ExecSpace::memory_space> g_tilde) {
-  detail::accumulate_weighted_gaps_of<ExecSpace, MortarPairResult<double>>(
-      space, slave_faces, master_faces, coords, normals, candidate_offsets, candidates, results,
-      g_tilde);
-}
-
-/// \brief accumulate_weighted_gaps for full pair matrices (mortar_integrate_matrices):
-/// g̃_j = −n_j · (Σ_k D_jk x¹_k − Σ_l M_jl x²_l). Same launch label and arguments.
-template <class ExecSpace>
-void accumulate_weighted_gaps_matrices(
-    const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
-    Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
-    Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
-    Kokkos::View<const double**, typename ExecSpace::memory_space> normals,
-    Kokkos::View<const int*, typename ExecSpace::memory_space> candidate_offsets,
-    Kokkos::View<const int*, typename ExecSpace::memory_space> candidates,
-    Kokkos::View<const MortarPairMatrices<double>*, typename ExecSpace::memory_space> results,
-    Kokkos::View<double*, typename ExecSpace::memory_space> g_tilde) {
-  detail::accumulate_weighted_gaps_of<ExecSpace, MortarPairMatrices<double>>(
-      space, slave_faces, master_faces, coords, normals, candidate_offsets, candidates, results,
-      g_tilde);
+  const int dim = static_cast<int>(coords.extent(1));
+  Kokkos::deep_copy(space, g_tilde, 0.0);
+  Kokkos::parallel_for(
+      "grout::weighted_gap", Kokkos::RangePolicy<ExecSpace>(space, 0, slave_faces.extent(0)),
+      KOKKOS_LAMBDA(const int s) {
+        for (int p = candidate_offsets(s); p < candidate_offsets(s + 1); ++p) {
+          const MortarPairResult<double>& pair = results(p);
+          const int m = candidates(p);
+          for (int j = 0; j < pair.n_slave; ++j) {
+            const int node = slave_faces(s, j);
+            double v = 0.0;
+            for (int d = 0; d < dim; ++d) {
+              double vd = pair.D[j] * coords(node, d);
+              for (int l = 0; l < pair.n_master; ++l)
+                vd -= pair.M[j][l] * coords(master_faces(m, l), d);
+              v -= normals(node, d) * vd;
+            }
+            Kokkos::atomic_add(&g_tilde(node), v);
+          }
+        }
+      });
 }
 
 /// Default-execution-space overload of accumulate_weighted_gaps.
