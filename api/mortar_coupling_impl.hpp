@@ -21,7 +21,9 @@ struct HostSurface {
   std::vector<int> faces;      ///< n_faces × cols, host rows, −1 padding
   std::vector<long long> ids;  ///< per host row
   std::size_t n_nodes = 0;
-  std::vector<double> x;        ///< n_nodes × dim, current coordinates
+  /// n_nodes × dim coordinates: kept current on the distributed and derivative paths; the
+  /// serial value path reads the host's arrays in update (these are the constructor's).
+  std::vector<double> x;
   long long first_face_id = 0;  ///< global id of face 0 (faces are numbered in rank order)
   std::size_t n_faces() const { return faces.size() / cols; }
   int face_nodes(std::size_t f) const {

@@ -337,6 +337,17 @@ TEST(MortarCoupling, ClearErrors) {
   MortarCoupling c = couple(s);
   throws_with([&] { c.update(s.xs, std::vector<double>(3)); }, "3 master coordinates");
   throws_with([&] { c.contact_forces(std::vector<double>(1)); }, "1 multiplier values");
+  // The same checks on update (the serial value path checks through the gather and the
+  // normals launch), then a valid update works again.
+  throws_with([&] { c.update(nan.xs, nan.xm); }, "master surface: coordinate 1 of row 1 is nan");
+  throws_with([&] { c.update(degenerate.xs, degenerate.xm); },
+              "slave surface: face 0 (rows 0 1) is degenerate");
+  Surfaces flat_master = s;
+  flat_master.xm[4] = flat_master.xm[2], flat_master.xm[5] = flat_master.xm[3];
+  throws_with([&] { c.update(flat_master.xs, flat_master.xm); },
+              "master surface: face 1 (rows 1 2) is degenerate");
+  c.update(s.xs, s.xm);
+  EXPECT_EQ(c.D(), couple(s).D());
   throws_with([&] { c.D_derivatives(); }, "derivatives were not requested");
   const std::vector<long long> twice(s.nm(), 7), overlapping(s.nm(), 0);
   const auto with_ids = [&](const std::vector<long long>& ids) {

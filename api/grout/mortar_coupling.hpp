@@ -1,7 +1,7 @@
 #pragma once
 // grout::MortarCoupling: Grout's mortar terms for a host code's own contact surfaces, from
-// plain arrays (docs/embedding.md is the tutorial). Installed as <grout/mortar_coupling.hpp>,
-// target Grout::mortar.
+// plain arrays or host Kokkos Views (docs/embedding.md is the tutorial). Installed as
+// <grout/mortar_coupling.hpp>, target Grout::mortar.
 //
 // For a slave surface Γ¹ and a master surface Γ² (LINE2 in 2D, TRI3/QUAD4 in 3D), with the
 // multiplier basis Φ_j (Popp et al. 2010, eqs. 9-10, 30; DESIGN.md §2):
@@ -16,7 +16,7 @@
 // master). λ_j follows Grout's driver (docs/input.md): the traction on the slave is −λ_j and
 // the normal pressure λ_n = n_j · λ_j is > 0 in compression; f¹, f² are the contact terms of the
 // residual r = f_int − f_ext + f_c (the force on slave node j is −f¹_j). Σ f¹ + Σ f² = 0 for
-// any λ (Σ_l M_jl = D_jj pair by pair).
+// any λ (Σ_l M_jl = Σ_k D_jk pair by pair). Exact derivatives: dual basis only.
 //
 // Serial when no communicator is given. With one, each rank passes the faces it owns (every
 // face owned by exactly one rank, nodes numbered by global ids shared by both surfaces); the
