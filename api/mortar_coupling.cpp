@@ -1,6 +1,7 @@
 // grout::MortarCoupling: checks of the host's data, the local interface (with a communicator,
 // through the parallel coarse search of assembly/contact_distribution) and the read-back. The
-// two evaluation paths are in mortar_coupling_evaluate.cpp.
+// evaluation paths are in mortar_coupling_evaluate.cpp, the Kokkos View entry points in
+// mortar_coupling_views.cpp.
 
 #include <algorithm>
 #include <cmath>
@@ -20,35 +21,6 @@ namespace {
 
 const char* side_name(int side) {
   return side == 0 ? "slave" : "master";
-}
-
-/// Runs `phase`; with a communicator, an error on any rank is thrown on every rank (the lowest
-/// failing rank's message), so that no rank is left waiting in a collective.
-void agree(MPI_Comm comm, const std::function<void()>& phase) {
-  if (comm == MPI_COMM_NULL) {
-    phase();
-    return;
-  }
-  int rank = 0, size = 1;
-  MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &size);
-  std::string message;
-  bool failed = false;
-  try {
-    phase();
-  } catch (const std::exception& e) {
-    failed = true;
-    message = e.what();
-  }
-  int mine = failed ? rank : size, first = size;
-  MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, comm);
-  if (first == size) return;
-  int length = int(message.size());
-  MPI_Bcast(&length, 1, MPI_INT, first, comm);
-  message.resize(length);
-  MPI_Bcast(message.data(), length, MPI_CHAR, first, comm);
-  throw MortarCouplingError(rank == first ? message
-                                          : "rank " + std::to_string(first) + ": " + message);
 }
 
 /// Copies and checks one surface: face type, node indices, ids.
@@ -186,6 +158,35 @@ void append_faces(const FaceSet& set, SurfaceFaces& faces, const std::vector<cha
 
 }  // namespace
 
+/// Runs `phase`; with a communicator, an error on any rank is thrown on every rank (the lowest
+/// failing rank's message), so that no rank is left waiting in a collective.
+void agree_on_error(MPI_Comm comm, const std::function<void()>& phase) {
+  if (comm == MPI_COMM_NULL) {
+    phase();
+    return;
+  }
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  std::string message;
+  bool failed = false;
+  try {
+    phase();
+  } catch (const std::exception& e) {
+    failed = true;
+    message = e.what();
+  }
+  int mine = failed ? rank : size, first = size;
+  MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, comm);
+  if (first == size) return;
+  int length = int(message.size());
+  MPI_Bcast(&length, 1, MPI_INT, first, comm);
+  message.resize(length);
+  MPI_Bcast(message.data(), length, MPI_CHAR, first, comm);
+  throw MortarCouplingError(rank == first ? message
+                                          : "rank " + std::to_string(first) + ": " + message);
+}
+
 SurfaceArrays surface_arrays(int nodes_per_face, const std::vector<int>& faces,
                              const std::vector<double>& coordinates, int dim,
                              const std::vector<long long>& node_ids) {
@@ -219,7 +220,7 @@ MortarCoupling::MortarCoupling(int dim, const SurfaceArrays& slave, const Surfac
     MPI_Comm_rank(comm, &m.rank);
     MPI_Comm_size(comm, &m.size);
   }
-  agree(comm, [&] {
+  agree_on_error(comm, [&] {
     const std::string what = "grout::MortarCoupling: ";
     if (!Kokkos::is_initialized())
       throw MortarCouplingError(what + "Kokkos is not initialised (Kokkos::ScopeGuard first)");
@@ -265,94 +266,6 @@ MortarCoupling::MortarCoupling(int dim, const SurfaceArrays& slave, const Surfac
   update(m.slave.x, m.master.x);
 }
 
-namespace {
-
-/// A 2D host View as a row-major array: in place if it is contiguous LayoutRight, else
-/// gathered into `buffer`.
-template <class T, class View>
-const T* row_major(const View& v, std::vector<T>& buffer) {
-  const std::size_t rows = v.extent(0), cols = v.extent(1);
-  if (rows * cols == 0) return nullptr;
-  if (v.stride(1) == 1 && (rows == 1 || v.stride(0) == cols)) return v.data();
-  buffer.resize(rows * cols);
-  for (std::size_t i = 0; i < rows; ++i)
-    for (std::size_t j = 0; j < cols; ++j) buffer[i * cols + j] = v(i, j);
-  return buffer.data();
-}
-
-/// SurfaceArrays over SurfaceViews (strided Views gathered into the buffers).
-SurfaceArrays arrays_of(const SurfaceViews& v, const char* side, int dim, std::vector<int>& faces,
-                        std::vector<double>& x, std::vector<long long>& ids) {
-  const std::string what = std::string("grout::MortarCoupling: ") + side + " surface: ";
-  if (int(v.coordinates.extent(1)) != dim)
-    throw MortarCouplingError(what + "coordinates View is " +
-                              std::to_string(v.coordinates.extent(0)) + " × " +
-                              std::to_string(v.coordinates.extent(1)) + ", dim " +
-                              std::to_string(dim) + " expected (n_nodes × dim)");
-  SurfaceArrays a;
-  a.nodes_per_face = int(v.faces.extent(1));
-  a.n_faces = v.faces.extent(0);
-  a.faces = row_major<int>(v.faces, faces);
-  a.n_nodes = v.coordinates.extent(0);
-  a.coordinates = row_major<double>(v.coordinates, x);
-  if (v.node_ids.extent(0) > 0) {
-    if (v.node_ids.extent(0) != a.n_nodes)
-      throw MortarCouplingError(what + std::to_string(v.node_ids.extent(0)) + " node ids for " +
-                                std::to_string(a.n_nodes) + " coordinate rows");
-    ids.resize(a.n_nodes);
-    for (std::size_t i = 0; i < a.n_nodes; ++i) ids[i] = v.node_ids(i);
-    a.node_ids = ids.data();
-  }
-  return a;
-}
-
-/// The dimension of a pair of SurfaceViews (coordinates.extent(1) of the slave).
-int dim_of(const SurfaceViews& slave) {
-  return int(slave.coordinates.extent(1));
-}
-
-struct ViewBuffers {
-  std::vector<int> faces[2];
-  std::vector<double> x[2];
-  std::vector<long long> ids[2];
-};
-
-}  // namespace
-
-MortarCoupling::MortarCoupling(const SurfaceViews& slave, const SurfaceViews& master,
-                               const MortarCouplingOptions& options, MPI_Comm comm) {
-  ViewBuffers b;  // strided Views gathered; the arrays are copied by the constructor below
-  SurfaceArrays s, m;
-  const int dim = dim_of(slave);
-  agree(comm, [&] {
-    s = arrays_of(slave, "slave", dim, b.faces[0], b.x[0], b.ids[0]);
-    m = arrays_of(master, "master", dim, b.faces[1], b.x[1], b.ids[1]);
-  });
-  *this = MortarCoupling(dim, s, m, options, comm);
-}
-
-void MortarCoupling::update(const HostCoordinates& slave_coordinates,
-                            const HostCoordinates& master_coordinates) {
-  Impl& m = *impl_;
-  const double *xs = nullptr, *xm = nullptr;
-  agree(m.comm, [&] {
-    const auto rows = [&](const HostCoordinates& v, std::size_t n) {
-      return v.extent(0) == n && int(v.extent(1)) == m.dim;
-    };
-    if (!rows(slave_coordinates, m.slave.n_nodes) || !rows(master_coordinates, m.master.n_nodes))
-      throw MortarCouplingError(
-          "grout::MortarCoupling::update: Views of " + std::to_string(slave_coordinates.extent(0)) +
-          " × " + std::to_string(slave_coordinates.extent(1)) + " slave and " +
-          std::to_string(master_coordinates.extent(0)) + " × " +
-          std::to_string(master_coordinates.extent(1)) + " master coordinates, " +
-          std::to_string(m.slave.n_nodes) + " × " + std::to_string(m.dim) + " and " +
-          std::to_string(m.master.n_nodes) + " × " + std::to_string(m.dim) + " expected");
-    xs = row_major<double>(slave_coordinates, m.view_x[0]);
-    xm = row_major<double>(master_coordinates, m.view_x[1]);
-  });
-  update(xs, xm);
-}
-
 MortarCoupling::~MortarCoupling() = default;
 MortarCoupling::MortarCoupling(MortarCoupling&&) noexcept = default;
 MortarCoupling& MortarCoupling::operator=(MortarCoupling&&) noexcept = default;
@@ -360,7 +273,7 @@ MortarCoupling& MortarCoupling::operator=(MortarCoupling&&) noexcept = default;
 void MortarCoupling::update(const std::vector<double>& slave_coordinates,
                             const std::vector<double>& master_coordinates) {
   const Impl& m = *impl_;
-  agree(m.comm, [&] {
+  agree_on_error(m.comm, [&] {
     if (slave_coordinates.size() != m.slave.n_nodes * m.dim ||
         master_coordinates.size() != m.master.n_nodes * m.dim)
       throw MortarCouplingError(
@@ -378,7 +291,7 @@ void MortarCoupling::update(const double* slave_coordinates, const double* maste
   // and evaluate_contact_mortar read the face sets); the serial values path reads the host's
   // arrays once, into the kernels' View, and checks them on the way (refresh_coordinates).
   const bool copy = m.comm != MPI_COMM_NULL || m.options.derivatives || !m.built;
-  agree(m.comm, [&] {
+  agree_on_error(m.comm, [&] {
     if ((m.slave.n_nodes > 0 && !slave_coordinates) ||
         (m.master.n_nodes > 0 && !master_coordinates))
       throw MortarCouplingError("grout::MortarCoupling::update: null coordinates");
@@ -392,7 +305,7 @@ void MortarCoupling::update(const double* slave_coordinates, const double* maste
   });
   if (copy) slave_coordinates = m.slave.x.data(), master_coordinates = m.master.x.data();
   if (m.comm != MPI_COMM_NULL || !m.built) m.build();
-  agree(m.comm, [&] {
+  agree_on_error(m.comm, [&] {
     const bool finite = m.refresh_coordinates(slave_coordinates, master_coordinates);
     if (!copy && (!finite || has_degenerate_face(m.dim, m.master, master_coordinates))) {
       check_geometry(m.dim, 0, m.slave, slave_coordinates);

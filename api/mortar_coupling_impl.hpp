@@ -6,6 +6,7 @@
 // ghosted (assembly/contact_distribution.hpp). Node ids are the host's global ids.
 
 #include <Kokkos_Core.hpp>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -14,6 +15,10 @@
 #include "kernels/coarse_search.hpp"
 
 namespace grout {
+
+/// Runs `phase`; with a communicator, an error on any rank is thrown on every rank (the lowest
+/// failing rank's message), so that no rank is left waiting in a collective.
+void agree_on_error(MPI_Comm comm, const std::function<void()>& phase);
 
 /// One surface as the host passed it (copied).
 struct HostSurface {
