@@ -1,6 +1,7 @@
 // grout::MortarCoupling: checks of the host's data, the local interface (with a communicator,
 // through the parallel coarse search of assembly/contact_distribution) and the read-back. The
-// two evaluation paths are in mortar_coupling_evaluate.cpp.
+// evaluation paths are in mortar_coupling_evaluate.cpp, the Kokkos View entry points in
+// mortar_coupling_views.cpp.
 
 #include <algorithm>
 #include <cmath>
@@ -20,35 +21,6 @@ namespace {
 
 const char* side_name(int side) {
   return side == 0 ? "slave" : "master";
-}
-
-/// Runs `phase`; with a communicator, an error on any rank is thrown on every rank (the lowest
-/// failing rank's message), so that no rank is left waiting in a collective.
-void agree(MPI_Comm comm, const std::function<void()>& phase) {
-  if (comm == MPI_COMM_NULL) {
-    phase();
-    return;
-  }
-  int rank = 0, size = 1;
-  MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &size);
-  std::string message;
-  bool failed = false;
-  try {
-    phase();
-  } catch (const std::exception& e) {
-    failed = true;
-    message = e.what();
-  }
-  int mine = failed ? rank : size, first = size;
-  MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, comm);
-  if (first == size) return;
-  int length = int(message.size());
-  MPI_Bcast(&length, 1, MPI_INT, first, comm);
-  message.resize(length);
-  MPI_Bcast(message.data(), length, MPI_CHAR, first, comm);
-  throw MortarCouplingError(rank == first ? message
-                                          : "rank " + std::to_string(first) + ": " + message);
 }
 
 /// Copies and checks one surface: face type, node indices, ids.
@@ -101,19 +73,20 @@ HostSurface copy_surface(int dim, int side, const SurfaceArrays& in, long long d
   return s;
 }
 
-/// Non-finite coordinates and degenerate (zero length/area) faces of one surface.
-void check_geometry(int dim, int side, const HostSurface& s) {
+/// Non-finite coordinates and degenerate (zero length/area) faces of one surface, at the
+/// coordinates x (n_nodes × dim): throws MortarCouplingError naming the first one.
+void check_geometry(int dim, int side, const HostSurface& s, const double* x) {
   const std::string what = std::string("grout::MortarCoupling: ") + side_name(side) + " surface: ";
-  for (std::size_t i = 0; i < s.x.size(); ++i)
-    if (!std::isfinite(s.x[i]))
+  for (std::size_t i = 0; i < s.n_nodes * dim; ++i)
+    if (!std::isfinite(x[i]))
       throw MortarCouplingError(what + "coordinate " + std::to_string(i % dim) + " of row " +
-                                std::to_string(i / dim) + " is " + std::to_string(s.x[i]));
+                                std::to_string(i / dim) + " is " + std::to_string(x[i]));
   for (std::size_t f = 0; f < s.n_faces(); ++f) {
     const int n = s.face_nodes(f);
-    double x[max_face_nodes][3] = {}, normal[3];
+    double xf[max_face_nodes][3] = {}, normal[3];
     for (int a = 0; a < n; ++a)
-      for (int d = 0; d < dim; ++d) x[a][d] = s.x[s.faces[f * s.cols + a] * dim + d];
-    if (face_normal(dim, n, x, normal) != MortarStatus::ok) {
+      for (int d = 0; d < dim; ++d) xf[a][d] = x[s.faces[f * s.cols + a] * dim + d];
+    if (face_normal(dim, n, xf, normal) != MortarStatus::ok) {
       std::string nodes;
       for (int a = 0; a < n; ++a) nodes += " " + std::to_string(s.faces[f * s.cols + a]);
       throw MortarCouplingError(what + "face " + std::to_string(f) + " (rows" + nodes +
@@ -121,6 +94,37 @@ void check_geometry(int dim, int side, const HostSurface& s) {
                                 " or no normal");
     }
   }
+}
+
+/// True if a face of s has zero length/area at the coordinates x: face_normal's criterion
+/// (|n|² > 0 fails) without the normalisation. The values path's cheap master check.
+bool has_degenerate_face(int dim, const HostSurface& s, const double* x) {
+  bool degenerate = false;
+  for (std::size_t f = 0; f < s.n_faces(); ++f) {
+    const int* row = &s.faces[f * s.cols];
+    double nn;
+    if (dim == 2) {
+      const double* a = x + 2 * row[0];
+      const double* b = x + 2 * row[1];
+      const double dx = b[0] - a[0], dy = b[1] - a[1];
+      nn = dx * dx + dy * dy;
+    } else {
+      const bool quad = s.cols == 4 && row[3] >= 0;
+      const double* p0 = x + 3 * row[0];
+      const double* p1 = x + 3 * row[1];
+      const double* p2 = x + 3 * row[2];
+      const double* q = quad ? x + 3 * row[3] : p0;
+      double u[3], v[3], c[3];
+      for (int d = 0; d < 3; ++d) {  // QUAD4: diagonals; TRI3: edges (face_normal.hpp)
+        u[d] = quad ? p2[d] - p0[d] : p1[d] - p0[d];
+        v[d] = quad ? q[d] - p1[d] : p2[d] - p0[d];
+      }
+      cross_product(u, v, c);
+      nn = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+    }
+    degenerate = degenerate || !(nn > 0.0);
+  }
+  return degenerate;
 }
 
 /// The host's faces of one surface as a FaceSet (global face ids, node ids, coordinates).
@@ -153,6 +157,35 @@ void append_faces(const FaceSet& set, SurfaceFaces& faces, const std::vector<cha
 }
 
 }  // namespace
+
+/// Runs `phase`; with a communicator, an error on any rank is thrown on every rank (the lowest
+/// failing rank's message), so that no rank is left waiting in a collective.
+void agree_on_error(MPI_Comm comm, const std::function<void()>& phase) {
+  if (comm == MPI_COMM_NULL) {
+    phase();
+    return;
+  }
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  std::string message;
+  bool failed = false;
+  try {
+    phase();
+  } catch (const std::exception& e) {
+    failed = true;
+    message = e.what();
+  }
+  int mine = failed ? rank : size, first = size;
+  MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, comm);
+  if (first == size) return;
+  int length = int(message.size());
+  MPI_Bcast(&length, 1, MPI_INT, first, comm);
+  message.resize(length);
+  MPI_Bcast(message.data(), length, MPI_CHAR, first, comm);
+  throw MortarCouplingError(rank == first ? message
+                                          : "rank " + std::to_string(first) + ": " + message);
+}
 
 SurfaceArrays surface_arrays(int nodes_per_face, const std::vector<int>& faces,
                              const std::vector<double>& coordinates, int dim,
@@ -187,16 +220,20 @@ MortarCoupling::MortarCoupling(int dim, const SurfaceArrays& slave, const Surfac
     MPI_Comm_rank(comm, &m.rank);
     MPI_Comm_size(comm, &m.size);
   }
-  agree(comm, [&] {
+  agree_on_error(comm, [&] {
     const std::string what = "grout::MortarCoupling: ";
     if (!Kokkos::is_initialized())
       throw MortarCouplingError(what + "Kokkos is not initialised (Kokkos::ScopeGuard first)");
     if (dim != 2 && dim != 3)
       throw MortarCouplingError(what + "dim = " + std::to_string(dim) + " (2 or 3)");
-    if (options.multipliers == MultiplierBasis::standard)
+    if (options.multipliers != MultiplierBasis::dual &&
+        options.multipliers != MultiplierBasis::standard)
+      throw MortarCouplingError(what + "unknown multiplier basis");
+    if (options.multipliers == MultiplierBasis::standard && options.derivatives)
       throw MortarCouplingError(what +
-                                "standard multipliers are not supported: Grout's kernels "
-                                "integrate the dual basis (MultiplierBasis::dual)");
+                                "exact derivatives are available for dual multipliers only "
+                                "(the AD path, evaluate_contact_mortar, integrates the dual "
+                                "basis): set derivatives = false or multipliers = dual");
     if (options.integration != MortarIntegration::exact &&
         options.integration != MortarIntegration::collocation)
       throw MortarCouplingError(what + "unknown integration scheme");
@@ -236,7 +273,7 @@ MortarCoupling& MortarCoupling::operator=(MortarCoupling&&) noexcept = default;
 void MortarCoupling::update(const std::vector<double>& slave_coordinates,
                             const std::vector<double>& master_coordinates) {
   const Impl& m = *impl_;
-  agree(m.comm, [&] {
+  agree_on_error(m.comm, [&] {
     if (slave_coordinates.size() != m.slave.n_nodes * m.dim ||
         master_coordinates.size() != m.master.n_nodes * m.dim)
       throw MortarCouplingError(
@@ -250,25 +287,37 @@ void MortarCoupling::update(const std::vector<double>& slave_coordinates,
 
 void MortarCoupling::update(const double* slave_coordinates, const double* master_coordinates) {
   Impl& m = *impl_;
-  agree(m.comm, [&] {
+  // The distributed and derivative paths keep a copy of the coordinates (the parallel search
+  // and evaluate_contact_mortar read the face sets); the serial values path reads the host's
+  // arrays once, into the kernels' View, and checks them on the way (refresh_coordinates).
+  const bool copy = m.comm != MPI_COMM_NULL || m.options.derivatives || !m.built;
+  agree_on_error(m.comm, [&] {
     if ((m.slave.n_nodes > 0 && !slave_coordinates) ||
         (m.master.n_nodes > 0 && !master_coordinates))
       throw MortarCouplingError("grout::MortarCoupling::update: null coordinates");
+    if (!copy) return;
     if (slave_coordinates != m.slave.x.data())
       std::copy(slave_coordinates, slave_coordinates + m.slave.x.size(), m.slave.x.begin());
     if (master_coordinates != m.master.x.data())
       std::copy(master_coordinates, master_coordinates + m.master.x.size(), m.master.x.begin());
-    check_geometry(m.dim, 0, m.slave);
-    check_geometry(m.dim, 1, m.master);
+    check_geometry(m.dim, 0, m.slave, m.slave.x.data());
+    check_geometry(m.dim, 1, m.master, m.master.x.data());
   });
+  if (copy) slave_coordinates = m.slave.x.data(), master_coordinates = m.master.x.data();
   if (m.comm != MPI_COMM_NULL || !m.built) m.build();
-  m.refresh_coordinates();
-  agree(m.comm, [&] {
-    if (m.options.derivatives)
+  agree_on_error(m.comm, [&] {
+    const bool finite = m.refresh_coordinates(slave_coordinates, master_coordinates);
+    if (!copy && (!finite || has_degenerate_face(m.dim, m.master, master_coordinates))) {
+      check_geometry(m.dim, 0, m.slave, slave_coordinates);
+      check_geometry(m.dim, 1, m.master, master_coordinates);
+    }
+    m.tangents_ready = false;
+    if (m.options.derivatives) {
       m.evaluate_derivatives();
-    else
-      m.evaluate_values();
-    m.finish_M();
+    } else if (!m.evaluate_values()) {  // a degenerate slave face: name it
+      check_geometry(m.dim, 0, m.slave, slave_coordinates);
+      throw MortarCouplingError("grout::MortarCoupling::update: a slave face has no normal");
+    }
   });
 }
 
@@ -341,6 +390,21 @@ void MortarCoupling::Impl::build() {
     const int i = position(master.ids[r]);
     if (i >= 0) host_row[i] = {1, int(r)};
   }
+  // Each slave row's own faces and its local node in them, faces in ascending order.
+  row_face_offsets.assign(slave.n_nodes + 1, 0);
+  row_faces.clear();
+  for (std::size_t r = 0; r < slave.n_nodes; ++r) {
+    const int j = slave_row_index[r];
+    if (j >= 0)
+      for (int f : surface.slave_node_faces[j]) {
+        if (std::size_t(f) >= n_own_slave_faces) continue;
+        int a = 0;
+        while (surface.slave.nodes[f][a] != slave.ids[r]) ++a;
+        row_faces.emplace_back(f, a);
+      }
+    row_face_offsets[r + 1] = int(row_faces.size());
+  }
+  slot.assign(surface.nodes.size(), -1);
 
   if (!options.derivatives) {  // the Views of the kernel launches
     const std::size_t cols = dim == 2 ? 2 : max_face_nodes;
@@ -359,38 +423,49 @@ void MortarCoupling::Impl::build() {
     coords = Kokkos::View<double**>("grout::MortarCoupling::coords", n, dim);
     nodal_normals = Kokkos::View<double**>("grout::MortarCoupling::normals", n, dim);
     nodal_tangents = Kokkos::View<double***>("grout::MortarCoupling::tangents", n, dim - 1, dim);
-    g_tilde = Kokkos::View<double*>("grout::MortarCoupling::g_tilde", n);
     for (std::size_t i = 0; i < n; ++i)
       for (int d = 0; d < dim; ++d) coords(i, d) = x[i][d];
   }
   built = true;
 }
 
-void MortarCoupling::Impl::refresh_coordinates() {
+bool MortarCoupling::Impl::refresh_coordinates(const double* xs, const double* xm) {
   const bool views = !options.derivatives;
+  double nan_probe = 0.0;  // x · 0 is NaN for an infinite or NaN x, 0 otherwise
   for (std::size_t i = 0; i < host_row.size(); ++i) {
     const auto [side, row] = host_row[i];
     if (side < 0) continue;
-    const double* from = &(side == 0 ? slave.x : master.x)[std::size_t(row) * dim];
+    const double* from = (side == 0 ? xs : xm) + std::size_t(row) * dim;
     for (int d = 0; d < dim; ++d) {
-      x[i][d] = from[d];
-      if (views) coords(i, d) = from[d];
+      nan_probe += from[d] * 0.0;
+      if (views)
+        coords(i, d) = from[d];
+      else
+        x[i][d] = from[d];
     }
   }
+  return nan_probe == 0.0;
 }
 
-void MortarCoupling::Impl::finish_M() {
+int MortarCoupling::Impl::position_of(long long id) const {
+  return int(std::lower_bound(surface.nodes.begin(), surface.nodes.end(), id) -
+             surface.nodes.begin());
+}
+
+void MortarCoupling::Impl::master_nodes_of_M(std::vector<long long>& nodes,
+                                             std::vector<int>& entry_node) const {
   // surface.nodes is sorted by id: marking the positions orders the master nodes by id.
-  master_index.assign(surface.nodes.size(), -1);
-  for (int i : M_position) master_index[i] = 0;
-  master_nodes.clear();
-  for (std::size_t i = 0; i < master_index.size(); ++i)
-    if (master_index[i] == 0) {
-      master_index[i] = int(master_nodes.size());
-      master_nodes.push_back(surface.nodes[i]);
+  std::vector<int> index(surface.nodes.size(), -1), entry_position(M_columns.size());
+  for (std::size_t k = 0; k < M_columns.size(); ++k)
+    index[entry_position[k] = position_of(M_columns[k])] = 0;
+  nodes.clear();
+  for (std::size_t i = 0; i < index.size(); ++i)
+    if (index[i] == 0) {
+      index[i] = int(nodes.size());
+      nodes.push_back(surface.nodes[i]);
     }
-  M_master.resize(M_position.size());
-  for (std::size_t k = 0; k < M_position.size(); ++k) M_master[k] = master_index[M_position[k]];
+  entry_node.resize(M_columns.size());
+  for (std::size_t k = 0; k < M_columns.size(); ++k) entry_node[k] = index[entry_position[k]];
 }
 
 int MortarCoupling::dim() const {
@@ -399,8 +474,27 @@ int MortarCoupling::dim() const {
 std::size_t MortarCoupling::num_slave_nodes() const {
   return impl_->slave.n_nodes;
 }
+MultiplierBasis MortarCoupling::multipliers() const {
+  return impl_->options.multipliers;
+}
 const std::vector<double>& MortarCoupling::D() const {
+  if (impl_->options.multipliers != MultiplierBasis::dual)
+    throw MortarCouplingError(
+        "grout::MortarCoupling::D: D is not diagonal with standard multipliers (D_jk = ∫ N_j N_k "
+        "dA): read D_offsets(), D_columns(), D_values()");
   return impl_->D;
+}
+const std::vector<std::size_t>& MortarCoupling::D_offsets() const {
+  if (!impl_->D_crs_ready) impl_->fill_diagonal_D();
+  return impl_->D_offsets;
+}
+const std::vector<long long>& MortarCoupling::D_columns() const {
+  if (!impl_->D_crs_ready) impl_->fill_diagonal_D();
+  return impl_->D_columns;
+}
+const std::vector<double>& MortarCoupling::D_values() const {
+  if (!impl_->D_crs_ready) impl_->fill_diagonal_D();
+  return impl_->D_values;
 }
 const std::vector<std::size_t>& MortarCoupling::M_offsets() const {
   return impl_->M_offsets;
@@ -418,6 +512,7 @@ const std::vector<double>& MortarCoupling::normals() const {
   return impl_->normals;
 }
 const std::vector<double>& MortarCoupling::tangents() const {
+  if (!impl_->tangents_ready) impl_->fill_tangents();
   return impl_->tangents;
 }
 int MortarCoupling::overlapping_pairs() const {
@@ -439,14 +534,24 @@ ContactForces MortarCoupling::contact_forces(const double* lambda) const {
   if (!lambda && m.slave.n_nodes > 0)
     throw MortarCouplingError("grout::MortarCoupling::contact_forces: null multipliers");
   ContactForces f;
+  std::vector<int> M_master;  // per M entry: its index in f.master_nodes
+  m.master_nodes_of_M(f.master_nodes, M_master);
   f.slave.assign(m.slave.n_nodes * dim, 0.0);
-  f.master_nodes = m.master_nodes;
-  f.master.assign(m.master_nodes.size() * dim, 0.0);
+  f.master.assign(f.master_nodes.size() * dim, 0.0);
+  const bool dual = m.options.multipliers == MultiplierBasis::dual;
   for (std::size_t j = 0; j < m.slave.n_nodes; ++j) {
-    for (int d = 0; d < dim; ++d) f.slave[j * dim + d] = m.D[j] * lambda[j * dim + d];
+    const double* lambda_j = lambda + j * dim;
+    if (dual) {
+      for (int d = 0; d < dim; ++d) f.slave[j * dim + d] = m.D[j] * lambda_j[d];
+    } else {  // f¹_k += D_jk λ_j; the columns are nodes of this rank's faces: host slave rows
+      for (std::size_t k = m.D_offsets[j]; k < m.D_offsets[j + 1]; ++k) {
+        const std::size_t row = std::size_t(m.host_row[m.position_of(m.D_columns[k])].second);
+        for (int d = 0; d < dim; ++d) f.slave[row * dim + d] += m.D_values[k] * lambda_j[d];
+      }
+    }
     for (std::size_t k = m.M_offsets[j]; k < m.M_offsets[j + 1]; ++k)
       for (int d = 0; d < dim; ++d)
-        f.master[std::size_t(m.M_master[k]) * dim + d] -= m.M_values[k] * lambda[j * dim + d];
+        f.master[std::size_t(M_master[k]) * dim + d] -= m.M_values[k] * lambda_j[d];
   }
   return f;
 }

@@ -6,6 +6,7 @@
 // ghosted (assembly/contact_distribution.hpp). Node ids are the host's global ids.
 
 #include <Kokkos_Core.hpp>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -15,13 +16,19 @@
 
 namespace grout {
 
+/// Runs `phase`; with a communicator, an error on any rank is thrown on every rank (the lowest
+/// failing rank's message), so that no rank is left waiting in a collective.
+void agree_on_error(MPI_Comm comm, const std::function<void()>& phase);
+
 /// One surface as the host passed it (copied).
 struct HostSurface {
   int cols = 2;
   std::vector<int> faces;      ///< n_faces × cols, host rows, −1 padding
   std::vector<long long> ids;  ///< per host row
   std::size_t n_nodes = 0;
-  std::vector<double> x;        ///< n_nodes × dim, current coordinates
+  /// n_nodes × dim coordinates: kept current on the distributed and derivative paths; the
+  /// serial value path reads the host's arrays in update (these are the constructor's).
+  std::vector<double> x;
   long long first_face_id = 0;  ///< global id of face 0 (faces are numbered in rank order)
   std::size_t n_faces() const { return faces.size() / cols; }
   int face_nodes(std::size_t f) const {
@@ -46,35 +53,57 @@ struct MortarCoupling::Impl {
   std::vector<std::pair<int, int>> host_row;  ///< per surface.nodes: (0 slave / 1 master, row)
   std::vector<int> slave_row_index;           ///< slave row → index in surface.slave_nodes, −1
   std::vector<int> slave_row_position;        ///< slave row → position in surface.nodes, −1
+  /// Per slave row, the (own slave face, local node) pairs it is on (CRS): the read-back of D
+  /// and M visits a row's faces without a search.
+  std::vector<int> row_face_offsets;
+  std::vector<std::pair<int, int>> row_faces;
 
   // Kernel path (no derivatives): the launches of kernels/ on Views.
   Kokkos::View<int**> normal_faces, master_faces;
   Kokkos::View<const int**> slave_faces;  ///< the first n_own_slave_faces rows of normal_faces
   Kokkos::View<double**> coords, nodal_normals;
   Kokkos::View<double***> nodal_tangents;
-  Kokkos::View<double*> g_tilde;
   SearchCandidates<Kokkos::HostSpace> candidates;
   CoarseSearchWorkspace<Kokkos::HostSpace> workspace;
-  Kokkos::View<MortarPairResult<double>*> results;
+  Kokkos::View<MortarPairResult<double>*> results;     ///< dual basis
+  Kokkos::View<MortarPairMatrices<double>*> matrices;  ///< other bases (full D per pair)
 
   // Results, per slave row.
   std::vector<double> D, gaps, normals, tangents;
   std::vector<std::size_t> M_offsets;
   std::vector<long long> M_columns;
   std::vector<double> M_values;
-  std::vector<int> M_position;  ///< per M entry: its master node's position in surface.nodes
-  std::vector<long long> master_nodes;  ///< sorted unique M_columns
-  std::vector<int> M_master;            ///< per M entry: index in master_nodes
-  std::vector<int> master_index;        ///< work array of finish_M, per surface.nodes
+  /// D as CRS (columns slave node ids): standard basis, from the pairs; dual, the diagonal,
+  /// filled on first read (fill_diagonal_D).
+  std::vector<std::size_t> D_offsets;
+  std::vector<long long> D_columns;
+  std::vector<double> D_values;
+  bool D_crs_ready = false;
+  /// Work arrays of the read-back: per surface.nodes, the slot of a master node in the current
+  /// row (−1 when absent); the row's (position, value) entries.
+  std::vector<int> slot;
+  std::vector<std::pair<int, double>> row_entries, row_D_entries;
+  std::vector<double> view_x[2];  ///< update(View): gathered strided coordinates
+  bool tangents_ready = false;    ///< tangents are filled on first read after an update
   int pairs = 0;
   std::vector<DerivativeTriplet> dD, dM, dg;
 
-  void build();                 ///< surface, host_row, row maps and views from the face sets
-  void refresh_coordinates();   ///< x and coords from the host arrays
-  void clear_results();         ///< zero D, gaps, frames; empty M and the derivatives
-  void evaluate_values();       ///< kernel launches (values only)
+  void build();  ///< surface, host_row, row maps and views from the face sets
+  /// x (derivatives) or coords (values) from the host arrays; false if one is not finite.
+  bool refresh_coordinates(const double* xs, const double* xm);
+  void clear_results();  ///< zero D, gaps, frames; empty M and the derivatives
+  /// Kernel launches (values only); false if a slave face has no normal (degenerate).
+  bool evaluate_values();
+  /// D, M (CRS), gaps, normals per slave row from the pair results of the launches.
+  template <class Results>
+  void read_back(const Results& pair_results);
+  void fill_diagonal_D();
   void evaluate_derivatives();  ///< evaluate_contact_mortar (values and exact derivatives)
-  void finish_M();              ///< master_nodes, M_master (from M_position)
+  void fill_tangents();         ///< tangents per slave row (values path: on first read)
+  /// Position of a node id in surface.nodes (sorted).
+  int position_of(long long id) const;
+  /// Master node ids with an M entry (ascending) and each M entry's index among them.
+  void master_nodes_of_M(std::vector<long long>& nodes, std::vector<int>& entry_node) const;
 };
 
 }  // namespace grout

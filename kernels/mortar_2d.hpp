@@ -304,18 +304,17 @@ GROUT_INLINE_FUNCTION MortarStatus integrate_mortar_2d(const Scalar xs[2][2], co
   return integrate_mortar_2d(xs, ns, xm, mortar_2d_gauss_points, out);
 }
 
-/// \brief Collocation (element-based) variant: n_points uniformly spread slave points
+/// \brief Collocation points of a pair: n_points uniformly spread slave points
 /// ξ_i = −1 + (2i + 1)/n_points with weights (2/n_points)·L/2 (mid-point rule); a point whose
-/// projection along n¹(ξ_i) misses the master (|η| > 1) is dropped (Farah, Popp, Wall 2015).
-/// \return no_overlap if every point was dropped.
-template <class Scalar>
-GROUT_INLINE_FUNCTION MortarStatus integrate_mortar_2d_collocation(const Scalar xs[2][2],
-                                                                   const Scalar ns[2][2],
-                                                                   const Scalar xm[2][2],
-                                                                   int n_points,
-                                                                   MortarPairResult<Scalar>& out) {
+/// projection along n¹(ξ_i) misses the master (|η| > 1) is dropped (Farah, Popp, Wall 2015);
+/// f(ξ, η, w) is called for the others. \return capacity_exceeded (n_points < 1), degenerate
+/// (zero-length slave), no_overlap if every point was dropped, else ok.
+template <class Scalar, class PointFunctor>
+GROUT_INLINE_FUNCTION MortarStatus for_each_collocation_point_2d(const Scalar xs[2][2],
+                                                                 const Scalar ns[2][2],
+                                                                 const Scalar xm[2][2],
+                                                                 int n_points, PointFunctor& f) {
   using std::sqrt;
-  zero_pair_result_2d(out);
   if (n_points < 1) return MortarStatus::capacity_exceeded;
   const Scalar dx = xs[1][0] - xs[0][0], dy = xs[1][1] - xs[0][1];
   const Scalar ll = dx * dx + dy * dy;
@@ -328,10 +327,35 @@ GROUT_INLINE_FUNCTION MortarStatus integrate_mortar_2d_collocation(const Scalar 
     slave_point_2d(xs, ns, xi, x, n);
     if (project_along_normal_to_master_2d(xm, x, n, eta) != MortarStatus::ok) continue;
     if (eta < -1.0 || eta > 1.0) continue;
-    add_mortar_point_2d(xi, eta, w, out);
+    f(xi, eta, w);
     any = true;
   }
   return any ? MortarStatus::ok : MortarStatus::no_overlap;
+}
+
+namespace detail2d {
+/// add_mortar_point_2d as a point functor.
+template <class Scalar>
+struct AddMortarPoint2D {
+  MortarPairResult<Scalar>* out;
+  GROUT_INLINE_FUNCTION void operator()(const Scalar& xi, const Scalar& eta,
+                                        const Scalar& w) const {
+    add_mortar_point_2d(xi, eta, w, *out);
+  }
+};
+}  // namespace detail2d
+
+/// \brief Collocation (element-based) variant of integrate_mortar_2d: the points of
+/// for_each_collocation_point_2d. \return no_overlap if every point was dropped.
+template <class Scalar>
+GROUT_INLINE_FUNCTION MortarStatus integrate_mortar_2d_collocation(const Scalar xs[2][2],
+                                                                   const Scalar ns[2][2],
+                                                                   const Scalar xm[2][2],
+                                                                   int n_points,
+                                                                   MortarPairResult<Scalar>& out) {
+  zero_pair_result_2d(out);
+  detail2d::AddMortarPoint2D<Scalar> add{&out};
+  return for_each_collocation_point_2d(xs, ns, xm, n_points, add);
 }
 
 }  // namespace grout

@@ -271,30 +271,21 @@ GROUT_INLINE_FUNCTION MortarStatus integrate_mortar_3d(
   return integrate_mortar_3d_dual(n_slave, xs, A, n_master, xm, out);
 }
 
-/// \brief Collocation (element-based) variant: n_points_per_direction = k uniformly spread
-/// points on the slave face (QUAD4: midpoints of a k × k grid of [-1,1]², weight (2/k)² j(ξ);
-/// TRI3: centroids of the k² congruent sub-triangles, weight j/(2k²)); each point x¹(ξ) is
-/// projected on the master along n₀, points whose projection misses the master are dropped.
-/// Converges to integrate_mortar_3d as k grows (O(1/k): the overlap boundary cuts cells).
-/// \return ok; no_overlap (no point hits, out zero); degenerate (slave face or k < 1).
-template <class Scalar>
-GROUT_INLINE_FUNCTION MortarStatus integrate_mortar_3d_collocation(
-    int n_slave, const Scalar xs[max_face_nodes][3], const Scalar ns[max_face_nodes][3],
-    int n_master, const Scalar xm[max_face_nodes][3], int n_points_per_direction,
-    MortarPairResult<Scalar>& out) {
-  (void)ns;
-  detail3d::reset_pair_result(n_slave, n_master, out);
-  const int k = n_points_per_direction;
-  if ((n_slave != 3 && n_slave != 4) || (n_master != 3 && n_master != 4) || k < 1)
-    return MortarStatus::degenerate;
-  Scalar A[max_face_nodes][max_face_nodes];
+/// \brief Collocation points of a pair: n_points_per_direction = k uniformly spread points on
+/// the slave face (QUAD4: midpoints of a k × k grid of [-1,1]², weight (2/k)² j(ξ); TRI3:
+/// centroids of the k² congruent sub-triangles, weight j/(2k²)); each point x¹(ξ) is projected
+/// on the master along n₀ and f(ξ¹, ξ², w) is called for those that land inside the master.
+/// \pre n_slave, n_master ∈ {3, 4}, k ≥ 1. \return degenerate (slave face), else ok.
+template <class Scalar, class PointFunctor>
+GROUT_INLINE_FUNCTION MortarStatus for_each_collocation_point_3d(int n_slave,
+                                                                 const Scalar xs[max_face_nodes][3],
+                                                                 int n_master,
+                                                                 const Scalar xm[max_face_nodes][3],
+                                                                 int k, PointFunctor& f) {
   AuxiliaryPlane<Scalar> plane;
-  if (dual_basis_coefficients_3d(n_slave, xs, A) != MortarStatus::ok ||
-      auxiliary_plane(n_slave, xs, plane) != MortarStatus::ok)
-    return MortarStatus::degenerate;
+  if (auxiliary_plane(n_slave, xs, plane) != MortarStatus::ok) return MortarStatus::degenerate;
   Scalar pm[max_face_nodes][2];
   for (int l = 0; l < n_master; ++l) project_on_plane(plane, xm[l], pm[l]);
-  detail3d::AccumulateMortarPair<Scalar> acc{A, &out};
   const double h = n_slave == 3 ? 1.0 / k : 2.0 / k;
   const double w_ref = n_slave == 3 ? 0.5 / (double(k) * k) : h * h;
   for (int c = 0; c < k * k; ++c) {  // k² points for both shapes
@@ -316,9 +307,47 @@ GROUT_INLINE_FUNCTION MortarStatus integrate_mortar_3d_collocation(
     project_on_plane(plane, x, y);
     if (face_inverse_map_2d(n_master, pm, y, xi_m) != MortarStatus::ok) continue;  // missed
     if (!face_contains(n_master, xi_m)) continue;
-    acc(xi_s, xi_m, Scalar(w_ref * face_area_element(n_slave, xs, xi_s)));
+    f(xi_s, xi_m, Scalar(w_ref * face_area_element(n_slave, xs, xi_s)));
   }
+  return MortarStatus::ok;
+}
+
+/// \brief Collocation (element-based) variant of integrate_mortar_3d_dual, with the multiplier
+/// coefficients A (Φ_j = Σ_k A_jk N¹_k): the points of for_each_collocation_point_3d.
+/// Converges to the exact integration as k grows (O(1/k): the overlap boundary cuts cells).
+/// \return ok; no_overlap (no point hits, out zero); degenerate (slave face or k < 1).
+template <class Scalar>
+GROUT_INLINE_FUNCTION MortarStatus integrate_mortar_3d_collocation_dual(
+    int n_slave, const Scalar xs[max_face_nodes][3], const Scalar A[max_face_nodes][max_face_nodes],
+    int n_master, const Scalar xm[max_face_nodes][3], int n_points_per_direction,
+    MortarPairResult<Scalar>& out) {
+  detail3d::reset_pair_result(n_slave, n_master, out);
+  const int k = n_points_per_direction;
+  if ((n_slave != 3 && n_slave != 4) || (n_master != 3 && n_master != 4) || k < 1)
+    return MortarStatus::degenerate;
+  detail3d::AccumulateMortarPair<Scalar> acc{A, &out};
+  if (for_each_collocation_point_3d(n_slave, xs, n_master, xm, k, acc) != MortarStatus::ok)
+    return MortarStatus::degenerate;
   return out.overlap > 0.0 ? MortarStatus::ok : MortarStatus::no_overlap;
+}
+
+/// \brief Collocation (element-based) variant: integrate_mortar_3d_collocation_dual with the
+/// dual coefficients of the slave face (dual_basis_coefficients_3d).
+/// \return ok; no_overlap (no point hits, out zero); degenerate (slave face or k < 1).
+template <class Scalar>
+GROUT_INLINE_FUNCTION MortarStatus integrate_mortar_3d_collocation(
+    int n_slave, const Scalar xs[max_face_nodes][3], const Scalar ns[max_face_nodes][3],
+    int n_master, const Scalar xm[max_face_nodes][3], int n_points_per_direction,
+    MortarPairResult<Scalar>& out) {
+  (void)ns;
+  detail3d::reset_pair_result(n_slave, n_master, out);
+  const int k = n_points_per_direction;
+  if ((n_slave != 3 && n_slave != 4) || (n_master != 3 && n_master != 4) || k < 1)
+    return MortarStatus::degenerate;
+  Scalar A[max_face_nodes][max_face_nodes];
+  if (dual_basis_coefficients_3d(n_slave, xs, A) != MortarStatus::ok)
+    return MortarStatus::degenerate;
+  return integrate_mortar_3d_collocation_dual(n_slave, xs, A, n_master, xm, k, out);
 }
 
 }  // namespace grout

@@ -28,7 +28,9 @@
 #include "kernels/dual_basis_3d.hpp"
 #include "kernels/mortar_2d.hpp"
 #include "kernels/mortar_3d.hpp"
+#include "kernels/mortar_matrices.hpp"
 #include "kernels/mortar_types.hpp"
+#include "kernels/multiplier_basis.hpp"
 #include "kernels/surface_normals.hpp"
 
 namespace grout {
@@ -58,17 +60,20 @@ struct MortarPairKernel<2> {
     int n_nodes;
     bool parallel_normals;  ///< n₁ ∥ n₂: η(ξ) is affine, Φ_j N²_l quadratic (2 points exact)
     Scalar xs[2][2], ns[2][2];
-    MortarSlave2D<Scalar> segment;  ///< what the exact pair kernel needs of the slave
+    MortarSlave2D<Scalar> segment;             ///< what the exact pair kernel needs of the slave
+    Scalar A[max_face_nodes][max_face_nodes];  ///< multiplier basis coefficients
   };
 
-  /// Copies the padded (max_face_nodes × 3) slave arrays; degenerate unless LINE2.
+  /// Copies the padded (max_face_nodes × 3) slave arrays and the basis coefficients; degenerate
+  /// unless LINE2.
   template <class Scalar>
   KOKKOS_INLINE_FUNCTION static MortarStatus prepare(int n_slave,
                                                      const Scalar xs[max_face_nodes][3],
                                                      const Scalar ns[max_face_nodes][3],
-                                                     const MortarOptions&,
+                                                     const MortarOptions&, MultiplierBasis basis,
                                                      SlaveFace<Scalar>& slave) {
     slave.n_nodes = n_slave;
+    multiplier_basis_coefficients(basis, 2, n_slave, xs, slave.A);
     for (int k = 0; k < 2; ++k)
       for (int d = 0; d < 2; ++d) slave.xs[k][d] = xs[k][d], slave.ns[k][d] = ns[k][d];
     // Exactly parallel (double only: for a Fad scalar the derivatives of η(ξ) are not affine).
@@ -77,6 +82,16 @@ struct MortarPairKernel<2> {
                              ns[0][0] * ns[1][0] + ns[0][1] * ns[1][1] > 0.0;
     mortar_slave_2d(slave.xs, slave.ns, slave.segment);
     return n_slave == 2 ? MortarStatus::ok : MortarStatus::degenerate;
+  }
+
+  /// prepare for the dual basis.
+  template <class Scalar>
+  KOKKOS_INLINE_FUNCTION static MortarStatus prepare(int n_slave,
+                                                     const Scalar xs[max_face_nodes][3],
+                                                     const Scalar ns[max_face_nodes][3],
+                                                     const MortarOptions& options,
+                                                     SlaveFace<Scalar>& slave) {
+    return prepare(n_slave, xs, ns, options, MultiplierBasis::dual, slave);
   }
 
   /// LINE2/LINE2 pair; only xm[0..1][0..1] are read.
@@ -95,6 +110,25 @@ struct MortarPairKernel<2> {
     // With parallel slave normals the 2-point rule is exact (Φ_j N²_l quadratic in ξ).
     const int n_gauss = slave.parallel_normals && options.n_gauss > 2 ? 2 : options.n_gauss;
     return integrate_mortar_2d(slave.segment, xm2, n_gauss, out);
+  }
+
+  /// LINE2/LINE2 pair, full D_jk and M_jl with the basis of `prepare` (mortar_matrices.hpp).
+  template <class Scalar>
+  KOKKOS_INLINE_FUNCTION static MortarStatus integrate(const SlaveFace<Scalar>& slave, int n_master,
+                                                       const Scalar xm[max_face_nodes][3],
+                                                       const MortarOptions& options,
+                                                       MortarPairMatrices<Scalar>& out) {
+    if (slave.n_nodes != 2 || n_master != 2) {
+      reset_pair_matrices(2, 2, out);
+      return MortarStatus::degenerate;
+    }
+    const Scalar xm2[2][2] = {{xm[0][0], xm[0][1]}, {xm[1][0], xm[1][1]}};
+    if (options.scheme == MortarIntegration::collocation)
+      return integrate_mortar_matrices_2d_collocation(slave.xs, slave.ns, slave.A, xm2,
+                                                      options.n_collocation, out);
+    // Parallel slave normals: N¹_j N¹_k and Φ_j N²_l are quadratic in ξ, 2 points are exact.
+    const int n_gauss = slave.parallel_normals && options.n_gauss > 2 ? 2 : options.n_gauss;
+    return integrate_mortar_matrices_2d(slave.segment, slave.A, xm2, n_gauss, out);
   }
 
   /// LINE2/LINE2 pair from padded (max_face_nodes × 3) arrays; only [0..1][0..1] are read.
@@ -124,19 +158,20 @@ struct MortarPairKernel<3> {
     Scalar lo[2], hi[2];  ///< bounding box of plane.ps
   };
 
-  /// Dual coefficients, auxiliary plane and its bounding box of one slave face.
+  /// Basis coefficients (multiplier_basis_coefficients), auxiliary plane and its bounding box
+  /// of one slave face.
   template <class Scalar>
   KOKKOS_INLINE_FUNCTION static MortarStatus prepare(int n_slave,
                                                      const Scalar xs[max_face_nodes][3],
                                                      const Scalar ns[max_face_nodes][3],
-                                                     const MortarOptions&,
+                                                     const MortarOptions&, MultiplierBasis basis,
                                                      SlaveFace<Scalar>& slave) {
     slave.n_nodes = n_slave;
     for (int k = 0; k < max_face_nodes; ++k)
       for (int d = 0; d < 3; ++d) slave.xs[k][d] = xs[k][d], slave.ns[k][d] = ns[k][d];
     slave.status = MortarStatus::degenerate;
     if (n_slave != 3 && n_slave != 4) return slave.status;
-    if (dual_basis_coefficients_3d(n_slave, slave.xs, slave.A) != MortarStatus::ok ||
+    if (multiplier_basis_coefficients(basis, 3, n_slave, slave.xs, slave.A) != MortarStatus::ok ||
         auxiliary_plane(n_slave, slave.xs, slave.plane) != MortarStatus::ok)
       return slave.status;
     for (int a = 0; a < 2; ++a) {
@@ -148,6 +183,16 @@ struct MortarPairKernel<3> {
     }
     slave.status = MortarStatus::ok;
     return slave.status;
+  }
+
+  /// prepare for the dual basis.
+  template <class Scalar>
+  KOKKOS_INLINE_FUNCTION static MortarStatus prepare(int n_slave,
+                                                     const Scalar xs[max_face_nodes][3],
+                                                     const Scalar ns[max_face_nodes][3],
+                                                     const MortarOptions& options,
+                                                     SlaveFace<Scalar>& slave) {
+    return prepare(n_slave, xs, ns, options, MultiplierBasis::dual, slave);
   }
 
   /// \brief True if the master face, projected on the slave's auxiliary plane, has a bounding
@@ -190,10 +235,29 @@ struct MortarPairKernel<3> {
     if (options.scheme == MortarIntegration::collocation) {
       int k = 1;
       while ((k + 1) * (k + 1) <= options.n_collocation) ++k;
-      return integrate_mortar_3d_collocation(slave.n_nodes, slave.xs, slave.ns, n_master, xm, k,
-                                             out);
+      return integrate_mortar_3d_collocation_dual(slave.n_nodes, slave.xs, slave.A, n_master, xm, k,
+                                                  out);
     }
     return integrate_mortar_3d_dual(slave.n_nodes, slave.xs, slave.A, n_master, xm, out);
+  }
+
+  /// The same pair with the full D_jk and M_jl, basis of `prepare` (mortar_matrices.hpp).
+  template <class Scalar>
+  KOKKOS_INLINE_FUNCTION static MortarStatus integrate(const SlaveFace<Scalar>& slave, int n_master,
+                                                       const Scalar xm[max_face_nodes][3],
+                                                       const MortarOptions& options,
+                                                       MortarPairMatrices<Scalar>& out) {
+    reset_pair_matrices(slave.n_nodes, n_master, out);
+    if (slave.status != MortarStatus::ok || (n_master != 3 && n_master != 4))
+      return MortarStatus::degenerate;
+    if (separated(slave, n_master, xm)) return MortarStatus::no_overlap;
+    if (options.scheme == MortarIntegration::collocation) {
+      int k = 1;
+      while ((k + 1) * (k + 1) <= options.n_collocation) ++k;
+      return integrate_mortar_matrices_3d_collocation(slave.n_nodes, slave.xs, slave.A, n_master,
+                                                      xm, k, out);
+    }
+    return integrate_mortar_matrices_3d(slave.n_nodes, slave.xs, slave.A, n_master, xm, out);
   }
 
   /// One pair from padded (max_face_nodes × 3) arrays (prepare + integrate).
@@ -208,23 +272,18 @@ struct MortarPairKernel<3> {
   }
 };
 
-/// \brief Integrates every (slave face, candidate master face) pair with MortarPairKernel<Dim>.
-/// \pre slave_faces, master_faces: (n, ≤ max_face_nodes) node ids, −1 padding; coords and unit
-/// nodal normals: (n_nodes, Dim); candidate_offsets (n_slave + 1) and candidates
-/// (≥ candidate_offsets(n_slave)): the CRS lists of coarse_search (SearchCandidates offsets and
-/// masters); results: (≥ candidate_offsets(n_slave)), pair c of slave s at
-/// candidate_offsets(s) + c. \return the worst pair status other than no_overlap (ok if all
-/// pairs succeeded), degenerate for inconsistent sizes, capacity_exceeded if results is short.
-template <int Dim, class ExecSpace>
-MortarStatus mortar_integrate(
+namespace detail {
+
+/// The launch of mortar_integrate and mortar_integrate_matrices, for either result type.
+template <int Dim, class ExecSpace, class ResultView>
+MortarStatus mortar_integrate_pairs(
     const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
     Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
     Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
     Kokkos::View<const double**, typename ExecSpace::memory_space> normals,
     Kokkos::View<const int*, typename ExecSpace::memory_space> candidate_offsets,
-    Kokkos::View<const int*, typename ExecSpace::memory_space> candidates,
-    const MortarOptions& options,
-    Kokkos::View<MortarPairResult<double>*, typename ExecSpace::memory_space> results) {
+    Kokkos::View<const int*, typename ExecSpace::memory_space> candidates, MultiplierBasis basis,
+    const MortarOptions& options, ResultView results) {
   static_assert(Dim == 2 || Dim == 3, "grout::mortar_integrate: Dim must be 2 or 3");
   const size_t n_s = slave_faces.extent(0);
   if (static_cast<int>(coords.extent(1)) != Dim || normals.extent(0) != coords.extent(0) ||
@@ -245,7 +304,7 @@ MortarStatus mortar_integrate(
           return;
         }
         typename Kernel::template SlaveFace<double> slave;
-        Kernel::prepare(n_slave, xs, ns, options, slave);
+        Kernel::prepare(n_slave, xs, ns, options, basis, slave);
         for (int p = begin; p < end; ++p) {
           const int n_master = gather_face_coordinates(master_faces, candidates(p), coords, xm);
           const MortarStatus st = Kernel::integrate(slave, n_master, xm, options, results(p));
@@ -256,6 +315,49 @@ MortarStatus mortar_integrate(
       Kokkos::Max<int>(status));
   status = status > 0 ? status : 0;  // Max starts from INT_MIN (empty range)
   return static_cast<MortarStatus>(status);
+}
+
+}  // namespace detail
+
+/// \brief Integrates every (slave face, candidate master face) pair with MortarPairKernel<Dim>,
+/// dual basis (D_jj per slave node).
+/// \pre slave_faces, master_faces: (n, ≤ max_face_nodes) node ids, −1 padding; coords and unit
+/// nodal normals: (n_nodes, Dim); candidate_offsets (n_slave + 1) and candidates
+/// (≥ candidate_offsets(n_slave)): the CRS lists of coarse_search (SearchCandidates offsets and
+/// masters); results: (≥ candidate_offsets(n_slave)), pair c of slave s at
+/// candidate_offsets(s) + c. \return the worst pair status other than no_overlap (ok if all
+/// pairs succeeded), degenerate for inconsistent sizes, capacity_exceeded if results is short.
+template <int Dim, class ExecSpace>
+MortarStatus mortar_integrate(
+    const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
+    Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
+    Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
+    Kokkos::View<const double**, typename ExecSpace::memory_space> normals,
+    Kokkos::View<const int*, typename ExecSpace::memory_space> candidate_offsets,
+    Kokkos::View<const int*, typename ExecSpace::memory_space> candidates,
+    const MortarOptions& options,
+    Kokkos::View<MortarPairResult<double>*, typename ExecSpace::memory_space> results) {
+  return detail::mortar_integrate_pairs<Dim>(space, slave_faces, master_faces, coords, normals,
+                                             candidate_offsets, candidates, MultiplierBasis::dual,
+                                             options, results);
+}
+
+/// \brief mortar_integrate with the full pair matrices D_jk, M_jl of the multiplier basis
+/// `basis` (MortarPairMatrices; for the standard basis, whose D is not diagonal). Same launch
+/// label, arguments and return as mortar_integrate.
+template <int Dim, class ExecSpace>
+MortarStatus mortar_integrate_matrices(
+    const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
+    Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
+    Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
+    Kokkos::View<const double**, typename ExecSpace::memory_space> normals,
+    Kokkos::View<const int*, typename ExecSpace::memory_space> candidate_offsets,
+    Kokkos::View<const int*, typename ExecSpace::memory_space> candidates, MultiplierBasis basis,
+    const MortarOptions& options,
+    Kokkos::View<MortarPairMatrices<double>*, typename ExecSpace::memory_space> results) {
+  return detail::mortar_integrate_pairs<Dim>(space, slave_faces, master_faces, coords, normals,
+                                             candidate_offsets, candidates, basis, options,
+                                             results);
 }
 
 /// mortar_integrate<2> (launch "grout::mortar_integrate<2D>") on the default execution space.

@@ -24,6 +24,10 @@ enum class MortarStatus : int {
 
 enum class MortarIntegration : int { exact = 0, collocation = 1 };
 
+/// Lagrange multiplier basis Φ_j on the slave (multiplier_basis.hpp): `dual` (biorthogonal,
+/// D diagonal; Grout's driver) or `standard` (Φ_j = N¹_j, D a full slave × slave matrix).
+enum class MultiplierBasis : int { dual = 0, standard = 1 };
+
 /// Contribution of one (slave element, master element) pair.
 template <class Scalar>
 struct MortarPairResult {
@@ -31,6 +35,17 @@ struct MortarPairResult {
   int n_master = 0;                          ///< nodes of the master element
   Scalar overlap;                            ///< measure of the integration domain (length or area)
   Scalar D[max_face_nodes];                  ///< D_jj (dual basis: D is diagonal)
+  Scalar M[max_face_nodes][max_face_nodes];  ///< M_jl, j slave node, l master node
+};
+
+/// Contribution of one pair with the full D: D_jk = ∫ Φ_j N¹_k dA (slave nodes j, k), for
+/// bases whose D is not diagonal (MultiplierBasis::standard; mortar_matrices.hpp).
+template <class Scalar>
+struct MortarPairMatrices {
+  int n_slave = 0;
+  int n_master = 0;
+  Scalar overlap;
+  Scalar D[max_face_nodes][max_face_nodes];  ///< D_jk, j, k slave nodes
   Scalar M[max_face_nodes][max_face_nodes];  ///< M_jl, j slave node, l master node
 };
 

@@ -2,9 +2,13 @@
 // internal path on the same interfaces (perf/mortar_interfaces.hpp, as perf/bench_mortar.cpp):
 //   internal         the four kernel launches of bench_mortar in one iteration: nodal normals,
 //                    coarse search (reused workspace), mortar_integrate<Dim>, weighted gap
-//   api              MortarCoupling::update (values only): copies the coordinates, checks them
-//                    (finite, no degenerate face), the same four launches, then D, M (CRS),
-//                    gaps, normals and tangents per slave row on the host
+//   api              MortarCoupling::update (values only) and the read of D, M (CRS), the
+//                    gaps and the normals: gathers and checks the coordinates (finite, no
+//                    degenerate face), the same four launches, then D, M (CRS), gaps and
+//                    normals per slave row on the host (tangents and the dual D as CRS are
+//                    computed on their first read, which this loop does not do)
+//   api_standard     the same with standard multipliers (mortar_integrate_matrices: full D
+//                    per pair, D read as CRS)
 //   api_derivatives  MortarCoupling::update with options.derivatives (evaluate_contact_mortar,
 //                    Sacado), on the smaller cases
 // Serial (one rank, no communicator): the API's distributed path adds the parallel search,
@@ -77,7 +81,9 @@ struct ApiPath {
   std::vector<double> xs, xm;
   std::unique_ptr<MortarCoupling> coupling;
 
-  ApiPath(const MortarInterface& mi, bool derivatives) {
+  double sink = 0.0;  ///< keeps the reads of the results
+
+  ApiPath(const MortarInterface& mi, bool derivatives, bool standard) {
     const int dim = mi.dim, ns = mi.n_slave_nodes;
     xs.assign(mi.coords.begin(), mi.coords.begin() + std::size_t(ns) * dim);
     xm.assign(mi.coords.begin() + std::size_t(ns) * dim, mi.coords.end());
@@ -87,10 +93,17 @@ struct ApiPath {
     MortarCouplingOptions o;
     o.search_factor = kSearchFactor;
     o.derivatives = derivatives;
+    if (standard) o.multipliers = MultiplierBasis::standard;
     coupling = std::make_unique<MortarCoupling>(dim, surface_arrays(mi.cols, mi.slave, xs, dim),
                                                 surface_arrays(mi.cols, master, xm, dim), o);
   }
-  void run() { coupling->update(xs, xm); }
+  void run() {
+    coupling->update(xs, xm);
+    const MortarCoupling& c = *coupling;
+    const std::vector<double>& D = c.multipliers() == MultiplierBasis::dual ? c.D() : c.D_values();
+    sink += D.back() + c.M_values().back() + c.weighted_gaps().back() + c.normals().back() +
+            double(c.M_columns().back() + c.M_offsets().back());
+  }
 };
 
 struct Case {
@@ -104,7 +117,7 @@ struct Case {
   }
 };
 
-enum class Path { internal, api, api_derivatives };
+enum class Path { internal, api, api_standard, api_derivatives };
 
 // The current case's problems (one case at a time; freed before Kokkos is finalised).
 std::unique_ptr<InternalPath> g_internal;
@@ -119,7 +132,8 @@ void run_path(benchmark::State& state, Case c, Path path) {
     g_internal = std::make_unique<InternalPath>(mi);
     g_internal->run();
   } else {
-    g_api = std::make_unique<ApiPath>(mi, path == Path::api_derivatives);
+    g_api =
+        std::make_unique<ApiPath>(mi, path == Path::api_derivatives, path == Path::api_standard);
   }
   for (auto _ : state) {
     bench::timed_iteration(state, [&] {
@@ -147,11 +161,12 @@ void register_benchmarks() {
   for (const Case& c : cases) {
     const std::string key = c.name + "/" + std::to_string(c.n) + "/";
     const bool small = c.n == 10000 || c.n == 64;
-    for (Path path : {Path::internal, Path::api, Path::api_derivatives}) {
+    for (Path path : {Path::internal, Path::api, Path::api_standard, Path::api_derivatives}) {
       if (path == Path::api_derivatives && !small) continue;
-      const char* name = path == Path::internal ? "internal"
-                         : path == Path::api    ? "api"
-                                                : "api_derivatives";
+      const char* name = path == Path::internal       ? "internal"
+                         : path == Path::api          ? "api"
+                         : path == Path::api_standard ? "api_standard"
+                                                      : "api_derivatives";
       benchmark::RegisterBenchmark((key + name).c_str(), run_path, c, path)
           ->UseManualTime()
           ->Unit(benchmark::kMillisecond);

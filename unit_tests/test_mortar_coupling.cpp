@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -134,22 +135,35 @@ TEST(MortarCoupling, SumOfDEqualsSlaveMeasure) {
       }
 }
 
+/// The arcs/cylinders unrolled onto a flat inclined plane, (r, θ, z) → θ τ₁ + z τ₂ + (r − 1) n:
+/// the slave is a grid of Δθ (× Δz) segments (rectangles), the master the slave plane moved by
+/// delta along the slave normal n, over a wider patch.
+constexpr double flat_t1[3] = {0.8, 0.6, 0.0}, flat_t2[3] = {-0.36, 0.48, 0.8};
+std::array<double, 3> flat_normal(int dim) {
+  return {dim == 2 ? 0.6 : 0.48, dim == 2 ? -0.8 : -0.64, dim == 2 ? 0.0 : 0.6};
+}
+Surfaces flat(int dim, double delta, int n = 0, int m = 0) {
+  Surfaces s = dim == 2 ? arcs_2d(n ? n : 8, m ? m : 11, 1.0, delta)
+                        : cylinders_3d(n ? n : 4, m ? m : 6, 1.0, delta);
+  const std::array<double, 3> normal = flat_normal(dim);
+  for (auto* x : {&s.xs, &s.xm})
+    for (std::size_t i = 0; i < x->size() / dim; ++i) {
+      double* p = &(*x)[i * dim];
+      const double r = std::hypot(p[0], p[1]), theta = std::atan2(p[1], p[0]);
+      const double z = dim == 3 ? p[2] : 0.0;
+      for (int d = 0; d < dim; ++d)
+        p[d] = theta * flat_t1[d] + z * flat_t2[d] + (r - 1.0) * normal[d];
+    }
+  s.slave_measure = dim == 2 ? 1.0 : 0.8 * 0.8;  // Δθ = 1 (2D); 0.8 × 0.8 (3D)
+  return s;
+}
+
 TEST(MortarCoupling, WeightedGapOfKnownOffset) {
-  // A flat inclined interface: the arcs/cylinders unrolled, (r, θ, z) → θ τ₁ + z τ₂ + (r − 1) n,
-  // so that the master is the slave plane moved by delta along the slave normal n and
   // g̃_j = −n·(D_jj x_j − Σ_l M_jl x_l) = delta Σ_l M_jl = delta D_jj exactly.
   const double delta = 0.003;
   for (int dim : {2, 3}) {
-    Surfaces s = dim == 2 ? arcs_2d(8, 11, 1.0, delta) : cylinders_3d(4, 6, 1.0, delta);
-    const double t1[3] = {0.8, 0.6, 0.0}, t2[3] = {-0.36, 0.48, 0.8};
-    const double n[3] = {dim == 2 ? 0.6 : 0.48, dim == 2 ? -0.8 : -0.64, dim == 2 ? 0.0 : 0.6};
-    for (auto* x : {&s.xs, &s.xm})
-      for (std::size_t i = 0; i < x->size() / dim; ++i) {
-        double* p = &(*x)[i * dim];
-        const double r = std::hypot(p[0], p[1]), theta = std::atan2(p[1], p[0]);
-        const double z = dim == 3 ? p[2] : 0.0;
-        for (int d = 0; d < dim; ++d) p[d] = theta * t1[d] + z * t2[d] + (r - 1.0) * n[d];
-      }
+    const Surfaces s = flat(dim, delta);
+    const std::array<double, 3> n = flat_normal(dim);
     for (bool derivatives : {false, true}) {
       MortarCouplingOptions o;
       o.derivatives = derivatives;
@@ -169,21 +183,24 @@ TEST(MortarCoupling, ForcesBalanceForAnyMultiplier) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (MPI_Comm comm : {MPI_COMM_NULL, MPI_COMM_WORLD})
     for (const Surfaces& s : cases())
-      for (auto scheme : {MortarIntegration::exact, MortarIntegration::collocation}) {
-        MortarCouplingOptions o;
-        o.integration = scheme;
-        const MortarCoupling c = couple(s, o, comm);
-        std::vector<double> lambda(c.num_slave_nodes() * s.dim);
-        for (double& l : lambda) l = u(rng);
-        const ContactForces f = c.contact_forces(lambda);
-        for (int d = 0; d < s.dim; ++d) {
-          double total = 0.0, scale = 0.0;
-          for (std::size_t j = 0; j < f.slave.size() / s.dim; ++j)
-            total += f.slave[j * s.dim + d], scale += std::abs(f.slave[j * s.dim + d]);
-          for (std::size_t l = 0; l < f.master_nodes.size(); ++l) total += f.master[l * s.dim + d];
-          EXPECT_NEAR(sum_over_ranks(total, comm), 0.0, 1e-13 * (1.0 + scale));
+      for (auto scheme : {MortarIntegration::exact, MortarIntegration::collocation})
+        for (auto basis : {MultiplierBasis::dual, MultiplierBasis::standard}) {
+          MortarCouplingOptions o;
+          o.integration = scheme;
+          o.multipliers = basis;
+          const MortarCoupling c = couple(s, o, comm);
+          std::vector<double> lambda(c.num_slave_nodes() * s.dim);
+          for (double& l : lambda) l = u(rng);
+          const ContactForces f = c.contact_forces(lambda);
+          for (int d = 0; d < s.dim; ++d) {
+            double total = 0.0, scale = 0.0;
+            for (std::size_t j = 0; j < f.slave.size() / s.dim; ++j)
+              total += f.slave[j * s.dim + d], scale += std::abs(f.slave[j * s.dim + d]);
+            for (std::size_t l = 0; l < f.master_nodes.size(); ++l)
+              total += f.master[l * s.dim + d];
+            EXPECT_NEAR(sum_over_ranks(total, comm), 0.0, 1e-13 * (1.0 + scale));
+          }
         }
-      }
 }
 
 // The values-only path (kernel launches) and the derivative path (evaluate_contact_mortar).
@@ -296,7 +313,9 @@ TEST(MortarCoupling, ClearErrors) {
   };
   MortarCouplingOptions standard;
   standard.multipliers = MultiplierBasis::standard;
-  throws_with([&] { make(s, standard); }, "standard multipliers are not supported");
+  throws_with([&] { couple(s, standard).D(); }, "D is not diagonal with standard multipliers");
+  standard.derivatives = true;
+  throws_with([&] { make(s, standard); }, "exact derivatives are available for dual multipliers");
   throws_with(
       [&] {
         MortarCoupling(4, surface_arrays(2, s.fs, s.xs, 2), surface_arrays(2, s.fm, s.xm, 2));
@@ -318,6 +337,17 @@ TEST(MortarCoupling, ClearErrors) {
   MortarCoupling c = couple(s);
   throws_with([&] { c.update(s.xs, std::vector<double>(3)); }, "3 master coordinates");
   throws_with([&] { c.contact_forces(std::vector<double>(1)); }, "1 multiplier values");
+  // The same checks on update (the serial value path checks through the gather and the
+  // normals launch), then a valid update works again.
+  throws_with([&] { c.update(nan.xs, nan.xm); }, "master surface: coordinate 1 of row 1 is nan");
+  throws_with([&] { c.update(degenerate.xs, degenerate.xm); },
+              "slave surface: face 0 (rows 0 1) is degenerate");
+  Surfaces flat_master = s;
+  flat_master.xm[4] = flat_master.xm[2], flat_master.xm[5] = flat_master.xm[3];
+  throws_with([&] { c.update(flat_master.xs, flat_master.xm); },
+              "master surface: face 1 (rows 1 2) is degenerate");
+  c.update(s.xs, s.xm);
+  EXPECT_EQ(c.D(), couple(s).D());
   throws_with([&] { c.D_derivatives(); }, "derivatives were not requested");
   const std::vector<long long> twice(s.nm(), 7), overlapping(s.nm(), 0);
   const auto with_ids = [&](const std::vector<long long>& ids) {
@@ -339,6 +369,214 @@ TEST(MortarCoupling, ClearErrors) {
     EXPECT_TRUE(std::isfinite(none.normals()[2 * j]));
   }
   EXPECT_TRUE(none.M_values().empty());
+}
+
+// ---- Standard multipliers: D is the full matrix D_jk = ∫ N¹_j N¹_k dA ----
+
+/// Dense D (slave rows × slave ids) and M (slave rows × master ids − n_s) of a coupling, summed
+/// over the ranks (ids as numbered by `number`).
+struct DenseDM {
+  std::vector<double> D, M;
+};
+DenseDM dense(const MortarCoupling& c, const Surfaces& s, MPI_Comm comm) {
+  const std::size_t ns = s.ns(), nm = s.nm();
+  DenseDM out{std::vector<double>(ns * ns, 0.0), std::vector<double>(ns * nm, 0.0)};
+  for (std::size_t j = 0; j < ns; ++j) {
+    for (std::size_t k = c.D_offsets()[j]; k < c.D_offsets()[j + 1]; ++k)
+      out.D[j * ns + std::size_t(c.D_columns()[k])] += c.D_values()[k];
+    for (std::size_t k = c.M_offsets()[j]; k < c.M_offsets()[j + 1]; ++k)
+      out.M[j * nm + std::size_t(c.M_columns()[k]) - ns] += c.M_values()[k];
+  }
+  if (comm != MPI_COMM_NULL) {
+    MPI_Allreduce(MPI_IN_PLACE, out.D.data(), int(out.D.size()), MPI_DOUBLE, MPI_SUM, comm);
+    MPI_Allreduce(MPI_IN_PLACE, out.M.data(), int(out.M.size()), MPI_DOUBLE, MPI_SUM, comm);
+  }
+  return out;
+}
+
+/// The consistent mass matrix ∫ N_j N_k dA of the slave faces of `flat` (independent reference):
+/// LINE2 of length h: h/3, h/6; a rectangle of area A (QUAD4, nodes in cyclic order): A/9 on
+/// the diagonal, A/18 along an edge, A/36 across.
+std::vector<double> slave_mass_matrix(const Surfaces& s) {
+  const std::size_t ns = s.ns();
+  std::vector<double> mass(ns * ns, 0.0);
+  const auto x = [&](int node, int d) { return s.xs[std::size_t(node) * s.dim + d]; };
+  const auto dist = [&](int a, int b) {
+    double l2 = 0.0;
+    for (int d = 0; d < s.dim; ++d) l2 += (x(b, d) - x(a, d)) * (x(b, d) - x(a, d));
+    return std::sqrt(l2);
+  };
+  for (std::size_t f = 0; f < s.fs.size() / s.cols_s; ++f) {
+    const int* n = &s.fs[f * s.cols_s];
+    if (s.dim == 2) {
+      const double h = dist(n[0], n[1]);
+      for (int a = 0; a < 2; ++a)
+        for (int b = 0; b < 2; ++b) mass[n[a] * ns + n[b]] += h * (a == b ? 1.0 / 3 : 1.0 / 6);
+    } else {
+      const double A = dist(n[0], n[1]) * dist(n[1], n[2]);
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b)
+          mass[n[a] * ns + n[b]] += A * (a == b ? 1.0 / 9 : (a - b + 4) % 2 ? 1.0 / 18 : 1.0 / 36);
+    }
+  }
+  return mass;
+}
+
+TEST(MortarCoupling, StandardDIsTheSlaveMassMatrix) {
+  MortarCouplingOptions o;
+  o.multipliers = MultiplierBasis::standard;
+  for (MPI_Comm comm : {MPI_COMM_NULL, MPI_COMM_WORLD})
+    for (int dim : {2, 3}) {
+      const Surfaces s = flat(dim, 0.003);
+      const DenseDM c = dense(couple(s, o, comm), s, comm);
+      const std::vector<double> mass = slave_mass_matrix(s);
+      double sum = 0.0;
+      for (std::size_t k = 0; k < mass.size(); ++k) {
+        EXPECT_NEAR(c.D[k], mass[k], 1e-15) << dim << "D entry " << k;
+        sum += c.D[k];
+      }
+      EXPECT_NEAR(sum, s.slave_measure, 1e-14) << dim << "D";
+    }
+}
+
+// Curved, non-matching: Σ_jk D_jk = slave measure, D symmetric, row sums Σ_k D_jk = ∫ N_j dA =
+// the dual D_jj (biorthogonality), Σ_l M_jl = Σ_k D_jk per row; exact and collocation for M.
+TEST(MortarCoupling, StandardRowSumsEqualDualDiagonal) {
+  for (MPI_Comm comm : {MPI_COMM_NULL, MPI_COMM_WORLD})
+    for (const Surfaces& s : cases())
+      for (auto scheme : {MortarIntegration::exact, MortarIntegration::collocation}) {
+        MortarCouplingOptions o;
+        o.integration = scheme;
+        const MortarCoupling dual = couple(s, o, comm);
+        o.multipliers = MultiplierBasis::standard;
+        const MortarCoupling standard = couple(s, o, comm);
+        const DenseDM c = dense(standard, s, comm);
+        const std::size_t ns = s.ns(), nm = s.nm();
+        double sum = 0.0;
+        for (std::size_t j = 0; j < ns; ++j) {
+          double row_D = 0.0, row_M = 0.0;
+          for (std::size_t k = 0; k < ns; ++k) {
+            row_D += c.D[j * ns + k];
+            if (scheme == MortarIntegration::exact)
+              EXPECT_NEAR(c.D[j * ns + k], c.D[k * ns + j], 1e-15);
+          }
+          for (std::size_t l = 0; l < nm; ++l) row_M += c.M[j * nm + l];
+          sum += row_D;
+          EXPECT_NEAR(row_M, row_D, 1e-14) << s.dim << "D row " << j;
+          if (scheme == MortarIntegration::exact)
+            EXPECT_NEAR(row_D, sum_over_ranks(dual.D()[j], comm), 1e-14) << s.dim << "D row " << j;
+        }
+        if (scheme == MortarIntegration::exact) EXPECT_NEAR(sum, s.slave_measure, 1e-13);
+      }
+}
+
+TEST(MortarCoupling, StandardWeightedGapOfKnownOffset) {
+  // g̃_j = −n·(Σ_k D_jk x¹_k − Σ_l M_jl x²_l) = delta Σ_k D_jk on the flat offset.
+  const double delta = 0.003;
+  MortarCouplingOptions o;
+  o.multipliers = MultiplierBasis::standard;
+  for (int dim : {2, 3}) {
+    const Surfaces s = flat(dim, delta);
+    const MortarCoupling c = couple(s, o);
+    for (std::size_t j = 0; j < c.num_slave_nodes(); ++j) {
+      double row = 0.0;
+      for (std::size_t k = c.D_offsets()[j]; k < c.D_offsets()[j + 1]; ++k) row += c.D_values()[k];
+      EXPECT_GT(row, 0.0);
+      EXPECT_NEAR(c.weighted_gaps()[j], delta * row, 1e-15) << dim << "D node " << j;
+    }
+  }
+}
+
+// Patch test: a linear field u = u₀ + c·x (c in the interface plane) on non-matching flat
+// meshes is transferred exactly, Σ_k D_jk u(x¹_k) = Σ_l M_jl u(x²_l), for both bases (the
+// mortar projection reproduces what both discretisations represent).
+TEST(MortarCoupling, LinearFieldReproduced) {
+  for (auto basis : {MultiplierBasis::dual, MultiplierBasis::standard})
+    for (int dim : {2, 3}) {
+      const Surfaces s = flat(dim, 0.004, dim == 2 ? 9 : 5, dim == 2 ? 13 : 7);
+      MortarCouplingOptions o;
+      o.multipliers = basis;
+      const MortarCoupling c = couple(s, o);
+      double grad[3];
+      for (int d = 0; d < 3; ++d) grad[d] = 0.7 * flat_t1[d] - (dim == 3 ? 1.3 : 0.0) * flat_t2[d];
+      const auto u = [&](const double* x) {
+        double v = 0.25;
+        for (int d = 0; d < dim; ++d) v += grad[d] * x[d];
+        return v;
+      };
+      const std::size_t ns = s.ns();
+      for (std::size_t j = 0; j < ns; ++j) {
+        double Du = 0.0, Mu = 0.0, scale = 0.0;
+        for (std::size_t k = c.D_offsets()[j]; k < c.D_offsets()[j + 1]; ++k) {
+          Du += c.D_values()[k] * u(&s.xs[std::size_t(c.D_columns()[k]) * dim]);
+          scale += std::abs(c.D_values()[k]);
+        }
+        for (std::size_t k = c.M_offsets()[j]; k < c.M_offsets()[j + 1]; ++k)
+          Mu += c.M_values()[k] * u(&s.xm[(std::size_t(c.M_columns()[k]) - ns) * dim]);
+        EXPECT_GT(scale, 0.0);
+        EXPECT_NEAR(Du, Mu, 1e-14 * (1.0 + scale))
+            << dim << "D basis " << int(basis) << " row " << j;
+      }
+    }
+}
+
+TEST(MortarCoupling, StandardDistributedEqualsSerial) {
+  MortarCouplingOptions o;
+  o.multipliers = MultiplierBasis::standard;
+  for (const Surfaces& s : cases()) {
+    const MortarCoupling serial = couple(s, o);
+    const MortarCoupling dist = couple(s, o, MPI_COMM_WORLD);
+    const DenseDM a = dense(serial, s, MPI_COMM_NULL), b = dense(dist, s, MPI_COMM_WORLD);
+    for (std::size_t k = 0; k < a.D.size(); ++k) EXPECT_NEAR(a.D[k], b.D[k], 1e-15);
+    for (std::size_t k = 0; k < a.M.size(); ++k) EXPECT_NEAR(a.M[k], b.M[k], 1e-15);
+    for (std::size_t j = 0; j < serial.num_slave_nodes(); ++j)
+      EXPECT_NEAR(sum_over_ranks(dist.weighted_gaps()[j], MPI_COMM_WORLD),
+                  serial.weighted_gaps()[j], 1e-15);
+  }
+}
+
+// The Kokkos View entry points: the same results as the arrays, from LayoutRight Views used in
+// place and LayoutLeft (strided) Views gathered; wrong extents are reported.
+TEST(MortarCoupling, ViewsGiveTheArraysResults) {
+  using Coords = Kokkos::View<double**, Kokkos::LayoutRight, Kokkos::HostSpace>;
+  using Left = Kokkos::View<double**, Kokkos::LayoutLeft, Kokkos::HostSpace>;
+  using Faces = Kokkos::View<int**, Kokkos::LayoutRight, Kokkos::HostSpace>;
+  for (Surfaces s : cases()) {
+    const int dim = s.dim;
+    const auto coords = [&](const std::vector<double>& x) {
+      Coords v("x", x.size() / dim, dim);
+      for (std::size_t i = 0; i < v.extent(0); ++i)
+        for (int d = 0; d < dim; ++d) v(i, d) = x[i * dim + d];
+      return v;
+    };
+    const auto faces = [&](const std::vector<int>& f, int cols) {
+      Faces v("faces", f.size() / cols, cols);
+      for (std::size_t i = 0; i < v.extent(0); ++i)
+        for (int a = 0; a < cols; ++a) v(i, a) = f[i * cols + a];
+      return v;
+    };
+    Left xm_left("xm", s.nm(), dim);
+    for (std::size_t i = 0; i < s.nm(); ++i)
+      for (int d = 0; d < dim; ++d) xm_left(i, d) = s.xm[i * dim + d];
+    MortarCoupling arrays = couple(s);
+    MortarCoupling views(SurfaceViews{faces(s.fs, s.cols_s), coords(s.xs), {}},
+                         SurfaceViews{faces(s.fm, s.cols_m), xm_left, {}});
+    EXPECT_EQ(views.D(), arrays.D());
+    EXPECT_EQ(views.M_columns(), arrays.M_columns());
+    EXPECT_EQ(views.M_values(), arrays.M_values());
+    // A rigid shift of the master: update from Views and from arrays agree.
+    for (std::size_t i = 0; i < s.nm(); ++i) s.xm[i * dim] += 0.01;
+    arrays.update(s.xs, s.xm);
+    views.update(coords(s.xs), coords(s.xm));
+    EXPECT_EQ(views.weighted_gaps(), arrays.weighted_gaps());
+    EXPECT_EQ(views.M_values(), arrays.M_values());
+    try {
+      views.update(coords(s.xs), Coords("short", 2, dim));
+      ADD_FAILURE() << "no error for a short View";
+    } catch (const MortarCouplingError& e) {
+      EXPECT_NE(std::string(e.what()).find("Views of"), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace

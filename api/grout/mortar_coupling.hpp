@@ -1,19 +1,22 @@
 #pragma once
 // grout::MortarCoupling: Grout's mortar terms for a host code's own contact surfaces, from
-// plain arrays (docs/embedding.md is the tutorial). Installed as <grout/mortar_coupling.hpp>,
-// target Grout::mortar.
+// plain arrays or host Kokkos Views (docs/embedding.md is the tutorial). Installed as
+// <grout/mortar_coupling.hpp>, target Grout::mortar.
 //
-// For a slave surface Γ¹ and a master surface Γ² (LINE2 in 2D, TRI3/QUAD4 in 3D), with the dual
+// For a slave surface Γ¹ and a master surface Γ² (LINE2 in 2D, TRI3/QUAD4 in 3D), with the
 // multiplier basis Φ_j (Popp et al. 2010, eqs. 9-10, 30; DESIGN.md §2):
-//   D_jj = ∫ Φ_j dA                  per slave node j (D is diagonal for the dual basis)
+//   D_jk = ∫ Φ_j N¹_k dA             slave nodes j, k (CRS); diagonal for the dual basis:
+//                                    D_jj = ∫ Φ_j dA per slave node (D())
 //   M_jl = ∫ Φ_j (N²_l ∘ χ) dA       slave node j → master node l (CRS)
-//   g̃_j  = −n_j · (D_jj x¹_j − Σ_l M_jl x²_l)       weighted gap, > 0 open, < 0 penetrating
-//   f¹_j = +D_jj λ_j,  f²_l = −Σ_j M_jl λ_j          nodal contact forces for a multiplier λ
+//   g̃_j  = −n_j · (Σ_k D_jk x¹_k − Σ_l M_jl x²_l)   weighted gap, > 0 open, < 0 penetrating
+//   f¹_k = +Σ_j D_jk λ_j,  f²_l = −Σ_j M_jl λ_j      nodal contact forces for a multiplier λ
+// Dual basis (default, Grout's driver): Φ_j biorthogonal to N¹_k, D diagonal. Standard basis:
+// Φ_j = N¹_j, D_jk = ∫ N¹_j N¹_k dA a full sparse slave × slave matrix.
 // n_j is the averaged unit normal at slave node j, outward from the slave body (towards the
 // master). λ_j follows Grout's driver (docs/input.md): the traction on the slave is −λ_j and
 // the normal pressure λ_n = n_j · λ_j is > 0 in compression; f¹, f² are the contact terms of the
 // residual r = f_int − f_ext + f_c (the force on slave node j is −f¹_j). Σ f¹ + Σ f² = 0 for
-// any λ (Σ_l M_jl = D_jj pair by pair).
+// any λ (Σ_l M_jl = Σ_k D_jk pair by pair). Exact derivatives: dual basis only.
 //
 // Serial when no communicator is given. With one, each rank passes the faces it owns (every
 // face owned by exactly one rank, nodes numbered by global ids shared by both surfaces); the
@@ -27,6 +30,7 @@
 // Nothing returned is NaN.
 
 #include <mpi.h>
+#include <Kokkos_Core.hpp>
 
 #include <cstddef>
 #include <memory>
@@ -43,16 +47,17 @@ class MortarCouplingError : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
-/// Lagrange multiplier basis. Only `dual` is implemented (the kernels integrate the dual
-/// basis, which makes D diagonal); `standard` is rejected with MortarCouplingError.
-enum class MultiplierBasis { dual, standard };
+// MultiplierBasis (kernels/mortar_types.hpp): `dual` (D diagonal) or `standard` (Φ_j = N¹_j,
+// D a full sparse matrix: read it with D_offsets/D_columns/D_values; D() throws).
 
 struct MortarCouplingOptions {
   MortarIntegration integration = MortarIntegration::exact;  ///< or collocation
   MultiplierBasis multipliers = MultiplierBasis::dual;
   int collocation_points = 20;  ///< collocation: per slave element (2D) or per direction (3D)
   double search_factor = 0.5;   ///< face boxes grown by this fraction of the face size
-  bool derivatives = false;     ///< also compute ∂D, ∂M, ∂g̃ / ∂coordinates (Sacado AD)
+  /// Also compute ∂D, ∂M, ∂g̃ / ∂coordinates (Sacado AD). Dual multipliers only: with
+  /// `standard` the constructor throws MortarCouplingError.
+  bool derivatives = false;
 };
 
 /// One surface (this rank's part) as plain arrays, not owned: MortarCoupling copies them.
@@ -74,6 +79,21 @@ SurfaceArrays surface_arrays(int nodes_per_face, const std::vector<int>& faces,
                              const std::vector<double>& coordinates, int dim,
                              const std::vector<long long>& node_ids = {});
 
+/// Host-space Kokkos Views of a surface (any layout: LayoutRight, LayoutLeft, strided; a
+/// View<double**> or View<const double**> on a host space converts implicitly).
+using HostCoordinates = Kokkos::View<const double**, Kokkos::LayoutStride, Kokkos::HostSpace>;
+using HostFaces = Kokkos::View<const int**, Kokkos::LayoutStride, Kokkos::HostSpace>;
+using HostNodeIds = Kokkos::View<const long long*, Kokkos::LayoutStride, Kokkos::HostSpace>;
+
+/// One surface as Kokkos Views: faces (n_faces × nodes_per_face, row indices into
+/// coordinates, −1 pads a TRI3 row of a QUAD4 table), coordinates (n_nodes × dim), optional
+/// node ids (n_nodes; an empty View: the default numbering of SurfaceArrays::node_ids).
+struct SurfaceViews {
+  HostFaces faces;
+  HostCoordinates coordinates;
+  HostNodeIds node_ids;
+};
+
 /// One entry of a sparse derivative: ∂(quantity `row`) / ∂(coordinate `column`), with
 /// column = node id · dim + component (node ids as in SurfaceArrays::node_ids). Each
 /// (row, column) appears once.
@@ -85,7 +105,7 @@ struct DerivativeTriplet {
 
 /// Nodal contact forces of one multiplier field (see the file comment for the signs).
 struct ContactForces {
-  std::vector<double> slave;            ///< per slave row, dim components: +D_jj λ_j
+  std::vector<double> slave;  ///< per slave row, dim components: +Σ_j D_jk λ_j (dual: D_kk λ_k)
   std::vector<long long> master_nodes;  ///< ids of the master nodes with an M entry (ascending)
   std::vector<double> master;           ///< per master_nodes entry, dim: −Σ_j M_jl λ_j
 };
@@ -98,6 +118,10 @@ class MortarCoupling {
   /// update()).
   MortarCoupling(int dim, const SurfaceArrays& slave, const SurfaceArrays& master,
                  const MortarCouplingOptions& options = {}, MPI_Comm comm = MPI_COMM_NULL);
+  /// The same from Kokkos Views (nodes_per_face = faces.extent(1), dim =
+  /// coordinates.extent(1) of both surfaces; copied like the arrays).
+  MortarCoupling(const SurfaceViews& slave, const SurfaceViews& master,
+                 const MortarCouplingOptions& options = {}, MPI_Comm comm = MPI_COMM_NULL);
   ~MortarCoupling();
   MortarCoupling(MortarCoupling&&) noexcept;
   MortarCoupling& operator=(MortarCoupling&&) noexcept;
@@ -108,12 +132,24 @@ class MortarCoupling {
   /// The same, checking the sizes.
   void update(const std::vector<double>& slave_coordinates,
               const std::vector<double>& master_coordinates);
+  /// The same from host Views (n_nodes × dim each, checked; any layout: a contiguous
+  /// LayoutRight View is read in place, others are gathered first).
+  void update(const HostCoordinates& slave_coordinates, const HostCoordinates& master_coordinates);
 
   int dim() const;
   std::size_t num_slave_nodes() const;  ///< slave coordinate rows
 
-  /// D_jj per slave row (0 for rows whose faces overlap no master face).
+  MultiplierBasis multipliers() const;
+
+  /// Dual multipliers: D_jj per slave row (0 for rows whose faces overlap no master face).
+  /// Standard multipliers: throws MortarCouplingError (D is not diagonal: use the CRS below).
   const std::vector<double>& D() const;
+  /// D in CRS, for both bases: row j's entries are [D_offsets[j], D_offsets[j+1]), slave node
+  /// ids in D_columns (ascending per row), values D_jk in D_values. Dual: the diagonal, one
+  /// entry per row with an overlapping face; standard: D_jk = ∫ N¹_j N¹_k dA.
+  const std::vector<std::size_t>& D_offsets() const;
+  const std::vector<long long>& D_columns() const;
+  const std::vector<double>& D_values() const;
   /// M in CRS: row j's entries are [M_offsets[j], M_offsets[j+1]), master node ids in
   /// M_columns (ascending per row), values in M_values.
   const std::vector<std::size_t>& M_offsets() const;
@@ -124,12 +160,14 @@ class MortarCoupling {
   /// Unit averaged nodal normals, per slave row × dim (0 for rows on no slave face).
   const std::vector<double>& normals() const;
   /// Unit tangents per slave row × (dim − 1) × dim: 2D τ = (−n_y, n_x); 3D (τ₁, τ₂, n)
-  /// right-handed, τ₁ from the coordinate axis least aligned with n.
+  /// right-handed, τ₁ from the coordinate axis least aligned with n. Computed on the first
+  /// read after an update (update itself does not pay for them).
   const std::vector<double>& tangents() const;
   /// (slave face, master face) pairs with a non-empty overlap in the last update.
   int overlapping_pairs() const;
 
-  /// Forces of the multiplier field lambda (per slave row × dim).
+  /// Forces of the multiplier field lambda (per slave row × dim): f¹_k = Σ_j D_jk λ_j at the
+  /// slave rows, f²_l = −Σ_j M_jl λ_j at master_nodes.
   ContactForces contact_forces(const double* lambda) const;
   ContactForces contact_forces(const std::vector<double>& lambda) const;
 

@@ -4,7 +4,9 @@
 //   1. Σ_j D_jj = the slave surface's measure (length in 2D, area in 3D);
 //   2. the nodal gap g̃_j / D_jj of a master placed at a known normal offset δ equals δ up to
 //      the chord error of the faceted surfaces;
-//   3. the contact forces of a pressure field balance: Σ f¹ + Σ f² = 0.
+//   3. the contact forces of a pressure field balance: Σ f¹ + Σ f² = 0;
+//   4. with standard multipliers (D a full matrix), registered through Kokkos Views:
+//      Σ_jk D_jk = the slave measure and Σ_l M_jl = Σ_k D_jk per row.
 // 2D: slave arc of radius R (LINE2), master arc of radius R + δ. 3D: slave cylinder patch of
 // radius R (QUAD4), master patch of radius R + δ (TRI3). Runs serially or on any number of
 // ranks (each rank owns a slice of the faces of both surfaces). Exits 1 if a check fails.
@@ -118,7 +120,11 @@ int check(int dim, MPI_Comm comm) {
   grout::MortarCoupling coupling(
       dim, grout::surface_arrays(slave.nodes_per_face, s.faces, s.x, dim, s.ids),
       grout::surface_arrays(master.nodes_per_face, m.faces, m.x, dim, m.ids), options, comm);
-  coupling.update(s.x, m.x);  // (unchanged here; a host calls this after every motion)
+  // (unchanged here; a host calls this after every motion). Host Views work as well as
+  // vectors or pointers: here unmanaged Views over the host's own arrays, read in place.
+  using HostMatrix = Kokkos::View<const double**, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>;
+  const HostMatrix xs_view(s.x.data(), s.ids.size(), dim), xm_view(m.x.data(), m.ids.size(), dim);
+  coupling.update(xs_view, xm_view);
 
   // D and g̃ are this rank's contributions: sum them over the ranks by node id (a host would
   // assemble them like its element vectors).
@@ -169,6 +175,34 @@ int check(int dim, MPI_Comm comm) {
                 slave_total[2] * slave_total[2]);
   const bool balance_ok = resultant > 0.0 && imbalance <= 1e-13 * p * measure;
 
+  // 4. Standard multipliers, surfaces as Kokkos Views: D is a sparse slave × slave matrix.
+  using HostFaces = Kokkos::View<const int**, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>;
+  using HostIds = Kokkos::View<const long long*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>;
+  grout::MortarCouplingOptions standard_options;
+  standard_options.multipliers = grout::MultiplierBasis::standard;
+  const grout::MortarCoupling standard(
+      grout::SurfaceViews{
+          HostFaces(s.faces.data(), s.faces.size() / slave.nodes_per_face, slave.nodes_per_face),
+          xs_view, HostIds(s.ids.data(), s.ids.size())},
+      grout::SurfaceViews{
+          HostFaces(m.faces.data(), m.faces.size() / master.nodes_per_face, master.nodes_per_face),
+          xm_view, HostIds(m.ids.data(), m.ids.size())},
+      standard_options, comm);
+  double sum_D_standard = 0.0, worst_row = 0.0;
+  for (std::size_t r = 0; r < s.ids.size(); ++r) {
+    double row_D = 0.0, row_M = 0.0;
+    for (std::size_t k = standard.D_offsets()[r]; k < standard.D_offsets()[r + 1]; ++k)
+      row_D += standard.D_values()[k];
+    for (std::size_t k = standard.M_offsets()[r]; k < standard.M_offsets()[r + 1]; ++k)
+      row_M += standard.M_values()[k];
+    sum_D_standard += row_D;
+    worst_row = std::max(worst_row, std::abs(row_D - row_M));
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &sum_D_standard, 1, MPI_DOUBLE, MPI_SUM, comm);
+  MPI_Allreduce(MPI_IN_PLACE, &worst_row, 1, MPI_DOUBLE, MPI_MAX, comm);
+  const bool standard_ok =
+      std::abs(sum_D_standard - measure) <= 1e-12 * measure && worst_row <= 1e-14;
+
   if (rank == 0) {
     std::printf("embed_mortar %dD on %d rank%s: sum D = %.15g (slave %s %.15g) %s\n", dim, size,
                 size > 1 ? "s" : "", sum_D, dim == 2 ? "length" : "area", measure,
@@ -177,8 +211,11 @@ int check(int dim, MPI_Comm comm) {
                 worst_gap, tol, gap_ok ? "ok" : "FAILED");
     std::printf("  forces: |sum f_slave| = %.6g, |sum f_slave + sum f_master| = %.3g %s\n",
                 resultant, imbalance, balance_ok ? "ok" : "FAILED");
+    std::printf(
+        "  standard multipliers (Views): sum D_jk = %.15g, worst |row D - row M| = %.3g %s\n",
+        sum_D_standard, worst_row, standard_ok ? "ok" : "FAILED");
   }
-  return area_ok && gap_ok && balance_ok ? 0 : 1;
+  return area_ok && gap_ok && balance_ok && standard_ok ? 0 : 1;
 }
 
 }  // namespace

@@ -17,6 +17,8 @@
 #include "kernels/linear_elastic.hpp"
 #include "kernels/mortar_2d.hpp"
 #include "kernels/mortar_3d.hpp"
+#include "kernels/mortar_matrices.hpp"
+#include "kernels/multiplier_basis.hpp"
 #include "kernels/polygon_clipping.hpp"
 
 /// X(name) for every probe grout::probes::probe_<name>.
@@ -26,6 +28,7 @@
   X(clip_polygons)             \
   X(dual_basis_3d)             \
   X(mortar_3d)                 \
+  X(mortar_matrices)           \
   X(face_normal)               \
   X(linear_elastic_2d)         \
   X(linear_elastic_3d)
@@ -154,6 +157,36 @@ GROUT_INLINE_FUNCTION void probe_mortar_3d(ProbeOutput& out) {
   out.put_pair(r);
   out.put_status(integrate_mortar_3d_collocation(4, xs, xs, 4, xq, 5, r));
   out.put_pair(r);
+}
+
+/// Full pair matrices (standard and dual bases, multiplier_basis.hpp / mortar_matrices.hpp):
+/// the 2D pair exact and by collocation, the warped QUAD4 slave against the QUAD4 master.
+GROUT_INLINE_FUNCTION void probe_mortar_matrices(ProbeOutput& out) {
+  double xs[max_face_nodes][3], xt[max_face_nodes][3], xq[max_face_nodes][3];
+  faces_3d(xs, xt, xq);
+  double xs2[2][2], ns2[2][2], xm2[2][2];
+  line_pair_2d(xs2, ns2, xm2);
+  double xl[max_face_nodes][3] = {{xs2[0][0], xs2[0][1], 0.0}, {xs2[1][0], xs2[1][1], 0.0}};
+  MortarPairMatrices<double> r;
+  const auto put = [&](MortarStatus s) {
+    out.put_status(s);
+    out.put(r.overlap);
+    for (int j = 0; j < r.n_slave; ++j) {
+      for (int k = 0; k < r.n_slave; ++k) out.put(r.D[j][k]);
+      for (int l = 0; l < r.n_master; ++l) out.put(r.M[j][l]);
+    }
+  };
+  for (MultiplierBasis basis : {MultiplierBasis::standard, MultiplierBasis::dual}) {
+    double A[max_face_nodes][max_face_nodes];
+    out.put_status(multiplier_basis_coefficients(basis, 2, 2, xl, A));
+    MortarSlave2D<double> slave;
+    mortar_slave_2d(xs2, ns2, slave);
+    put(integrate_mortar_matrices_2d(slave, A, xm2, 5, r));
+    put(integrate_mortar_matrices_2d_collocation(xs2, ns2, A, xm2, 7, r));
+    out.put_status(multiplier_basis_coefficients(basis, 3, 4, xs, A));
+    put(integrate_mortar_matrices_3d(4, xs, A, 4, xq, r));
+    put(integrate_mortar_matrices_3d_collocation(4, xs, A, 4, xq, 5, r));
+  }
 }
 
 /// Element normals of a LINE2, TRI3 and warped QUAD4 face, and the tangents.
