@@ -157,6 +157,11 @@ def check_case(stem, reference, tol, label, prefix, failures, report_only=False)
         ax.plot(d_ref, u_ref, "o", mfc="none", label="reference (%s)" % label)
         ax.fill_between(d_ref, u_ref - tol * scale, u_ref + tol * scale, color="C0", alpha=0.15,
                         label="reference +- %.0f %% of max|u|" % (100 * tol))
+        if label == "frictionless":  # Kratos' own 3D solution (2017), for comparison
+            rows = list(csv.reader(open(os.path.join(HERE, "frictionless_kratos2017_center_displacement.csv"))))
+            kr = np.array([[float(v) for v in r[1:3]] for r in rows[1:]])
+            kr = kr[kr[:, 0] <= d1[-1] + 1e-12]
+            ax.plot(kr[:, 0], kr[:, 1], "--", color="gray", lw=1, label="Kratos 2017 (3D hexa)")
         ax.plot(d1, u1, "-", color="C3", label="Grout, plane strain (%d steps)" % (len(d1) - 1))
         ax.set_xlabel("imposed displacement (m)")
         ax.set_ylabel("vertical displacement of the centre (m)")
