@@ -21,16 +21,16 @@ re-ordered. Malformed input stops with "file:line: message" and exit code 2. A s
 "<part>_<block>" longer than 32 characters drops every leading "parts_" of the block name
 (Kratos' "Parts_Parts_Auto1" gives "<part>_auto1") before it is skipped.
 
---layer Z: a 2D (plane-strain) mesh from the z = Z layer of a 3D hexahedral mesh whose
-elements are stacked in z (Kratos' extruded 2D benchmarks, e.g. the double arch). Every
-HEX8 element with a face on the plane z = Z (within 1e-9 of the mesh size) becomes a QUAD4
-of that face's four nodes (counterclockwise in x-y; on an inner plane, from the element above
-it); hexahedra with no node on the plane are dropped. SubModelPart nodes, elements and conditions keep what lies on the layer: nodes on
-the plane, the elements that gave a quad, and a surface condition with exactly two nodes on
-the plane becomes the line of those two (other conditions are dropped). Refused with an
-error: a non-HEX8 element, a hexahedron with 1 to 3 (or 4 not forming a face, or more than 4)
-nodes on the plane or crossing it with none (the mesh is not layered in z there), and a plane
-that no face lies on.
+--layer Z: a 2D (plane-strain) mesh from the z = Z layer of a 3D hexahedral mesh whose elements
+are stacked in z (Kratos' extruded 2D benchmarks, e.g. the double arch). Every HEX8 element with
+a face on the plane z = Z (within 1e-9 of the mesh size) becomes a QUAD4 of that face's four
+nodes (counterclockwise in x-y; on an inner plane, from the element above it); hexahedra with no
+node on the plane are dropped. SubModelPart nodes, elements and conditions keep what lies on the
+layer: nodes on the plane, the elements that gave a quad, and a surface condition with exactly
+two nodes on the plane becomes the line of those two (other conditions are dropped). Refused
+with an error: a non-HEX8 element, a hexahedron with 1 to 3 (or 4 not forming a face, or more
+than 4) nodes on the plane or crossing it with none (the mesh is not layered in z there), and a
+plane that no face lies on.
 """
 import os
 import re

@@ -34,9 +34,10 @@ import os
 import sys
 
 import numpy as np
-from scipy.integrate import quad
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "contact_common"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "double_arch"))
+import arch_theory  # noqa: E402
 import contact_check as cc  # noqa: E402
 from grout_results import Results, relative_difference  # noqa: E402
 
@@ -50,27 +51,10 @@ DEFAULT_CASES = ["rigid_block:6.896e9:6.896e8", "deformable_block:6.896e9:6.896e
                  "rigid_arc:6.896e10:6.896e6"]
 
 
-def arch_stiffness(E, nu=NU, r=R, h=H):
-    """P / delta of a half ring clamped at both ends (the ends y = centre), loaded by P at its
-    lowest point: Castigliano on a quarter (symmetry: no rotation and no horizontal
-    displacement at the bottom), U = int (M^2 / E'I + N^2 / E'A + 6/5 Q^2 / GA) R dtheta / 2,
-    M = M0 + H r (1 - cos) - V r sin, N = H cos + V sin, Q = -H sin + V cos, V = P / 2."""
-    ep, g, a, i = E / (1 - nu ** 2), E / (2 * (1 + nu)), h, h ** 3 / 12
-
-    def parts(t):
-        s, c = np.sin(t), np.cos(t)
-        return np.array([1, r * (1 - c), -r * s]), np.array([0, c, s]), np.array([0, -s, c])
-
-    flex = np.zeros((3, 3))
-    for p in range(3):
-        for q in range(3):
-            def f(t):
-                m, n, s = parts(t)
-                return (m[p] * m[q] / (ep * i) + n[p] * n[q] / (ep * a) + 1.2 * s[p] * s[q] / (g * a)) * r
-            flex[p, q] = quad(f, 0, np.pi / 2)[0]
-    x = np.linalg.solve(flex[:2, :2], -flex[:2, 2])
-    return 2.0 / (flex[2, 2] + flex[2, :2] @ x)
-
+def arch_stiffness(e):
+    """P / delta of the arc (a clamped half ring, r in [2.8, 3.0]) under a point load at its
+    lowest point: Castigliano, ../double_arch/arch_theory.py."""
+    return arch_theory.arch_stiffness([(R - H / 2, R + H / 2, e, NU)])
 
 def newton_rates(path, failures):
     """Convergence order of Newton's last judged contraction in every step,
@@ -132,15 +116,19 @@ def read_case(stem, failures, e_arc, e_block):
         node = cc.node_set(r, "ring_bottom")[0]
         t = r.times()
         dc = np.array([-r.nodal("displ_y", step=k)[node] for k in range(len(t))])
-        f = np.array([abs(r.global_var("reaction_ring_ends_nodes_y", step=k)) for k in range(len(t))])
-        out[np_] = (np.concatenate([[0], t]), np.concatenate([[0], dc]), np.concatenate([[0], f]), r)
-    (d, dc, f, r1), (d2, dc2, f2, r2) = out[1], out[2]
-    diff = max(relative_difference(r1.nodal("displ_" + c), r2.nodal("displ_" + c)) for c in "xy")
+        f = np.array([abs(r.global_var("reaction_ring_ends_nodes_y", step=k))
+                      for k in range(len(t))])
+        out[np_] = (np.concatenate([[0], t]), np.concatenate([[0], dc]),
+                    np.concatenate([[0], f]), r)
+    (d, dc, f, r1), (d2, dc2, _, r2) = out[1], out[2]
+    diff = max(relative_difference(r1.nodal("displ_" + c), r2.nodal("displ_" + c))
+               for c in "xy")
     if len(d) != len(d2) or relative_difference(dc, dc2) > 1e-8 or not diff < 1e-8:
         failures.append("%s: 1 and 2 ranks differ (%.2e)" % (stem, diff))
     work = np.concatenate([[0], np.cumsum(0.5 * (f[1:] + f[:-1]) * np.diff(d))])
-    w_block = np.array([0.0] + [strain_energy(r1, "base", e_block, NU, k) for k in range(len(d) - 1)])
-    w_arc = np.array([0.0] + [strain_energy(r1, "arc", e_arc, NU, k) for k in range(len(d) - 1)])
+    steps = range(len(d) - 1)
+    w_block = np.array([0.0] + [strain_energy(r1, "base", e_block, NU, k) for k in steps])
+    w_arc = np.array([0.0] + [strain_energy(r1, "arc", e_arc, NU, k) for k in steps])
     checked = newton_rates("np1/%s_newton.csv" % stem, failures)
     newton_rates("np2/%s_newton.csv" % stem, failures)
     return dict(d=d, dc=dc, f=f, work=work, w_block=w_block, w_arc=w_arc, diff=diff,

@@ -158,7 +158,8 @@ def check_case(stem, reference, tol, label, prefix, failures, report_only=False)
         ax.fill_between(d_ref, u_ref - tol * scale, u_ref + tol * scale, color="C0", alpha=0.15,
                         label="reference +- %.0f %% of max|u|" % (100 * tol))
         if label == "frictionless":  # Kratos' own 3D solution (2017), for comparison
-            rows = list(csv.reader(open(os.path.join(HERE, "frictionless_kratos2017_center_displacement.csv"))))
+            name = os.path.join(HERE, "frictionless_kratos2017_center_displacement.csv")
+            rows = list(csv.reader(open(name)))
             kr = np.array([[float(v) for v in r[1:3]] for r in rows[1:]])
             kr = kr[kr[:, 0] <= d1[-1] + 1e-12]
             ax.plot(kr[:, 0], kr[:, 1], "--", color="gray", lw=1, label="Kratos 2017 (3D hexa)")

@@ -18,7 +18,8 @@ cp "$here"/double_arch.yaml "$here"/double_arch_mu05.yaml "$here"/double_arch_re
 for input in double_arch.yaml double_arch_mu05.yaml; do
   "$build/bin/grout" "$input" --output-dir np1 > "np1_${input%.yaml}.log"
   OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "$root/tools/local_mpi_env" \
-    mpirun --oversubscribe -np 2 "$build/bin/grout" "$input" --output-dir np2 > "np2_${input%.yaml}.log"
+    mpirun --oversubscribe -np 2 "$build/bin/grout" "$input" --output-dir np2 \
+    > "np2_${input%.yaml}.log"
 done
 "$build/bin/grout" double_arch_readme.yaml --output-dir readme > readme.log
 PYTHONPATH=$root/tools MPLBACKEND=Agg /usr/bin/python3 "$here/check.py" \
