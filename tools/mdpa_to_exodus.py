@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Converts a Kratos .mdpa mesh to Exodus II for grout.
 
-Usage: tools/mdpa_to_exodus.py INPUT.mdpa OUTPUT.exo
+Usage: tools/mdpa_to_exodus.py [--layer Z] INPUT.mdpa OUTPUT.exo
 
 Read: Nodes ("id x y z"), Elements ("id property n1 .. nk"; types *2D3N -> TRI3, *2D4N ->
 QUAD4, *3D4N -> TETRA4, *3D8N -> HEX8), Conditions ("id property n1 .. nk", line or face
@@ -17,7 +17,20 @@ Elements and Conditions lists; ModelPartData, Properties and tables are skipped.
 Each side set also gets a node set of its nodes, unless a part already has that name; a node
 set named like a side set is written as <name>_nodes (ParaView's IOSS reader mixes up sets of
 the same name). Nodes no element uses are dropped (the rest renumbered); elements of negative measure are
-re-ordered. Malformed input stops with "file:line: message" and exit code 2.
+re-ordered. Malformed input stops with "file:line: message" and exit code 2. A side set name
+"<part>_<block>" longer than 32 characters drops every leading "parts_" of the block name
+(Kratos' "Parts_Parts_Auto1" gives "<part>_auto1") before it is skipped.
+
+--layer Z: a 2D (plane-strain) mesh from the z = Z layer of a 3D hexahedral mesh whose elements
+are stacked in z (Kratos' extruded 2D benchmarks, e.g. the double arch). Every HEX8 element with
+a face on the plane z = Z (within 1e-9 of the mesh size) becomes a QUAD4 of that face's four
+nodes (counterclockwise in x-y; on an inner plane, from the element above it); hexahedra with no
+node on the plane are dropped. SubModelPart nodes, elements and conditions keep what lies on the
+layer: nodes on the plane, the elements that gave a quad, and a surface condition with exactly
+two nodes on the plane becomes the line of those two (other conditions are dropped). Refused
+with an error: a non-HEX8 element, a hexahedron with 1 to 3 (or 4 not forming a face, or more
+than 4) nodes on the plane or crossing it with none (the mesh is not layered in z there), and a
+plane that no face lies on.
 """
 import os
 import re
@@ -26,6 +39,9 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from exodus_mesh import Mesh, MeshError, SIDES, write_exodus  # noqa: E402
 
+# HEX8 faces (0-based local nodes, cyclic): a face on the --layer plane becomes a QUAD4 in
+# this order, re-oriented counterclockwise by Mesh.add_block.
+HEX8_FACES = [(0, 1, 2, 3), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
 ELEMENT_TYPES = {"2D3N": "TRI3", "2D4N": "QUAD4", "3D4N": "TETRA4", "3D8N": "HEX8"}
 
 
@@ -128,8 +144,63 @@ def parse(path):
     return nodes, elements, conditions, parts
 
 
-def convert(path):
+def extract_layer(path, nodes, elements, conditions, parts, z):
+    """The z = `z` layer of a z-stacked HEX8 mesh as QUAD4 (see --layer in the docstring):
+    returns nodes {id: (x, y, 0)}, elements, conditions and parts of the layer."""
+    zs = [xyz[2] for xyz in nodes.values()]
+    extent = max(max(c[d] for c in nodes.values()) - min(c[d] for c in nodes.values())
+                 for d in range(3))
+    tol = 1e-9 * max(extent, abs(z), 1e-300)
+    if not min(zs) - tol <= z <= max(zs) + tol:
+        raise MeshError("%s: --layer %g is outside the mesh (z in [%g, %g])"
+                        % (path, z, min(zs), max(zs)))
+    on = {nid for nid, xyz in nodes.items() if abs(xyz[2] - z) <= tol}
+    layer_elements, faces_seen = {}, {}  # faces_seen: face nodes -> element giving its quad
+    for eid, (etype, prop, conn, line) in elements.items():
+        if etype != "HEX8":
+            raise MeshError("%s:%d: --layer needs HEX8 elements, element %d is %s"
+                            % (path, line, eid, etype))
+        for nid in conn:
+            if nid not in nodes:
+                raise MeshError("%s:%d: element %d uses undefined node %d" % (path, line, eid, nid))
+        local = [i for i, nid in enumerate(conn) if nid in on]
+        if not local:
+            if min(nodes[v][2] for v in conn) < z < max(nodes[v][2] for v in conn):
+                raise MeshError("%s:%d: element %d crosses the plane z = %g with no node on it "
+                                "(--layer needs a mesh layered in z)" % (path, line, eid, z))
+            continue
+        face = next((f for f in HEX8_FACES if set(f) == set(local)), None)
+        if face is None:
+            raise MeshError("%s:%d: element %d has %d of its 8 nodes on the plane z = %g, not "
+                            "one face (--layer needs a mesh layered in z)"
+                            % (path, line, eid, len(local), z))
+        above = any(nodes[nid][2] > z for nid in conn if nid not in on)
+        key = frozenset(conn[i] for i in face)
+        if key in faces_seen and not above:
+            continue  # an inner plane: the element above it gives the quad
+        faces_seen[key] = eid
+        layer_elements[eid] = ("QUAD4", prop, [conn[i] for i in face], line)
+    layer_elements = {eid: layer_elements[eid] for eid in faces_seen.values()}
+    if not layer_elements:
+        raise MeshError("%s: no element has a face on the plane z = %g (--layer)" % (path, z))
+    layer_conditions = {}
+    for cid, (cnodes, line) in conditions.items():
+        kept = [nid for nid in cnodes if nid in on]
+        if len(kept) == 2 and len(cnodes) > 2:
+            layer_conditions[cid] = (kept, line)
+    layer_nodes = {nid: (nodes[nid][0], nodes[nid][1], 0.0) for nid in on}
+    for part in parts:
+        part.nodes = [(i, n) for i, n in part.nodes if i in on]
+        part.elements = [(i, n) for i, n in part.elements if i in layer_elements]
+        part.conditions = [(i, n) for i, n in part.conditions if i in layer_conditions]
+    return layer_nodes, layer_elements, layer_conditions, parts
+
+
+def convert(path, layer=None):
     nodes, elements, conditions, parts = parse(path)
+    if layer is not None:
+        nodes, elements, conditions, parts = extract_layer(path, nodes, elements, conditions,
+                                                           parts, layer)
     node_ids = sorted(nodes)
     index = {nid: k for k, nid in enumerate(node_ids)}
     dims = {{"TRI3": 2, "QUAD4": 2}.get(t, 3) for t, _, _, _ in elements.values()}
@@ -200,6 +271,8 @@ def convert(path):
                 sides = [es for key, es in faces.items()
                          if block_names[es[0]] == block and key <= inside]
                 full = "%s_%s" % (name, re.sub(r"^parts_", "", block))
+                if len(full) > 32:
+                    full = "%s_%s" % (name, re.sub(r"^(parts_)+", "", block))
                 if sides and len(full) <= 32:
                     mesh.side_sets[full] = sorted(sides)
                 elif sides:
@@ -210,11 +283,20 @@ def convert(path):
 
 
 def main(argv):
+    layer = None
+    if len(argv) >= 2 and argv[1] == "--layer":
+        try:
+            layer = float(argv[2])
+        except (IndexError, ValueError):
+            print("mdpa_to_exodus: error: --layer needs a number (the plane z = Z), got %s"
+                  % (repr(argv[2]) if len(argv) > 2 else "nothing"), file=sys.stderr)
+            return 2
+        argv = argv[:1] + argv[3:]
     if len(argv) != 3:
         print(__doc__.strip().splitlines()[2], file=sys.stderr)
         return 2
     try:
-        mesh, dropped = convert(argv[1])
+        mesh, dropped = convert(argv[1], layer)
         write_exodus(mesh, argv[2], title="converted from " + os.path.basename(argv[1]))
     except MeshError as e:
         print("mdpa_to_exodus: error: %s" % e, file=sys.stderr)
