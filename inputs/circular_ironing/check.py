@@ -4,8 +4,9 @@ frictionless.
 
 Usage: check.py SIZE [--plateau T0 T1] [--ranks 1 2]     (SIZE: ci or full)
 
-Reads np<r>/circular_SIZE.csv and np<r>/shallow_SIZE.csv (R_x = reaction_die_top_nodes_x,
-R_y = -reaction_die_top_nodes_y). Reference (qualitative, Kratos' comparison.png of the 3D
+Reads np<r>/circular_SIZE.csv and np<r>/shallow_SIZE.csv: (R_x, R_y) = -(reaction_die_top_nodes_x,
+reaction_die_top_nodes_y), the force of the block on the die, as in Kratos' comparison.png
+(R_Y > 0; R_X < 0 while pressing the shallow die, > 0 near the block's end). Reference (qualitative, Kratos' comparison.png of the 3D
 cases: R_y of the circular die 1.28e8 against 1.21e8 of the shallow one, +6 %, both R_X near
 0 while sliding):
 - the circular die's mean R_y over the plateau T0 <= t <= T1 is above the shallow die's by
@@ -30,7 +31,7 @@ a = ap.parse_args()
 def read(np_, die):
     rows = list(csv.DictReader(open("np%d/%s_%s.csv" % (np_, die, a.size))))
     t = np.array([float(r["time"]) for r in rows])
-    rx = np.array([float(r["reaction_die_top_nodes_x"]) for r in rows])
+    rx = -np.array([float(r["reaction_die_top_nodes_x"]) for r in rows])
     ry = -np.array([float(r["reaction_die_top_nodes_y"]) for r in rows])
     return t, rx, ry
 
