@@ -19,7 +19,7 @@ The x-y section of the Kratos examples shallow_ironing_3D and ironing_with_die_3
 Each side set X comes with the node set X_nodes.
 --thickness T --layers N (shallow die only): the 3D slab of the Kratos example instead, both
 bodies extruded by T in z with N HEX8 layers; the side sets become the extruded faces, plus
-the side set z0 (both bodies' faces at z = 0).
+the side sets block_z0 and die_z0 (the bodies' faces at z = 0).
 """
 import argparse
 import math
@@ -118,7 +118,7 @@ def build(die, nx, ny, n_die, thickness=0.0, layers=0):
                   (2, face(b_sides, b_loop, [b_bottom]), "block_bottom"),
                   (2, face(d_sides, d_loop, d_bottom), "die_bottom"),
                   (2, face(d_sides, d_loop, [d_top]), "die_top"),
-                  (2, [b_surface, d_surface], "z0")]
+                  (2, [b_surface], "block_z0"), (2, [d_surface], "die_z0")]
     else:
         groups = [(2, [b_surface], "block"), (2, [d_surface], "die"),
                   (1, [b_top], "block_top"), (1, [b_bottom], "block_bottom"),
