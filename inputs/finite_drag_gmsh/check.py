@@ -16,7 +16,7 @@ frictionless, contact on the current geometry, three starts (drag_mesh.py):
 Every variant (1 and 2 ranks, agreeing to 1e-8): converges every step, keeps the die in
 contact while sliding, travels across >= 4 block elements, and |R_x| <= 5e-3 R_y in every
 sliding step (frictionless: no shear; only the asymmetry of the finite block tilts the
-contact). Writes drag_gmsh.png (R_x, R_y against t).
+contact). Writes drag_gmsh.png (R_x, R_y against t; drag_point's pressure against Hertz).
 """
 import csv
 import math
@@ -110,14 +110,16 @@ def hertz_point(failures):
           "peak pressure %.2f, Hertz p0 %.2f" % (P, b_fe, b_h, 100 * err, p.max(), p0))
     if not err < 0.10:
         failures.append("drag_point: half-width %.4f vs Hertz %.4f (%.1f %%)" % (b_fe, b_h, 100 * err))
+    near = np.abs(x - xc) < 1.5 * b_h
+    return x[near] - xc, p[near], b_h, p0
 
 
-def plot():
+def plot(profile):
     try:
         import matplotlib.pyplot as plt
     except ImportError:
         return
-    fig, ax = plt.subplots(figsize=(7, 4.5))
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(11, 4.5))
     for k, stem in enumerate(VARIANTS):
         t, rx, ry, _ = summary(stem, 1)
         ax.plot(t, ry, "o-", color="C%d" % k, ms=3, label="R_y, " + stem)
@@ -125,9 +127,17 @@ def plot():
     ax.axvline(1.0, color="gray", lw=0.5)
     ax.set_xlabel("t (press to t = 1, then drag 0.5 per unit t)")
     ax.set_ylabel("reaction on the die top")
-    ax.set_title("Neo-Hookean die dragged over a block (gmsh), frictionless\n"
-                 "reference: R_x = 0 while sliding; gap start = touching start")
+    ax.set_title("frictionless: R_x = 0 while sliding; gap start = touching start", fontsize=9)
     ax.legend(fontsize=7)
+    x, p, b_h, p0 = profile
+    xs = np.linspace(-1.2 * b_h, 1.2 * b_h, 200)
+    bx.plot(xs, cc.hertz_pressure(xs, b_h, p0), "b-", label="Hertz, computed load")
+    bx.plot(x, p, "ro", ms=4, label="drag_point, t = 1")
+    bx.set_xlabel("x - contact centre")
+    bx.set_ylabel("contact pressure")
+    bx.set_title("one-node start (arc die, R = 4) against Hertz", fontsize=9)
+    bx.legend(fontsize=8)
+    fig.suptitle("Neo-Hookean die pressed into and dragged over a block (gmsh meshes)")
     fig.tight_layout()
     fig.savefig("drag_gmsh.png", dpi=100)
 
@@ -137,8 +147,8 @@ def main():
     for stem in VARIANTS:
         common_checks(stem, failures)
     gap_against_touch(failures)
-    hertz_point(failures)
-    plot()
+    profile = hertz_point(failures)
+    plot(profile)
     if failures:
         print("FAILED:\n  " + "\n  ".join(failures))
         return 1
