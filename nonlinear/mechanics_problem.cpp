@@ -9,6 +9,7 @@
 
 #include "assembly/agree_on_errors.hpp"
 #include "assembly/contact_distribution.hpp"
+#include "assembly/weighted_slip.hpp"
 #include "io/errors.hpp"
 #include "nonlinear/dirichlet.hpp"
 
@@ -42,6 +43,10 @@ struct MechanicsProblem::Interface {
   std::vector<std::array<double, 3>> slip_increment;           ///< ū_k of the step
   std::vector<std::array<double, 3>> slip_accumulated;         ///< Σ ū_k τ_k (vector)
   std::vector<std::array<std::array<double, 3>, 2>> tangents;  ///< τ_k
+  // Current geometry, per owned slave node: D_jj and M_jl of the last converged step (the
+  // objective slip's D_n, M_n) and of the last evaluation; set at the first evaluation.
+  std::vector<MortarRowHistory> history, last_rows;
+  bool history_set = false;
 
   GO lambda_gid(int q, int c) const { return lambda_offset + lambda_index[q] * dim + c; }
   std::size_t position_of(GlobalIndex node) const {
@@ -142,6 +147,8 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
     c->slip_increment.assign(n_owned, {0.0, 0.0, 0.0});
     c->slip_accumulated.assign(n_owned, {0.0, 0.0, 0.0});
     c->tangents.assign(n_owned, {});
+    c->history.assign(n_owned, {});
+    c->last_rows.assign(n_owned, {});
     for (GlobalIndex n : s.slave_nodes)
       for (int d = 0; d < dim_; ++d) base.push_back(n * dim_ + d);
     for (std::size_t f = 0; f < c->owned_master.size(); ++f)
@@ -451,6 +458,30 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
   for (int q = 0; q < n_owned; ++q)
     for (int k = 0; k < dim - 1; ++k)
       for (int a = 0; a < 3; ++a) c.tangents[q][k][a] = m.frames[c.owned[q]].t[k][a];
+  // The rows D_jj, M_jl of the owned slave nodes (objective slip): of this evaluation, and at
+  // the first evaluation those of the last converged positions (commit_step moves them on).
+  const auto rows_of = [&](const ContactMortar& mm, std::vector<MortarRowHistory>& rows) {
+    for (int q = 0; q < n_owned; ++q) {
+      const int j = c.owned[q];
+      rows[q].D = mm.D[j].value;
+      rows[q].M.clear();
+      for (auto it = mm.M.lower_bound({j, std::numeric_limits<GlobalIndex>::min()});
+           it != mm.M.end() && it->first.first == j; ++it)
+        rows[q].M.emplace_back(it->first.second, it->second.value);
+    }
+  };
+  if (c.current_geometry && c.input.type == ContactKind::frictional) {
+    if (!c.history_set) {
+      std::vector<std::array<double, 3>> old_positions(n_nodes, {0.0, 0.0, 0.0});
+      for (std::size_t i = 0; i < n_nodes; ++i)
+        for (int d = 0; d < dim; ++d) old_positions[i][d] = c.X[i][d] + c.u_old[i][d];
+      ContactMortarOptions old_options = c.options;
+      old_options.derivatives = false;
+      rows_of(evaluate_contact_mortar(s, old_positions, old_options), c.history);
+      c.history_set = true;
+    }
+    rows_of(m, c.last_rows);
+  }
 
   const auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto Fv = F.getLocalViewHost(Tpetra::Access::ReadWrite);
@@ -637,41 +668,21 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
     }
 
     // Coulomb friction (Hüeber, Stadler, Wohlmuth 2008; DESIGN.md §2), per unit D_jj:
-    // slip increment ū_k = τ_k·w / D, w = D Δx_j − Σ_l M_jl Δx_l (Δ since the last converged
-    // step), ξ = λ_τ + c_t ū, s = λ_n − ĉ g.
+    // ū_k the weighted slip increment since the last converged step (weighted_slip.hpp:
+    // objective on the current geometry, standard on the reference one), ξ = λ_τ + c_t ū,
+    // s = λ_n − ĉ g.
     //   stick (|ξ| < μ s):  c_t ū = 0;
     //   slip:               λ_τ − μ s ξ/|ξ| = 0   (the NCP divided by |ξ| > 0).
-    double w[3] = {0.0, 0.0, 0.0};
-    for (int a = 0; a < dim; ++a) w[a] = D * (position(node, a) - old_position(node, a));
-    for (auto it = m_begin; it != m_end; ++it)
-      for (int a = 0; a < dim; ++a)
-        w[a] -=
-            it->second.value * (position(it->first.second, a) - old_position(it->first.second, a));
+    // A node with no master at the last converged step (D_jj,n = 0) measures its first slip
+    // with the standard increment.
+    std::vector<MortarRowEntry> m_row;
+    for (auto it = m_begin; it != m_end; ++it) m_row.emplace_back(it->first.second, &it->second);
+    const bool objective = c.current_geometry && c.history[q].D > D_tol;
     double slip[2] = {0.0, 0.0}, xi[2] = {0.0, 0.0}, xi_norm = 0.0;
     SparseGradient dslip[2];
+    weighted_slip_increment(dim, node, fr, m.D[j], m_row, objective ? &c.history[q] : nullptr,
+                            position, old_position, slip, dslip);
     for (int k = 0; k < dim - 1; ++k) {
-      const double r = 1.0 / D;
-      for (int a = 0; a < dim; ++a) {
-        slip[k] += r * fr.t[k][a] * w[a];
-        for (const auto& [dof, dt] : fr.dt[k][a]) dslip[k].emplace_back(dof, r * w[a] * dt);
-        dslip[k].emplace_back(node * dim + a, fr.t[k][a]);
-      }
-      double t_dx = 0.0;  // τ_k·Δx_j
-      for (int a = 0; a < dim; ++a)
-        t_dx += fr.t[k][a] * (position(node, a) - old_position(node, a));
-      for (const auto& [dof, dD] : m.D[j].gradient)
-        dslip[k].emplace_back(dof, r * (t_dx - slip[k]) * dD);
-      for (auto it = m_begin; it != m_end; ++it) {
-        const GlobalIndex l = it->first.second;
-        double t_dxl = 0.0;
-        for (int a = 0; a < dim; ++a) {
-          t_dxl += fr.t[k][a] * (position(l, a) - old_position(l, a));
-          dslip[k].emplace_back(l * dim + a, -r * fr.t[k][a] * it->second.value);
-        }
-        for (const auto& [dof, dM] : it->second.gradient)
-          dslip[k].emplace_back(dof, -r * t_dxl * dM);
-      }
-      compress_gradient(dslip[k]);
       xi[k] = lambda_t[k] + c.c_t_hat * slip[k];
       xi_norm += xi[k] * xi[k];
     }
@@ -832,6 +843,7 @@ void MechanicsProblem::commit_step() {
         for (int a = 0; a < dim_; ++a)
           c->slip_accumulated[q][a] += c->slip_increment[q][k] * c->tangents[q][k][a];
     for (auto& increment : c->slip_increment) increment = {0.0, 0.0, 0.0};
+    if (c->history_set) c->history = c->last_rows;
   }
   x_old_->assign(*x_last_);
 }

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <Tpetra_Core.hpp>
+#include <cmath>
 #include <map>
 #include <random>
 
@@ -75,8 +76,11 @@ void random_state(const MechanicsProblem& problem, const Mesh& mesh, Vector& x, 
 }
 
 /// Checks the Jacobian; returns the number of stick (1) and slip (2) slave nodes.
+/// With `committed`, a first state (another seed) is accepted (commit_step) before: the slip
+/// increment is then measured from a deformed state (the objective slip's D_n, M_n).
 std::array<int, 3> check_jacobian(int dim, ContactKind type = ContactKind::frictionless,
-                                  double mu = 0.0, StrainKind strain = StrainKind::small) {
+                                  double mu = 0.0, StrainKind strain = StrainKind::small,
+                                  bool committed = false) {
   const bool finite = strain == StrainKind::finite;
   const auto comm = Tpetra::getDefaultComm();
   const Mesh mesh = dim == 2 ? two_block_mesh_2d(3, 2, 4, 2) : two_block_mesh_3d(2, 2, 1, 3, 2, 1);
@@ -85,6 +89,11 @@ std::array<int, 3> check_jacobian(int dim, ContactKind type = ContactKind::frict
   MechanicsProblem problem(solid, mesh, input);
   Vector x(problem.map()), F(problem.map()), Fp(problem.map()), Fm(problem.map());
   Vector dx(problem.map()), JdX(problem.map()), xp(problem.map()), xm(problem.map());
+  if (committed) {
+    random_state(problem, mesh, x, 7, finite);
+    EXPECT_TRUE(problem.residual(x, F));
+    problem.commit_step();
+  }
   random_state(problem, mesh, x, 3, finite);
   EXPECT_TRUE(problem.residual(x, F));
   const int active = problem.active_set_size();
@@ -129,6 +138,77 @@ TEST(MechanicsJacobian, FrictionalSlipMatchesFiniteDifferences3D) {
 }
 TEST(MechanicsJacobian, FrictionalStickMatchesFiniteDifferences3D) {
   EXPECT_GT(check_jacobian(3, ContactKind::frictional, 1e3)[1], 0);
+}
+
+// The objective slip (weighted_slip.hpp) on the current geometry: a rigid motion of a state
+// with gaps and finite deformation, after that state was accepted, adds no slip at any
+// active slave node (D, M and the relative position of the bodies are unchanged); the
+// standard increment τ·(D Δx¹ − M Δx²) would add τ·(R − I) v_n, of the order of the gaps
+// (1e-2 here) times the rotation. A rigid shift of the slave body alone along a flat
+// interface is a slip of the shift (interior slave nodes, small strain, no deformation).
+void check_objective_slip(int dim) {
+  const auto comm = Tpetra::getDefaultComm();
+  const Mesh mesh = dim == 2 ? two_block_mesh_2d(3, 2, 4, 2) : two_block_mesh_3d(2, 2, 1, 3, 2, 1);
+  const Input input = contact_input(dim, ContactKind::frictional, 0.3, StrainKind::finite);
+  const SolidProblem solid(mesh, input, comm);
+  MechanicsProblem problem(solid, mesh, input);
+  Vector x(problem.map()), F(problem.map()), x2(problem.map());
+  random_state(problem, mesh, x, 3, true);
+  ASSERT_TRUE(problem.residual(x, F));
+  problem.commit_step();
+  const ContactFields before = problem.contact_fields();
+  // x2: u2 = R (X + u) − X + b, λ2 = R λ; R a rotation by 0.5 rad about z (3D: and a tilt).
+  const double c = std::cos(0.5), s = std::sin(0.5), c2 = std::cos(0.3), s2 = std::sin(0.3);
+  const double Rz[3][3] = {{c, -s, 0.0}, {s, c, 0.0}, {0.0, 0.0, 1.0}};
+  const double Rx[3][3] = {{1.0, 0.0, 0.0}, {0.0, c2, -s2}, {0.0, s2, c2}};
+  double R[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      R[i][j] = 0.0;
+      for (int k = 0; k < 3; ++k) R[i][j] += (dim == 3 ? Rx[i][k] : double(i == k)) * Rz[k][j];
+    }
+  const double b[3] = {0.3, -0.2, 0.1};
+  const auto& map = *problem.map();
+  const GO n_u = GO(mesh.num_nodes()) * dim;
+  {
+    // The owned entries of a node are its dim consecutive dofs (map order): rotate per node.
+    const auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+    auto yv = x2.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (std::size_t i = 0; i < map.getNodeNumElements(); i += dim) {
+      const GO g = map.getGlobalElement(LO(i));
+      ASSERT_EQ(g % dim, 0);
+      double p[3] = {0.0, 0.0, 0.0};
+      for (int a = 0; a < dim; ++a)
+        p[a] = xv(i + a, 0) + (g < n_u ? mesh.coordinates[(g / dim) * dim + a] : 0.0);
+      for (int a = 0; a < dim; ++a) {
+        double v = 0.0;
+        for (int k = 0; k < dim; ++k) v += R[a][k] * p[k];
+        yv(i + a, 0) = g < n_u ? v - mesh.coordinates[(g / dim) * dim + a] + b[a] : v;
+      }
+    }
+  }
+  ASSERT_TRUE(problem.residual(x2, F));
+  const ContactFields after = problem.contact_fields();
+  double largest = 0.0, accumulated = 0.0;
+  int active = 0;
+  for (std::size_t n = 0; n < std::size_t(mesh.num_nodes()); ++n) {
+    if (after.status[n] == 0.0) continue;
+    ++active;
+    for (int a = 0; a < dim; ++a) {
+      largest = std::max(largest, std::abs(after.slip[a][n] - before.slip[a][n]));
+      accumulated = std::max(accumulated, std::abs(before.slip[a][n]));
+    }
+  }
+  EXPECT_GT(active, 0);
+  EXPECT_GT(accumulated, 1e-3) << "the first step slipped";
+  EXPECT_LT(largest, 1e-12) << "slip added by a rigid motion";
+}
+
+TEST(MechanicsJacobian, ObjectiveSlipUnderRigidMotion2D) {
+  check_objective_slip(2);
+}
+TEST(MechanicsJacobian, ObjectiveSlipUnderRigidMotion3D) {
+  check_objective_slip(3);
 }
 
 // The same problem on this rank alone (a serial communicator) and distributed over all ranks:
@@ -212,6 +292,16 @@ TEST(MechanicsJacobian, FiniteStrainFrictionalStickMatchesFiniteDifferences2D) {
 }
 TEST(MechanicsJacobian, FiniteStrainFrictionalSlipMatchesFiniteDifferences3D) {
   EXPECT_GT(check_jacobian(3, ContactKind::frictional, 0.3, StrainKind::finite)[2], 0);
+}
+TEST(MechanicsJacobian, FiniteStrainFrictionalStickMatchesFiniteDifferences3D) {
+  EXPECT_GT(check_jacobian(3, ContactKind::frictional, 1e3, StrainKind::finite)[1], 0);
+}
+// The slip measured from an accepted deformed state (D_n, M_n of that state).
+TEST(MechanicsJacobian, FiniteStrainFrictionalAfterCommitMatchesFiniteDifferences) {
+  for (int dim : {2, 3}) {
+    EXPECT_GT(check_jacobian(dim, ContactKind::frictional, 0.3, StrainKind::finite, true)[2], 0);
+    EXPECT_GT(check_jacobian(dim, ContactKind::frictional, 1e3, StrainKind::finite, true)[1], 0);
+  }
 }
 
 }  // namespace

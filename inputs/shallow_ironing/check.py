@@ -1,0 +1,146 @@
+"""Shallow ironing, plane strain (BENCHMARKS.md #19): the die's reaction against the published
+curves of the Kratos example (Poulios & Renard 2015), digitised into reference_*.csv by
+digitize_reference.py.
+
+Usage: check.py CASE MU [--plateau T0 T1] [--fy-tolerance TOL] [--fx-tolerance TOL]
+                [--ratio-tolerance TOL] [--ranks 1 2]
+
+Reads np<r>/CASE.csv: F_x = reaction_die_top_nodes_x (the drag force, > 0 along the sliding
+direction), F_y = -reaction_die_top_nodes_y (the pressing force, > 0): the signs of the
+reference figure. Checks, on each rank
+count:
+- MU = 0: |F_x| <= FX_TOL F_y (default 2e-2) at every step of the sliding plateau
+  (T0 <= t <= T1);
+- MU > 0: at every step of the plateau in which every active slave node slips (from
+  CASE_contact.csv; at least half of the plateau's steps), Coulomb's law at each slave node,
+  |lambda_t| = sqrt(|lambda|^2 - lambda_n^2) = MU lambda_n (to 1e-6 lambda_n), and the mean
+  F_x / F_y over those steps within RATIO_TOL (default 0.1) of MU. F_x / F_y is not MU
+  exactly: the block presses on the front of the die's arc (ploughing, +7 % measured; the 3D
+  reference has +1 %), see docs/verification.md;
+- the mean F_y over the plateau against the reference's (3.37e8 N for both cases, read off
+  the figures) within FY_TOL (default 0.25: the reference is the 3D slab of thickness 1 with
+  free faces, about 10 % softer than plane strain, see docs/verification.md);
+- 1 and 2 ranks: the reactions agree to 1e-8 relative.
+Writes CASE.png: F_y, F_x against t with the reference curves.
+"""
+import argparse
+import csv
+import os
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+ap = argparse.ArgumentParser()
+ap.add_argument("case")
+ap.add_argument("mu", type=float)
+ap.add_argument("--plateau", type=float, nargs=2, default=[1.3, 1.7])
+ap.add_argument("--fy-tolerance", type=float, default=0.25)
+ap.add_argument("--fx-tolerance", type=float, default=2e-2)
+ap.add_argument("--ratio-tolerance", type=float, default=0.1)
+ap.add_argument("--ranks", type=int, nargs="+", default=[1, 2])
+a = ap.parse_args()
+
+reference = np.loadtxt(os.path.join(HERE, "reference_%s.csv" % (
+    "frictionless" if a.mu == 0 else "frictional")), delimiter=",", skiprows=1)
+t_ref, fy_ref, fx_ref = reference.T
+# The reference presses for 0.2 <= t <= 1 (after closing a gap of 0.2), the runs for t <= 1:
+# its times before 1 map to (t - 0.2) / 0.8.
+t_ref = np.where(t_ref < 1.0, (t_ref - 0.2) / 0.8, t_ref)
+in_ref = (t_ref >= a.plateau[0]) & (t_ref <= a.plateau[1])
+fy_ref_plateau = fy_ref[in_ref].mean()
+
+failures = []
+results = {}
+for np_ in a.ranks:
+    rows = list(csv.DictReader(open("np%d/%s.csv" % (np_, a.case))))
+    t = np.array([float(r["time"]) for r in rows])
+    fx = np.array([float(r["reaction_die_top_nodes_x"]) for r in rows])
+    fy = -np.array([float(r["reaction_die_top_nodes_y"]) for r in rows])
+    steps = np.array([int(r["step"]) for r in rows])
+    results[np_] = (t, fx, fy)
+    plateau = (t >= a.plateau[0] - 1e-12) & (t <= a.plateau[1] + 1e-12)
+    if plateau.sum() < 3:
+        failures.append("np%d: only %d steps in the plateau" % (np_, plateau.sum()))
+        continue
+    fy_mean = fy[plateau].mean()
+    error = fy_mean / fy_ref_plateau - 1
+    print("np%d: %d steps, %d in t = [%g, %g]: mean F_y = %.4g N (reference %.4g N, %+.2f %%),"
+          " F_y from %.4g to %.4g" % (np_, len(t), plateau.sum(), a.plateau[0], a.plateau[1],
+                                       fy_mean, fy_ref_plateau, 100 * error, fy[plateau].min(),
+                                       fy[plateau].max()))
+    if not abs(error) <= a.fy_tolerance:
+        failures.append("np%d: F_y plateau %.4g differs from the reference %.4g by %+.1f %%"
+                        % (np_, fy_mean, fy_ref_plateau, 100 * error))
+    ratio = fx / fy
+    if a.mu == 0:
+        print("np%d: max |F_x|/F_y on the plateau = %.2e" % (np_, np.abs(ratio[plateau]).max()))
+        if not np.abs(ratio[plateau]).max() <= a.fx_tolerance:
+            failures.append("np%d: frictionless |F_x|/F_y %.2e > %g"
+                            % (np_, np.abs(ratio[plateau]).max(), a.fx_tolerance))
+    else:
+        status, coulomb = {}, {}
+        for r in csv.DictReader(open("np%d/%s_contact.csv" % (np_, a.case))):
+            st = float(r["contact_status"])
+            if st == 0.0:
+                continue
+            k = int(r["step"])
+            status.setdefault(k, []).append(st)
+            lam_n = float(r["contact_pressure"])
+            lam_t = np.sqrt(max(float(r["lm_x"]) ** 2 + float(r["lm_y"]) ** 2 - lam_n ** 2, 0.0))
+            if st == 2.0:
+                coulomb[k] = max(coulomb.get(k, 0.0), abs(lam_t - a.mu * lam_n) / lam_n)
+        full_slip = np.array([s in status and min(status[s]) == 2.0 for s in steps])
+        sel = plateau & full_slip
+        worst = max(coulomb[s] for s in steps[sel]) if sel.any() else np.inf
+        mean = (ratio[sel] / a.mu).mean() if sel.any() else np.nan
+        print("np%d: %d of %d plateau steps in full slip; largest | |lambda_t| - mu lambda_n |"
+              " / lambda_n at a node %.1e; F_x/F_y / mu from %.4f to %.4f, mean %.4f"
+              % (np_, sel.sum(), plateau.sum(), worst,
+                 (ratio[sel] / a.mu).min() if sel.any() else 0,
+                 (ratio[sel] / a.mu).max() if sel.any() else 0, mean))
+        if sel.sum() < max(3, plateau.sum() // 2):
+            failures.append("np%d: only %d plateau steps in full slip" % (np_, sel.sum()))
+        elif not worst <= 1e-6:
+            failures.append("np%d: slipping nodes violate |lambda_t| = mu lambda_n (%.1e)"
+                            % (np_, worst))
+        elif not abs(mean - 1) <= a.ratio_tolerance:
+            failures.append("np%d: mean F_x/F_y = %.4f mu, not within %g of mu"
+                            % (np_, mean, a.ratio_tolerance))
+
+if 1 in results and 2 in results:
+    t1, fx1, fy1 = results[1]
+    t2, fx2, fy2 = results[2]
+    if len(t1) != len(t2) or np.abs(t1 - t2).max() > 1e-12:
+        failures.append("1 and 2 ranks took different steps")
+    else:
+        scale = np.abs(fy1).max()
+        diff = max(np.abs(fx1 - fx2).max(), np.abs(fy1 - fy2).max()) / scale
+        print("1 vs 2 ranks: reactions differ by %.2e (relative to max F_y)" % diff)
+        if not diff < 1e-8:
+            failures.append("1 and 2 ranks differ by %.2e" % diff)
+
+try:
+    import matplotlib.pyplot as plt
+    t, fx, fy = results[a.ranks[0]]
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    ax.plot(t_ref, fy_ref, "-", color="tab:blue", lw=3, alpha=0.4, label="F_y reference")
+    ax.plot(t_ref, fx_ref, "-", color="tab:red", lw=3, alpha=0.4, label="F_x reference")
+    ax.plot(t, fy, ".", color="tab:blue", ms=3, label="F_y Grout (plane strain)")
+    ax.plot(t, fx, ".", color="tab:red", ms=3, label="F_x Grout")
+    ax.axvspan(a.plateau[0], a.plateau[1], color="gray", alpha=0.1)
+    ax.set_xlabel("t (press 0.8 for t <= 1, slide 10 for 1 <= t <= 2)")
+    ax.set_ylabel("force on the block (N per unit thickness)")
+    ax.set_title("Shallow ironing, mu = %g" % a.mu)
+    ax.grid(True, lw=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig("%s.png" % a.case, dpi=100)
+except ImportError:
+    pass
+
+if failures:
+    print("FAILED:\n  " + "\n  ".join(failures))
+    sys.exit(1)
+print("shallow_ironing %s: all checks passed" % a.case)
