@@ -112,9 +112,11 @@ def orient(coords, topology, conn):
 
 def name_node_sets_apart(mesh):
     """A node set named like a side set becomes <name>_nodes (grout_mesh's rule: ParaView's
-    IOSS reader mixes up the data of a node set and a side set of the same name)."""
+    IOSS reader mixes up the data of a node set and a side set of the same name). Where that
+    is longer than the 32 characters of an Exodus name, <name> is cut to 26 characters
+    (Kratos' contact parts: contact_contact_master_auto1 -> contact_contact_master_aut_nodes)."""
     for name in [n for n in mesh.node_sets if n in mesh.side_sets]:
-        new = name + "_nodes"
+        new = name[:32 - len("_nodes")] + "_nodes"
         if new in mesh.node_sets:
             raise MeshError("node sets '%s' and '%s' would get the same name" % (name, new))
         mesh.node_sets[new] = mesh.node_sets.pop(name)
