@@ -76,6 +76,8 @@ class MechanicsProblem : public NonlinearProblem {
   void displacement(const Vector& x, Vector& u) const;
   /// f_int − f_ext + f_c on the prescribed dofs at the last residual evaluation, 0 elsewhere.
   const Vector& reactions() const { return *reaction_; }
+  /// The solid (dof maps, element assembly, stored energy).
+  const SolidProblem& solid() const { return solid_; }
   /// f_int and f_ext (owned rows) at the last residual evaluation / begin_step.
   const Vector& internal_force() const { return *f_int_; }
   const Vector& external_force() const { return *f_ext_; }
