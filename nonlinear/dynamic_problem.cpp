@@ -12,12 +12,13 @@ namespace grout {
 DynamicProblem::DynamicProblem(MechanicsProblem& problem, int dimension,
                                Teuchos::RCP<const Matrix> mass, const TimeIntegrator& integrator,
                                const std::array<double, 3>& gravity, const Vector& v0,
-                               bool stabilized_contact)
+                               bool stabilized_contact, bool velocity_update)
     : problem_(problem),
       mass_(std::move(mass)),
       integrator_(integrator),
       dim_(dimension),
-      stabilized_contact_(stabilized_contact) {
+      stabilized_contact_(stabilized_contact),
+      velocity_update_(stabilized_contact && velocity_update) {
   const auto u_map = mass_->getRowMap();
   num_owned_u_ = int(u_map->getNodeNumElements());
   auto make = [&] { return Teuchos::rcp(new Vector(u_map)); };
@@ -163,10 +164,23 @@ void DynamicProblem::start(Vector& x0, LinearSolver& linear) {
   measure_state(*u_, *v_);
 }
 
+double DynamicProblem::give_back(const Vector& da, double loss) {
+  // ½ s² wᵀMw + s vᵀMw = loss with w = −da: a s² + b s − loss = 0, a > 0, loss > 0, so one
+  // root is positive (the jump along the impulse: the contact opens, as after an elastic
+  // impact); the stable form of that root.
+  mass_->apply(da, *work_);
+  const double a = 0.5 * da.dot(*work_), b = -v_->dot(*work_);  // collective
+  if (!(a > 0.0)) return 0.0;
+  const double root = std::sqrt(b * b + 4.0 * a * loss);
+  const double s = b <= 0.0 ? (root - b) / (2.0 * a) : 2.0 * loss / (root + b);
+  v_->update(-s, da, 1.0);
+  return loss;
+}
+
 void DynamicProblem::measure_state(const Vector& u, const Vector& v) {
   mass_->apply(v, *work_);
   balance_.kinetic = 0.5 * v.dot(*work_);
-  balance_.strain = 0.5 * u.dot(problem_.internal_force());
+  balance_.strain = problem_.solid().stored_energy(u);
   balance_.total = balance_.kinetic + balance_.strain - balance_.external_work;
   double p_local[3] = {0.0, 0.0, 0.0};
   {
@@ -219,6 +233,8 @@ void DynamicProblem::commit_step(const Vector& x) {
   if (stabilized_contact_ && problem_.has_contact()) {
     // The contact force acted on this step only: a*_{n+1} = a_{n+1} + M⁻¹ f_c,n+1, and
     // neither it nor f_c,n+1 is carried into the next step (file comment).
+    const double closing_loss =
+        velocity_update_ ? -problem_.contact_step_energy().closing : 0.0;  // collective
     Vector rhs(u_map), da(u_map);
     rhs.assign(f_contact);
     {
@@ -229,6 +245,7 @@ void DynamicProblem::commit_step(const Vector& x) {
     if (rhs.normInf() > 0.0) {
       solver_->solve(mass_free_, rhs, da);
       a_->update(1.0, da, 1.0);
+      if (closing_loss > 0.0) balance_.contact_work += give_back(da, closing_loss);
     }
     f_static_n_->update(-1.0, f_contact, 1.0);
     f_contact_n_->putScalar(0.0);

@@ -23,6 +23,19 @@
 // predictor, the idea of the contact-stabilised Newmark method (Deuflhard, Krause & Ertel,
 // IJNME 73 (2008) 1274). A closed contact's multiplier is then the force of its step alone:
 // for the average-acceleration rule twice the mean force over the step.
+//
+// Velocity update (optional, with the stabilised treatment), after Laursen & Love (IJNME 53
+// (2002) 245: an admissible position update followed by a velocity update along the contact
+// normals that closes the step's energy balance). The closing steps' loss ½ λ g̃_n is an
+// artefact of the time discretisation of an impact that lasts less than a step (an elastic
+// impact loses nothing); it is given back to the bodies as a velocity jump along the step's
+// contact impulse, v_{n+1} ← v_{n+1} + s w with w = −M⁻¹ f_c,n+1 (the direction in which the
+// contact forces of the step changed the velocities) and s > 0 the root of
+//   ½ s² wᵀMw + s v_{n+1}ᵀMw = L,   L = −Σ_{j closing} e_j ≥ 0
+// (ContactStepEnergy: the contact energy of the slave nodes that closed in this step). The
+// impact then acts with a restitution of one; contacts that stay closed are left alone (their
+// energy term is zero for a fixed geometry, and of either sign and second order in Δu on a
+// curved one).
 // Jacobian: the u rows of J_s scaled by (1 − αf), plus (1 − αm)/(β Δt²) M on the free dofs.
 // Prescribed dofs stay eliminated (MechanicsProblem); g is the gravity acceleration.
 
@@ -38,7 +51,7 @@ namespace grout {
 /// Energies and momentum of the state (DynamicProblem::balance): totals over all ranks.
 struct EnergyBalance {
   double kinetic = 0.0;        ///< ½ vᵀ M v
-  double strain = 0.0;         ///< ½ uᵀ f_int(u) (small strain: the stored energy)
+  double strain = 0.0;         ///< stored energy ∫ W dV (SolidProblem::stored_energy)
   double external_work = 0.0;  ///< Σ_steps ½ (f_n + f_{n+1})·Δu: loads, gravity, supports
   double contact_work = 0.0;   ///< Σ_steps ½ (f_c,n + f_c,n+1)·Δu done by the contact forces
   double total = 0.0;          ///< kinetic + strain − external_work
@@ -48,10 +61,11 @@ struct EnergyBalance {
 class DynamicProblem : public NonlinearProblem {
  public:
   /// M on the solid's owned map (assemble_mass_matrix); v0 the initial velocity there.
-  /// stabilized_contact: contact forces act on their own step only (file comment).
+  /// stabilized_contact: contact forces act on their own step only; velocity_update: and the
+  /// closing steps' loss is given back as a velocity jump (file comment).
   DynamicProblem(MechanicsProblem& problem, int dimension, Teuchos::RCP<const Matrix> mass,
                  const TimeIntegrator& integrator, const std::array<double, 3>& gravity,
-                 const Vector& v0, bool stabilized_contact = true);
+                 const Vector& v0, bool stabilized_contact = true, bool velocity_update = false);
 
   MechanicsProblem& quasi_static() { return problem_; }
   Teuchos::RCP<const Map> map() const override { return problem_.map(); }
@@ -79,6 +93,9 @@ class DynamicProblem : public NonlinearProblem {
   /// Full static u-row force at the last evaluation: F_s on free rows, the reaction on
   /// prescribed rows (MechanicsProblem zeroes those rows in F).
   void static_force(Vector& out) const;
+  /// The velocity jump of the velocity update along w = −M⁻¹ f_c (da = M⁻¹ f_c on the free
+  /// dofs) that gives the bodies back `loss`; returns the energy given back.
+  double give_back(const Vector& da, double loss);
   /// Kinetic and strain energy, momentum and total of the state (u, v); collective.
   void measure_state(const Vector& u, const Vector& v);
 
@@ -97,6 +114,7 @@ class DynamicProblem : public NonlinearProblem {
   Teuchos::RCP<Vector> work_, work2_;
   Teuchos::RCP<Matrix> mass_free_;  ///< M with the prescribed rows/columns eliminated
   bool stabilized_contact_ = true;
+  bool velocity_update_ = false;
   LinearSolver* solver_ = nullptr;
   double residual_floor_ = 0.0;
   EnergyBalance balance_;
