@@ -33,6 +33,22 @@ DynamicProblem::DynamicProblem(MechanicsProblem& problem, int dimension,
   }
   mass_->apply(g, *f_gravity_);
   free_.assign(num_owned_u_, 1);
+  // Bodies: the element blocks (the same list, in mesh order, on every rank).
+  const SolidProblem& solid = problem_.solid();
+  body_.assign(num_owned_u_, -1);
+  num_bodies_ = int(solid.local_blocks().size());
+  for (int k = 0; k < num_bodies_; ++k) {
+    const LocalBlock& block = solid.local_blocks()[k];
+    for (std::size_t e = 0; e < block.nodes.extent(0); ++e)
+      for (int a = 0; a < block.nodes_per_element; ++a) {
+        const int c = block.nodes(e, a);
+        if (c >= solid.num_owned_nodes()) continue;
+        for (int d = 0; d < dim_; ++d) {
+          const LO i = u_map->getLocalElement(GO(solid.column_node(c)) * dim_ + d);
+          if (i >= 0) body_[i] = k;
+        }
+      }
+  }
 }
 
 void DynamicProblem::acceleration_of(const Vector& u, Vector& a_next) const {
@@ -164,16 +180,47 @@ void DynamicProblem::start(Vector& x0, LinearSolver& linear) {
   measure_state(*u_, *v_);
 }
 
-double DynamicProblem::give_back(const Vector& da, double loss) {
-  // ½ s² wᵀMw + s vᵀMw = loss with w = −da: a s² + b s − loss = 0, a > 0, loss > 0, so one
-  // root is positive (the jump along the impulse: the contact opens, as after an elastic
-  // impact); the stable form of that root.
-  mass_->apply(da, *work_);
-  const double a = 0.5 * da.dot(*work_), b = -v_->dot(*work_);  // collective
+double DynamicProblem::give_back(const Vector& f_contact, double loss) {
+  // Per body: the resultant F_b of f_c, the mass m_b = Σ (M 1) over its x dofs, and whether
+  // it has a prescribed dof; summed over the ranks.
+  const int stride = dim_ + 2;
+  std::vector<double> local(std::size_t(num_bodies_) * stride, 0.0), sums(local.size(), 0.0);
+  work2_->putScalar(1.0);
+  mass_->apply(*work2_, *work_);
+  const auto& u_map = *mass_->getRowMap();
+  {
+    const auto f = f_contact.getLocalViewHost(Tpetra::Access::ReadOnly);
+    const auto m1 = work_->getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (int i = 0; i < num_owned_u_; ++i) {
+      if (body_[i] < 0) continue;
+      double* row = &local[std::size_t(body_[i]) * stride];
+      const int d = int(u_map.getGlobalElement(i) % dim_);
+      row[d] += f(i, 0);
+      if (d == 0) row[dim_] += m1(i, 0);
+      if (!free_[i]) row[dim_ + 1] = 1.0;
+    }
+  }
+  Teuchos::reduceAll(*u_map.getComm(), Teuchos::REDUCE_SUM, int(local.size()), local.data(),
+                     sums.data());
+  {
+    auto w = work2_->getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (int i = 0; i < num_owned_u_; ++i) {
+      w(i, 0) = 0.0;
+      if (body_[i] < 0) continue;
+      const double* row = &sums[std::size_t(body_[i]) * stride];
+      if (row[dim_ + 1] > 0.0 || !(row[dim_] > 0.0)) continue;  // held, or massless
+      w(i, 0) = -row[u_map.getGlobalElement(i) % dim_] / row[dim_];
+    }
+  }
+  // ½ s² wᵀMw + s vᵀMw = loss: a s² + b s − loss = 0 with a > 0, loss > 0, so one root is
+  // positive (the jump along the impulse: the contact opens, as after an elastic impact);
+  // the stable form of that root.
+  mass_->apply(*work2_, *work_);
+  const double a = 0.5 * work2_->dot(*work_), b = v_->dot(*work_);  // collective
   if (!(a > 0.0)) return 0.0;
   const double root = std::sqrt(b * b + 4.0 * a * loss);
   const double s = b <= 0.0 ? (root - b) / (2.0 * a) : 2.0 * loss / (root + b);
-  v_->update(-s, da, 1.0);
+  v_->update(s, *work2_, 1.0);
   return loss;
 }
 
@@ -245,7 +292,7 @@ void DynamicProblem::commit_step(const Vector& x) {
     if (rhs.normInf() > 0.0) {
       solver_->solve(mass_free_, rhs, da);
       a_->update(1.0, da, 1.0);
-      if (closing_loss > 0.0) balance_.contact_work += give_back(da, closing_loss);
+      if (closing_loss > 0.0) balance_.contact_work += give_back(rhs, closing_loss);
     }
     f_static_n_->update(-1.0, f_contact, 1.0);
     f_contact_n_->putScalar(0.0);

@@ -29,13 +29,17 @@
 // normals that closes the step's energy balance). The closing steps' loss ½ λ g̃_n is an
 // artefact of the time discretisation of an impact that lasts less than a step (an elastic
 // impact loses nothing); it is given back to the bodies as a velocity jump along the step's
-// contact impulse, v_{n+1} ← v_{n+1} + s w with w = −M⁻¹ f_c,n+1 (the direction in which the
-// contact forces of the step changed the velocities) and s > 0 the root of
+// contact impulse acting on each body as a whole, v_{n+1} ← v_{n+1} + s w, s > 0 the root of
 //   ½ s² wᵀMw + s v_{n+1}ᵀMw = L,   L = −Σ_{j closing} e_j ≥ 0
-// (ContactStepEnergy: the contact energy of the slave nodes that closed in this step). The
-// impact then acts with a restitution of one; contacts that stay closed are left alone (their
-// energy term is zero for a fixed geometry, and of either sign and second order in Δu on a
-// curved one).
+// (ContactStepEnergy: the contact energy of the slave nodes that closed in this step). w is
+// the rigid translation each body (element block without prescribed dofs) would get from
+// the contact impulse, w = −F_b/m_b on the nodes of body b (F_b the resultant of f_c,n+1 on
+// it, m_b its mass); bodies with prescribed dofs get none. Measured on the cylinder in a
+// ring (inputs/ring_pendulum/README.md): the jump along the impulse itself, w = −M⁻¹ f_c, puts
+// the energy into vibrations of the slave body near the contact node instead of its motion.
+// The impact then acts with a restitution of one, and momentum is kept (two free bodies get
+// opposite impulses); contacts that stay closed are left alone (their energy term is zero
+// for a fixed geometry, and of either sign on a curved, faceted one).
 // Jacobian: the u rows of J_s scaled by (1 − αf), plus (1 − αm)/(β Δt²) M on the free dofs.
 // Prescribed dofs stay eliminated (MechanicsProblem); g is the gravity acceleration.
 
@@ -93,9 +97,10 @@ class DynamicProblem : public NonlinearProblem {
   /// Full static u-row force at the last evaluation: F_s on free rows, the reaction on
   /// prescribed rows (MechanicsProblem zeroes those rows in F).
   void static_force(Vector& out) const;
-  /// The velocity jump of the velocity update along w = −M⁻¹ f_c (da = M⁻¹ f_c on the free
-  /// dofs) that gives the bodies back `loss`; returns the energy given back.
-  double give_back(const Vector& da, double loss);
+  /// The velocity jump of the velocity update (file comment) for the contact force f_c on
+  /// the free dofs (0 elsewhere) that gives the bodies back `loss`; returns the energy given
+  /// back. Collective.
+  double give_back(const Vector& f_contact, double loss);
   /// Kinetic and strain energy, momentum and total of the state (u, v); collective.
   void measure_state(const Vector& u, const Vector& v);
 
@@ -105,7 +110,9 @@ class DynamicProblem : public NonlinearProblem {
   double t_ = 0.0, t_next_ = 0.0, dt_ = 0.0;
   int dim_ = 2;
   int num_owned_u_ = 0;
-  std::vector<char> free_;           ///< per owned u dof, at the current step
+  std::vector<char> free_;  ///< per owned u dof, at the current step
+  std::vector<int> body_;   ///< per owned u dof: its element block (−1: none)
+  int num_bodies_ = 0;
   Teuchos::RCP<Vector> u_, v_, a_;   ///< state at t_n (owned u map)
   Teuchos::RCP<Vector> f_static_n_;  ///< static u-row force at t_n (static_force)
   Teuchos::RCP<Vector> f_ext_n_, f_contact_n_;
