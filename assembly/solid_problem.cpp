@@ -341,6 +341,42 @@ double SolidProblem::round_off_estimate() const {
   return std::sqrt(sum);
 }
 
+double SolidProblem::stored_energy(const Vector& u) const {
+  Vector u_column(column_map_);
+  u_column.doImport(u, *importer_, Tpetra::INSERT);
+  const auto u_view =
+      Kokkos::subview(u_column.getLocalViewHost(Tpetra::Access::ReadOnly), Kokkos::ALL(), 0);
+  double local = 0.0;
+  for (const auto& block : blocks_) {
+    for (std::size_t e = 0; e < block.nodes.extent(0); ++e) {
+      if (!block.owned(e)) continue;
+      double X[max_element_dofs], ue[max_element_dofs], fe[max_element_dofs];
+      const int n = block.nodes_per_element * dim_;
+      for (int a = 0; a < block.nodes_per_element; ++a) {
+        for (int d = 0; d < dim_; ++d) {
+          X[a * dim_ + d] = column_coordinates_(block.nodes(e, a), d);
+          ue[a * dim_ + d] = u_view(block.nodes(e, a) * dim_ + d);
+        }
+      }
+      if (block.finite_strain) {
+        // W of a state assemble() accepted: no collapsed element (the status is then ok).
+        double W = 0.0;
+        if (total_lagrangian_element<double>(block.topology, dim_, X, ue, block.law,
+                                             block.constants, fe, &W) == ElementStatus::ok)
+          local += W;
+      } else {
+        linear_elastic_element<double>(block.topology, dim_, X, ue, block.constants, fe, nullptr);
+        double W = 0.0;
+        for (int k = 0; k < n; ++k) W += ue[k] * fe[k];
+        local += 0.5 * W;
+      }
+    }
+  }
+  double sum = 0.0;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, local, Teuchos::outArg(sum));
+  return sum;
+}
+
 void SolidProblem::external_force(double t, Vector& f_ext) const {
   f_ext.putScalar(0.0);
   auto f = Kokkos::subview(f_ext.getLocalViewHost(Tpetra::Access::ReadWrite), Kokkos::ALL(), 0);

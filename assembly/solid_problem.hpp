@@ -70,6 +70,12 @@ class SolidProblem {
   /// finite (sqrt of Σ_rows (ε Σ_k |K_rk u_k|)²), 0 under small strain. Collective.
   double round_off_estimate() const;
 
+  /// Stored elastic energy Π_int(u) = ∫ W dV of the whole mesh, summed over the ranks
+  /// (collective; each element counted once, by its owner): under strain: finite the
+  /// hyperelastic law's W(F) at the element's quadrature points (total_lagrangian_element);
+  /// under small strain ½ u_eᵀ K_e u_e = ½ ∫ ε:C:ε dV, exact for the linear element.
+  double stored_energy(const Vector& u) const;
+
   /// Consistent nodal forces of the pressure/traction loads at time t (owned rows).
   void external_force(double t, Vector& f_ext) const;
 

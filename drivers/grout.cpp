@@ -116,8 +116,8 @@ void run(const std::string& input_path, const std::string& output_dir,
     DynamicProblem dynamic(problem, mesh.dimension,
                            assemble_mass_matrix(solid, input.dynamics.mass == MassKind::lumped),
                            time_integrator_from(input.dynamics), input.gravity,
-                           *initial_velocity(solid, mesh, input),
-                           input.dynamics.stabilized_contact);
+                           *initial_velocity(solid, mesh, input), input.dynamics.stabilized_contact,
+                           input.dynamics.velocity_update);
     LinearSolver mass_solver(Teuchos::ParameterList(), input.file + ": mass matrix");
     solve_time_steps(dynamic, linear, mass_solver, newton, stepping, write_step);
   } else {

@@ -97,6 +97,7 @@ struct DynamicsInput {
   double beta = 0.25, gamma = 0.5;  ///< newmark
   MassKind mass = MassKind::consistent;
   bool stabilized_contact = true;  ///< contact_treatment: stabilized (true) or standard
+  bool velocity_update = false;    ///< contact_treatment: velocity_update (stabilized, plus)
 };
 
 /// An initial velocity field on the nodes of one element block (`grout/initial_velocity`).

@@ -44,7 +44,8 @@ void read_dynamics(const Section& grout, Input& input) {
        Key::number("beta").above(0).defaults("0.25"),
        Key::number("gamma").at_least(0.5).defaults("0.5"),
        Key::choice("mass", {"consistent", "lumped"}, "mass matrix").defaults("consistent"),
-       Key::choice("contact_treatment", {"stabilized", "standard"}, "contact treatment")
+       Key::choice("contact_treatment", {"stabilized", "standard", "velocity_update"},
+                   "contact treatment")
            .defaults("stabilized")});
   DynamicsInput& dyn = input.dynamics;
   dyn.enabled = true;
@@ -68,7 +69,9 @@ void read_dynamics(const Section& grout, Input& input) {
   if (dyn.beta < 0.25 * (dyn.gamma + 0.5) * (dyn.gamma + 0.5) * (1.0 - 1e-12))
     d.fail("beta", "must be >= (gamma + 1/2)^2 / 4 for unconditional stability");
   dyn.mass = d.string("mass") == "lumped" ? MassKind::lumped : MassKind::consistent;
-  dyn.stabilized_contact = d.string("contact_treatment") == "stabilized";
+  const std::string treatment = d.string("contact_treatment");
+  dyn.stabilized_contact = treatment != "standard";
+  dyn.velocity_update = treatment == "velocity_update";
   for (const MaterialInput& m : input.materials) {
     if (!(m.density > 0.0)) {
       throw InputError(input.file + ": grout/materials/" + m.name +

@@ -12,12 +12,13 @@ namespace grout {
 DynamicProblem::DynamicProblem(MechanicsProblem& problem, int dimension,
                                Teuchos::RCP<const Matrix> mass, const TimeIntegrator& integrator,
                                const std::array<double, 3>& gravity, const Vector& v0,
-                               bool stabilized_contact)
+                               bool stabilized_contact, bool velocity_update)
     : problem_(problem),
       mass_(std::move(mass)),
       integrator_(integrator),
       dim_(dimension),
-      stabilized_contact_(stabilized_contact) {
+      stabilized_contact_(stabilized_contact),
+      velocity_update_(stabilized_contact && velocity_update) {
   const auto u_map = mass_->getRowMap();
   num_owned_u_ = int(u_map->getNodeNumElements());
   auto make = [&] { return Teuchos::rcp(new Vector(u_map)); };
@@ -32,6 +33,22 @@ DynamicProblem::DynamicProblem(MechanicsProblem& problem, int dimension,
   }
   mass_->apply(g, *f_gravity_);
   free_.assign(num_owned_u_, 1);
+  // Bodies: the element blocks (the same list, in mesh order, on every rank).
+  const SolidProblem& solid = problem_.solid();
+  body_.assign(num_owned_u_, -1);
+  num_bodies_ = int(solid.local_blocks().size());
+  for (int k = 0; k < num_bodies_; ++k) {
+    const LocalBlock& block = solid.local_blocks()[k];
+    for (std::size_t e = 0; e < block.nodes.extent(0); ++e)
+      for (int a = 0; a < block.nodes_per_element; ++a) {
+        const int c = block.nodes(e, a);
+        if (c >= solid.num_owned_nodes()) continue;
+        for (int d = 0; d < dim_; ++d) {
+          const LO i = u_map->getLocalElement(GO(solid.column_node(c)) * dim_ + d);
+          if (i >= 0) body_[i] = k;
+        }
+      }
+  }
 }
 
 void DynamicProblem::acceleration_of(const Vector& u, Vector& a_next) const {
@@ -163,10 +180,54 @@ void DynamicProblem::start(Vector& x0, LinearSolver& linear) {
   measure_state(*u_, *v_);
 }
 
+double DynamicProblem::give_back(const Vector& f_contact, double loss) {
+  // Per body: the resultant F_b of f_c, the mass m_b = Σ (M 1) over its x dofs, and whether
+  // it has a prescribed dof; summed over the ranks.
+  const int stride = dim_ + 2;
+  std::vector<double> local(std::size_t(num_bodies_) * stride, 0.0), sums(local.size(), 0.0);
+  work2_->putScalar(1.0);
+  mass_->apply(*work2_, *work_);
+  const auto& u_map = *mass_->getRowMap();
+  {
+    const auto f = f_contact.getLocalViewHost(Tpetra::Access::ReadOnly);
+    const auto m1 = work_->getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (int i = 0; i < num_owned_u_; ++i) {
+      if (body_[i] < 0) continue;
+      double* row = &local[std::size_t(body_[i]) * stride];
+      const int d = int(u_map.getGlobalElement(i) % dim_);
+      row[d] += f(i, 0);
+      if (d == 0) row[dim_] += m1(i, 0);
+      if (!free_[i]) row[dim_ + 1] = 1.0;
+    }
+  }
+  Teuchos::reduceAll(*u_map.getComm(), Teuchos::REDUCE_SUM, int(local.size()), local.data(),
+                     sums.data());
+  {
+    auto w = work2_->getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (int i = 0; i < num_owned_u_; ++i) {
+      w(i, 0) = 0.0;
+      if (body_[i] < 0) continue;
+      const double* row = &sums[std::size_t(body_[i]) * stride];
+      if (row[dim_ + 1] > 0.0 || !(row[dim_] > 0.0)) continue;  // held, or massless
+      w(i, 0) = -row[u_map.getGlobalElement(i) % dim_] / row[dim_];
+    }
+  }
+  // ½ s² wᵀMw + s vᵀMw = loss: a s² + b s − loss = 0 with a > 0, loss > 0, so one root is
+  // positive (the jump along the impulse: the contact opens, as after an elastic impact);
+  // the stable form of that root.
+  mass_->apply(*work2_, *work_);
+  const double a = 0.5 * work2_->dot(*work_), b = v_->dot(*work_);  // collective
+  if (!(a > 0.0)) return 0.0;
+  const double root = std::sqrt(b * b + 4.0 * a * loss);
+  const double s = b <= 0.0 ? (root - b) / (2.0 * a) : 2.0 * loss / (root + b);
+  v_->update(s, *work2_, 1.0);
+  return loss;
+}
+
 void DynamicProblem::measure_state(const Vector& u, const Vector& v) {
   mass_->apply(v, *work_);
   balance_.kinetic = 0.5 * v.dot(*work_);
-  balance_.strain = 0.5 * u.dot(problem_.internal_force());
+  balance_.strain = problem_.solid().stored_energy(u);
   balance_.total = balance_.kinetic + balance_.strain - balance_.external_work;
   double p_local[3] = {0.0, 0.0, 0.0};
   {
@@ -219,6 +280,8 @@ void DynamicProblem::commit_step(const Vector& x) {
   if (stabilized_contact_ && problem_.has_contact()) {
     // The contact force acted on this step only: a*_{n+1} = a_{n+1} + M⁻¹ f_c,n+1, and
     // neither it nor f_c,n+1 is carried into the next step (file comment).
+    const double closing_loss =
+        velocity_update_ ? -problem_.contact_step_energy().closing : 0.0;  // collective
     Vector rhs(u_map), da(u_map);
     rhs.assign(f_contact);
     {
@@ -229,6 +292,10 @@ void DynamicProblem::commit_step(const Vector& x) {
     if (rhs.normInf() > 0.0) {
       solver_->solve(mass_free_, rhs, da);
       a_->update(1.0, da, 1.0);
+      // A loss at round-off level (a contact that closes with no gap to close: touching
+      // bodies) is no impact: no jump (it would reverse the bodies' approach).
+      const double scale = balance_.kinetic + balance_.strain;
+      if (closing_loss > 1e-12 * scale) balance_.contact_work += give_back(rhs, closing_loss);
     }
     f_static_n_->update(-1.0, f_contact, 1.0);
     f_contact_n_->putScalar(0.0);

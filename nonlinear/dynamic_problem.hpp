@@ -23,6 +23,23 @@
 // predictor, the idea of the contact-stabilised Newmark method (Deuflhard, Krause & Ertel,
 // IJNME 73 (2008) 1274). A closed contact's multiplier is then the force of its step alone:
 // for the average-acceleration rule twice the mean force over the step.
+//
+// Velocity update (optional, with the stabilised treatment), after Laursen & Love (IJNME 53
+// (2002) 245: an admissible position update followed by a velocity update along the contact
+// normals that closes the step's energy balance). The closing steps' loss ½ λ g̃_n is an
+// artefact of the time discretisation of an impact that lasts less than a step (an elastic
+// impact loses nothing); it is given back to the bodies as a velocity jump along the step's
+// contact impulse acting on each body as a whole, v_{n+1} ← v_{n+1} + s w, s > 0 the root of
+//   ½ s² wᵀMw + s v_{n+1}ᵀMw = L,   L = −Σ_{j closing} e_j ≥ 0
+// (ContactStepEnergy: the contact energy of the slave nodes that closed in this step). w is
+// the rigid translation each body (element block without prescribed dofs) would get from
+// the contact impulse, w = −F_b/m_b on the nodes of body b (F_b the resultant of f_c,n+1 on
+// it, m_b its mass); bodies with prescribed dofs get none. Measured on the cylinder in a
+// ring (inputs/ring_pendulum/README.md): the jump along the impulse itself, w = −M⁻¹ f_c, puts
+// the energy into vibrations of the slave body near the contact node instead of its motion.
+// The impact then acts with a restitution of one, and momentum is kept (two free bodies get
+// opposite impulses); contacts that stay closed are left alone (their energy term is zero
+// for a fixed geometry, and of either sign on a curved, faceted one).
 // Jacobian: the u rows of J_s scaled by (1 − αf), plus (1 − αm)/(β Δt²) M on the free dofs.
 // Prescribed dofs stay eliminated (MechanicsProblem); g is the gravity acceleration.
 
@@ -38,7 +55,7 @@ namespace grout {
 /// Energies and momentum of the state (DynamicProblem::balance): totals over all ranks.
 struct EnergyBalance {
   double kinetic = 0.0;        ///< ½ vᵀ M v
-  double strain = 0.0;         ///< ½ uᵀ f_int(u) (small strain: the stored energy)
+  double strain = 0.0;         ///< stored energy ∫ W dV (SolidProblem::stored_energy)
   double external_work = 0.0;  ///< Σ_steps ½ (f_n + f_{n+1})·Δu: loads, gravity, supports
   double contact_work = 0.0;   ///< Σ_steps ½ (f_c,n + f_c,n+1)·Δu done by the contact forces
   double total = 0.0;          ///< kinetic + strain − external_work
@@ -48,10 +65,11 @@ struct EnergyBalance {
 class DynamicProblem : public NonlinearProblem {
  public:
   /// M on the solid's owned map (assemble_mass_matrix); v0 the initial velocity there.
-  /// stabilized_contact: contact forces act on their own step only (file comment).
+  /// stabilized_contact: contact forces act on their own step only; velocity_update: and the
+  /// closing steps' loss is given back as a velocity jump (file comment).
   DynamicProblem(MechanicsProblem& problem, int dimension, Teuchos::RCP<const Matrix> mass,
                  const TimeIntegrator& integrator, const std::array<double, 3>& gravity,
-                 const Vector& v0, bool stabilized_contact = true);
+                 const Vector& v0, bool stabilized_contact = true, bool velocity_update = false);
 
   MechanicsProblem& quasi_static() { return problem_; }
   Teuchos::RCP<const Map> map() const override { return problem_.map(); }
@@ -79,6 +97,10 @@ class DynamicProblem : public NonlinearProblem {
   /// Full static u-row force at the last evaluation: F_s on free rows, the reaction on
   /// prescribed rows (MechanicsProblem zeroes those rows in F).
   void static_force(Vector& out) const;
+  /// The velocity jump of the velocity update (file comment) for the contact force f_c on
+  /// the free dofs (0 elsewhere) that gives the bodies back `loss`; returns the energy given
+  /// back. Collective.
+  double give_back(const Vector& f_contact, double loss);
   /// Kinetic and strain energy, momentum and total of the state (u, v); collective.
   void measure_state(const Vector& u, const Vector& v);
 
@@ -88,7 +110,9 @@ class DynamicProblem : public NonlinearProblem {
   double t_ = 0.0, t_next_ = 0.0, dt_ = 0.0;
   int dim_ = 2;
   int num_owned_u_ = 0;
-  std::vector<char> free_;           ///< per owned u dof, at the current step
+  std::vector<char> free_;  ///< per owned u dof, at the current step
+  std::vector<int> body_;   ///< per owned u dof: its element block (−1: none)
+  int num_bodies_ = 0;
   Teuchos::RCP<Vector> u_, v_, a_;   ///< state at t_n (owned u map)
   Teuchos::RCP<Vector> f_static_n_;  ///< static u-row force at t_n (static_force)
   Teuchos::RCP<Vector> f_ext_n_, f_contact_n_;
@@ -97,6 +121,7 @@ class DynamicProblem : public NonlinearProblem {
   Teuchos::RCP<Vector> work_, work2_;
   Teuchos::RCP<Matrix> mass_free_;  ///< M with the prescribed rows/columns eliminated
   bool stabilized_contact_ = true;
+  bool velocity_update_ = false;
   LinearSolver* solver_ = nullptr;
   double residual_floor_ = 0.0;
   EnergyBalance balance_;

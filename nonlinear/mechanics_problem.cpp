@@ -40,6 +40,9 @@ struct MechanicsProblem::Interface {
   std::vector<double> pressure, gap;
   std::vector<std::array<double, 3>> lambda;
   std::vector<char> active, previous_active;
+  std::vector<char> committed_active;  ///< active at the last converged state (commit_step)
+  std::vector<double> step_energy;     ///< e_j of ContactStepEnergy at the last evaluation
+  std::vector<char> closing;           ///< active at the last evaluation, not committed_active
   std::vector<std::array<double, 3>> slip_increment;           ///< ū_k of the step
   std::vector<std::array<double, 3>> slip_accumulated;         ///< Σ ū_k τ_k (vector)
   std::vector<std::array<std::array<double, 3>, 2>> tangents;  ///< τ_k
@@ -144,6 +147,9 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
     c->lambda.assign(n_owned, {0.0, 0.0, 0.0});
     c->active.assign(n_owned, 0);
     c->previous_active.assign(n_owned, 0);
+    c->committed_active.assign(n_owned, 0);
+    c->step_energy.assign(n_owned, 0.0);
+    c->closing.assign(n_owned, 0);
     c->slip_increment.assign(n_owned, {0.0, 0.0, 0.0});
     c->slip_accumulated.assign(n_owned, {0.0, 0.0, 0.0});
     c->tangents.assign(n_owned, {});
@@ -549,6 +555,17 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
     c.previous_active[q] = c.active[q];
     c.active[q] = 0;
     c.pressure[q] = c.gap[q] = 0.0;
+    {  // e_j = −½ λ_j·(D Δx_j − Σ_l M_jl Δx_l), Δ since the last converged state
+      double w = 0.0;
+      for (int a = 0; a < dim; ++a) {
+        double wa = D * (position(node, a) - old_position(node, a));
+        for (auto it = m_begin; it != m_end; ++it)
+          wa -= it->second.value *
+                (position(it->first.second, a) - old_position(it->first.second, a));
+        w += c.lambda[q][a] * wa;
+      }
+      c.step_energy[q] = -0.5 * w;
+    }
     if (D <= D_tol) {  // no master facing this node: λ_j = 0
       for (int a = 0; a < dim; ++a) {
         add_F_(c.lambda_gid(q, a), c.lambda[q][a]);
@@ -726,6 +743,7 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
     }
   }
   for (int q = 0; q < n_owned; ++q) {
+    c.closing[q] = c.active[q] && !c.committed_active[q];
     active_size_ += c.active[q] != 0;
     active_changes_ += c.active[q] != c.previous_active[q];
   }
@@ -836,8 +854,19 @@ std::vector<GlobalIndex> MechanicsProblem::slave_nodes() const {
   return nodes;
 }
 
+ContactStepEnergy MechanicsProblem::contact_step_energy() const {
+  double local[2] = {0.0, 0.0}, global[2] = {0.0, 0.0};
+  for (const auto& c : interfaces_)
+    for (std::size_t q = 0; q < c->owned.size(); ++q)
+      local[c->closing[q] ? 0 : 1] += c->step_energy[q];
+  if (!interfaces_.empty())
+    Teuchos::reduceAll(*map_->getComm(), Teuchos::REDUCE_SUM, 2, local, global);
+  return {global[0], global[1]};
+}
+
 void MechanicsProblem::commit_step() {
   for (auto& c : interfaces_) {
+    c->committed_active = c->active;
     for (std::size_t q = 0; q < c->slip_accumulated.size(); ++q)
       for (int k = 0; k < dim_ - 1; ++k)
         for (int a = 0; a < dim_; ++a)

@@ -49,6 +49,17 @@ struct ContactFields {
   int active_nodes = 0;
 };
 
+/// The energy the contact forces of the last residual evaluation put into the bodies over the
+/// step from the last converged state (commit_step) to that evaluation (MechanicsProblem::
+/// contact_step_energy): per slave node j, e_j = −½ λ_j·(D_jj Δx_j − Σ_l M_jl Δx_l) with the
+/// evaluation's D, M (Σ_j e_j = −½ f_c·Δu, the contact term of a step's energy balance under
+/// the stabilised dynamics of DynamicProblem), summed over the nodes that close in the step
+/// (active now, not at the last converged state) and over the others.
+struct ContactStepEnergy {
+  double closing = 0.0;
+  double other = 0.0;
+};
+
 class MechanicsProblem : public NonlinearProblem {
  public:
   MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, const Input& input);
@@ -76,6 +87,8 @@ class MechanicsProblem : public NonlinearProblem {
   void displacement(const Vector& x, Vector& u) const;
   /// f_int − f_ext + f_c on the prescribed dofs at the last residual evaluation, 0 elsewhere.
   const Vector& reactions() const { return *reaction_; }
+  /// The solid (dof maps, element assembly, stored energy).
+  const SolidProblem& solid() const { return solid_; }
   /// f_int and f_ext (owned rows) at the last residual evaluation / begin_step.
   const Vector& internal_force() const { return *f_int_; }
   const Vector& external_force() const { return *f_ext_; }
@@ -86,6 +99,8 @@ class MechanicsProblem : public NonlinearProblem {
   /// Contact results at the last residual evaluation (empty without contact). Collective.
   ContactFields contact_fields() const;
   bool has_contact() const { return !interfaces_.empty(); }
+  /// ContactStepEnergy of the last residual evaluation, summed over the ranks. Collective.
+  ContactStepEnergy contact_step_energy() const;
   /// (λ dof, slave displacement dof) pairs of every interface, all ranks' pairs in λ order,
   /// for the condensed solve (LinearSolver::set_multiplier_pairing). Collective.
   std::vector<std::pair<GO, GO>> multiplier_pairing() const;

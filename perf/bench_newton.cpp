@@ -36,22 +36,43 @@
 //   GROUT_BENCH_NEWTON_KLU2_ALL=1     amesos2 (KLU2) at every size (default: 2D up to 1e5
 //                                     dofs, 3D n = 14 only: 3D n = 20 takes ~160 s per solve)
 // belos runs with condense_multipliers: true and its defaults.
+//
+// Benchmarks step/<2d|3d>/<quasi_static|dynamic>/<n>: whole steps on the same meshes and
+// contact, with the linear solver `type: auto` (KLU2 in 2D, MUMPS in 3D at these sizes) and
+// ρ = 1. The upper top moves down by δ = 0.01 in 4 equal steps, prescribed u_y = −δ t/t_end
+// (upper top) with everything else as above:
+//   quasi_static  4 load steps to t_end = 1 (solve_load_steps' work: Newton to convergence,
+//                 the converged residual, commit);
+//   dynamic       4 time steps of Newmark (average acceleration, consistent mass, stabilised
+//                 contact) to t_end = 4 Δt with Δt = h/c (Courant number 1 on the element size
+//                 h = 1/n, c = √(E/ρ)): solve_time_steps' work per step (Newton, the converged
+//                 residual, the commit with its mass solve for the stabilised contact and the
+//                 energies), after the start (mass matrix, initial acceleration) which is
+//                 not timed.
+// Counters: step_s, step_cpu_s (mean wall / process CPU time per step, max over ranks),
+// newton_per_step, iteration_s (step_s / newton_per_step), dofs; the dynamic case adds
+// step_ratio and iteration_ratio against the quasi-static case of the same size (run first).
 
 #include <sys/resource.h>
 
 #include <Teuchos_TimeMonitor.hpp>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "assembly/mass_matrix.hpp"
 #include "assembly/solid_problem.hpp"
 #include "io/contact_meshes.hpp"
+#include "nonlinear/dynamic_problem.hpp"
 #include "nonlinear/linear_solver.hpp"
+#include "nonlinear/load_stepping.hpp"
 #include "nonlinear/mechanics_problem.hpp"
 #include "perf/bench_main.hpp"
 
@@ -291,6 +312,110 @@ void newton_benchmark(benchmark::State& state, int dim, std::string solver_type)
   state.counters["setup_s"] = c.setup_seconds;
 }
 
+// Whole steps, quasi-static or dynamic (file comment).
+struct StepCost {
+  double step_s = 0.0, step_cpu_s = 0.0, newton_per_step = 0.0;
+};
+
+void step_benchmark(benchmark::State& state, int dim, bool dynamic) {
+  static std::map<std::pair<int, int>, StepCost> quasi_static_cost;
+  const int n = int(state.range(0));
+  constexpr int steps = 4;
+  StackedBlocks spec;
+  spec.nx_lower = spec.ny_lower = n;
+  spec.nx_upper = spec.ny_upper = n + 1;
+  if (dim == 3) {
+    spec.nz_lower = spec.nz_upper = n / 2;
+    spec.height_lower = spec.height_upper = 0.5;
+  }
+  const Mesh mesh = dim == 2 ? stacked_blocks_2d(spec) : stacked_blocks_3d(spec);
+  Input input = newton_input(dim);
+  const double c = std::sqrt(200.0 / 1.0), dt = 1.0 / n / c;
+  const double t_end = dynamic ? steps * dt : 1.0;
+  for (auto& m : input.materials) m.density = 1.0;
+  for (auto& d : input.dirichlet)
+    if (d.node_set == "upper_top" && d.component == dim - 1) {
+      std::ostringstream e;
+      e.precision(17);
+      e << "-0.01*t/" << t_end;
+      d.value = Expression(e.str(), "bench_newton: " + d.name);
+    }
+  if (dynamic) input.dynamics.enabled = true;
+  const auto comm = Tpetra::getDefaultComm();
+  SolidProblem solid(mesh, input, comm);
+  MechanicsProblem problem(solid, mesh, input);
+  NewtonOptions newton;
+  newton.verbose = false;
+  SteppingOptions stepping;
+  stepping.end_time = t_end;
+  stepping.steps = steps;
+  LinearSolver linear(Teuchos::ParameterList(), "bench_newton");
+  linear.set_multiplier_pairing(problem.multiplier_pairing(), dim);
+  LinearSolver mass_solver(Teuchos::ParameterList(), "bench_newton: mass");
+  std::unique_ptr<DynamicProblem> dyn;
+  if (dynamic) {
+    Vector v0(solid.owned_map());
+    dyn = std::make_unique<DynamicProblem>(problem, dim, assemble_mass_matrix(solid, false),
+                                           TimeIntegrator::of(TimeScheme::newmark, 1.0),
+                                           std::array<double, 3>{0.0, 0.0, 0.0}, v0, true);
+    Vector x0(dyn->map());
+    dyn->start(x0, mass_solver);
+  }
+  NonlinearProblem& stepped = dynamic ? static_cast<NonlinearProblem&>(*dyn) : problem;
+  Vector F(stepped.map());
+  int newton_iterations = 0;
+  double cpu = 0.0, wall = 0.0;
+  bool ok = true;
+  std::string error;
+  for (auto _ : state) {
+    wall = timed(
+        [&] {
+          try {
+            march_steps(
+                stepped, linear, newton, stepping,
+                [&](double t, Vector& x) {
+                  if (dynamic)
+                    dyn->begin_step(t, x);
+                  else
+                    problem.begin_step(t, x);
+                },
+                [&](ConvergedStep& step) {
+                  newton_iterations += step.newton->iterations;
+                  stepped.residual(*step.state, F);
+                  problem.commit_step();
+                  if (dynamic) dyn->commit_step(*step.state);
+                });
+          } catch (const std::exception& e) {
+            ok = false;
+            error = e.what();
+          }
+        },
+        &cpu);
+    state.SetIterationTime(wall);
+  }
+  if (!ok) {
+    state.SkipWithError(("failed: " + error).c_str());
+    return;
+  }
+  StepCost cost;
+  cost.step_s = wall / steps;
+  cost.step_cpu_s = cpu / steps;
+  cost.newton_per_step = double(newton_iterations) / steps;
+  state.counters["dofs"] = double(problem.map()->getGlobalNumElements());
+  state.counters["step_s"] = cost.step_s;
+  state.counters["step_cpu_s"] = cost.step_cpu_s;
+  state.counters["newton_per_step"] = cost.newton_per_step;
+  state.counters["iteration_s"] = cost.step_s / cost.newton_per_step;
+  if (!dynamic) {
+    quasi_static_cost[{dim, n}] = cost;
+  } else if (quasi_static_cost.count({dim, n})) {
+    const StepCost& q = quasi_static_cost[{dim, n}];
+    state.counters["step_ratio"] = cost.step_s / q.step_s;
+    state.counters["iteration_ratio"] =
+        (cost.step_s / cost.newton_per_step) / (q.step_s / q.newton_per_step);
+  }
+}
+
 bool env_flag(const char* name) {
   const char* v = std::getenv(name);
   return v && std::string(v) != "0" && !std::string(v).empty();
@@ -304,6 +429,17 @@ void register_benchmarks() {
     for (std::string s; std::getline(list, s, ',');)
       if (!s.empty()) solvers.push_back(s);
   }
+  for (const int dim : {2, 3})
+    for (const int n : dim == 2 ? std::vector<int>{50, 160} : std::vector<int>{14, 20})
+      for (const bool dynamic : {false, true}) {
+        const std::string name = std::string("step/") + std::to_string(dim) + "d/" +
+                                 (dynamic ? "dynamic" : "quasi_static");
+        benchmark::RegisterBenchmark(name.c_str(), step_benchmark, dim, dynamic)
+            ->Arg(n)
+            ->Iterations(1)
+            ->UseManualTime()
+            ->Unit(benchmark::kMillisecond);
+      }
   const bool large = env_flag("GROUT_BENCH_NEWTON_LARGE");
   const bool klu2_all = env_flag("GROUT_BENCH_NEWTON_KLU2_ALL");
   // dofs ≈ 2 (n+1)² · 2 (2D), 2 (n+1)² (n/2+1) · 3 (3D), plus the multipliers.

@@ -577,6 +577,17 @@ TEST(InputDynamics, ReadsSchemeGravityAndInitialVelocity) {
   EXPECT_EQ(input.initial_velocity[0].block, "b");
   EXPECT_DOUBLE_EQ(input.initial_velocity[0].components[0](0.0, 2.0, 3.0, 0.0), -3.0);
   EXPECT_FALSE(read_input(write_file("static.yaml", minimal)).dynamics.enabled);
+  EXPECT_FALSE(input.dynamics.velocity_update);
+  const Input updated = read_input(write_file(
+      "velocity_update.yaml",
+      replaced(dynamic_input, "mass: lumped", "mass: lumped, contact_treatment: velocity_update")));
+  EXPECT_TRUE(updated.dynamics.stabilized_contact);
+  EXPECT_TRUE(updated.dynamics.velocity_update);
+  const Input standard = read_input(write_file(
+      "standard.yaml",
+      replaced(dynamic_input, "mass: lumped", "mass: lumped, contact_treatment: standard")));
+  EXPECT_FALSE(standard.dynamics.stabilized_contact);
+  EXPECT_FALSE(standard.dynamics.velocity_update);
 }
 
 TEST(InputDynamics, ErrorsNameTheKey) {

@@ -1,0 +1,283 @@
+"""Cylinder in a ring (benchmark #13, plane strain) against the rigid frictionless pendulum.
+
+Usage: check.py STEM [--ring-inner R] [--speed-tolerance TOL] [--single-rank]
+  STEM: the run's output stem (np1/STEM.csv, np1/STEM.e; np2/... for the rank comparison).
+  --ring-inner: the ring's inner radius (0.9; 0.85 for Kratos' 3D mesh, ring_3d.yaml).
+  --speed-tolerance: on the speed along the path and v_max (default 0.01).
+
+Reference. The soft cylinder (r = 0.2) slides without friction inside the stiff ring (inner
+radius R = 0.9), released at rest with its centre level with the ring centre, h = 0.7 above
+its lowest position. Frictionless contact forces act along the contact normal, which passes
+through the centre of the cylinder: no torque, so the cylinder does not rotate, and its
+centre moves as a point mass on a circle of radius L = R - r = 0.7 (a simple pendulum),
+swinging through +-90 degrees. Energy conservation (kinetic energy of translation only):
+  v_max = sqrt(2 g h) = sqrt(2 * 9.81 * 0.7) = 3.706 m/s at the bottom;
+the period of a pendulum of amplitude theta0 = 90 degrees (e.g. Landau & Lifshitz,
+Mechanics, section 11, problem 1):
+  T = 4 sqrt(L / g) K(k),  k = sin(theta0 / 2),  K the complete elliptic integral of the
+  first kind: T = 1.9811 s; the centre passes the bottom (x = 0) at T/4, 3T/4, 5T/4, ...
+The release 0.001 inside the ring adds a free fall of 0.037 m along the vertical tangent,
+which the pendulum itself follows to 1e-4 s. The elastic energy of the cylinder and the ring
+is below 1e-4 of m g h (Hertz indentation of tens of micrometres).
+
+Checked (tolerances: what the reference's own approximations allow, well below the errors
+that a lossy treatment gives: a 3 % energy loss shortens the period by 0.6 %):
+  - total energy (kinetic + strain - work of gravity and supports) drifts by less than 1 %
+    of m g h over the run, and contact work stays within 1 % of m g h;
+  - the maximum speed of the centre of mass within 1 % of sqrt(2 g h);
+  - bottom passages: the first at T/4 within 0.5 %; with two or more, the half period from
+    consecutive passages within 0.5 % of T/2;
+  - from the first contact on, the speed of the centre against sqrt(2 g drop) within 1 %
+    (energy conservation along the path, the drop measured on the centre itself), its
+    distance from the ring centre at most L + 1e-3 (the contact holds: the faceted surfaces
+    and the contact compliance account for a few 1e-4) and at least L - 0.01 (with the
+    velocity update an impact has a restitution of one: the cylinder bounces along the track
+    by a few millimetres, measured and printed);
+  - the rotation of the cylinder (best-fit rigid rotation of its nodes about the centre of
+    mass, from the displacement field) below 1e-3 rad at every step (rolling would turn it by
+    L/r * 90 degrees = 5.5 rad per quarter swing);
+  - 1 and 2 ranks give the same displacements, velocities and energies to 1e-8.
+Figures: STEM_energy.png (energy history), STEM_trajectory.png (centre angle against the
+pendulum, and the path of the centre).
+"""
+import argparse
+import csv
+import sys
+
+import numpy as np
+from scipy.special import ellipk
+
+from grout_results import Results, _names, relative_difference
+
+ap = argparse.ArgumentParser()
+ap.add_argument("stem")
+ap.add_argument("--ring-inner", type=float, default=0.9)
+ap.add_argument("--speed-tolerance", type=float, default=0.01,
+                help="on the speed along the path and on v_max (relative)")
+ap.add_argument("--single-rank", action="store_true", help="no np2 run to compare with")
+a = ap.parse_args()
+g, R_in, r_cyl, rho_cyl = 9.81, a.ring_inner, 0.2, 1000.0
+L = R_in - r_cyl
+h = L  # released level with the ring centre: the centre drops by L to the bottom
+v_max_exact = np.sqrt(2 * g * h)
+theta0 = np.pi / 2
+T_exact = 4 * np.sqrt(L / g) * ellipk(np.sin(theta0 / 2) ** 2)  # scipy: parameter m = k^2
+
+failures = []
+
+
+def read_csv(path):
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+
+
+def nodal_weights(xy, conn):
+    """Integral of each bilinear (QUAD4) or linear (TRI3) shape function over the block:
+    the nodal masses / rho of both the consistent and the row-sum lumped mass matrix."""
+    w = np.zeros(xy.shape[1])
+    if xy.shape[0] == 3:  # TET4: a quarter of the volume to each node
+        p = xy[:, conn]
+        vol = np.abs(np.einsum("ie,ie->e", np.cross(p[:, :, 1] - p[:, :, 0], p[:, :, 2] - p[:, :, 0],
+                                                    axis=0), p[:, :, 3] - p[:, :, 0])) / 6
+        for a_ in range(4):
+            np.add.at(w, conn[:, a_], vol / 4)
+        return w
+    if conn.shape[1] == 3:
+        p = xy[:, conn]  # [d, e, a]
+        area = 0.5 * np.abs((p[0, :, 1] - p[0, :, 0]) * (p[1, :, 2] - p[1, :, 0])
+                            - (p[0, :, 2] - p[0, :, 0]) * (p[1, :, 1] - p[1, :, 0]))
+        for a_ in range(3):
+            np.add.at(w, conn[:, a_], area / 3)
+        return w
+    gp = np.array([-1, 1]) / np.sqrt(3)
+    for xi in gp:
+        for eta in gp:
+            N = 0.25 * np.array([(1 - xi) * (1 - eta), (1 + xi) * (1 - eta),
+                                 (1 + xi) * (1 + eta), (1 - xi) * (1 + eta)])
+            dxi = 0.25 * np.array([-(1 - eta), 1 - eta, 1 + eta, -(1 + eta)])
+            deta = 0.25 * np.array([-(1 - xi), -(1 + xi), 1 + xi, 1 - xi])
+            x, y = xy[0][conn], xy[1][conn]
+            det = (x @ dxi) * (y @ deta) - (x @ deta) * (y @ dxi)
+            for a_ in range(4):
+                np.add.at(w, conn[:, a_], N[a_] * det)
+    return w
+
+
+s = read_csv("np1/%s.csv" % a.stem)
+t = s["time"]
+res = Results("np1/%s.e" % a.stem)
+blocks = _names(res.ds, "eb_names")
+cyl = blocks.index("cylinder") + 1
+xyz = res.coordinates()
+conn = res.connectivity(cyl)
+nodes = np.unique(conn)
+w = nodal_weights(xyz, conn)[nodes]
+xy = xyz[:2]
+m = rho_cyl * w.sum()
+mgh = m * g * h
+X = xy[:, nodes]
+Xc = (X * w).sum(axis=1) / w.sum()
+times = res.times()
+n_steps = len(times)
+centre = np.zeros((n_steps, 2))
+speed = np.zeros(n_steps)
+rotation = np.zeros(n_steps)
+for k in range(n_steps):
+    u = np.array([res.nodal("displ_x", k)[nodes], res.nodal("displ_y", k)[nodes]])
+    v = np.array([res.nodal("velocity_x", k)[nodes], res.nodal("velocity_y", k)[nodes]])
+    x = X + u
+    xc = (x * w).sum(axis=1) / w.sum()
+    centre[k] = xc
+    speed[k] = np.hypot(*((v * w).sum(axis=1) / w.sum()))
+    rx, ry = X[0] - Xc[0], X[1] - Xc[1]
+    dx, dy = x[0] - xc[0], x[1] - xc[1]
+    rotation[k] = np.arctan2((w * (rx * dy - ry * dx)).sum(), (w * (rx * dx + ry * dy)).sum())
+
+# Energy.
+E = s["total_energy"]
+drift = (E - E[0]) / mgh
+contact = s["contact_work"] / mgh
+print("cylinder mass %.4f kg, m g h = %.3f J (2D: per metre of thickness); %d steps to t = %g"
+      % (m, mgh, len(t), t[-1]))
+print("total energy drift / (m g h): final %+.3e, max gain %.3e, max loss %.3e; contact work "
+      "final %+.3e" % (drift[-1], drift.max(), -drift.min(), contact[-1]))
+if np.abs(drift).max() > 0.01:
+    failures.append("total energy drifts by %.3e of m g h (limit 1 %%)" % np.abs(drift).max())
+if np.abs(contact).max() > 0.01:
+    failures.append("contact work reaches %.3e of m g h (limit 1 %%)" % np.abs(contact).max())
+
+# Maximum speed.
+k_max = int(np.argmax(speed))
+err_v = speed[k_max] / v_max_exact - 1
+if t[-1] > T_exact / 4:
+    print("v_max %.4f m/s at t = %.4f (exact sqrt(2 g h) = %.4f, error %+.2f %%)"
+          % (speed[k_max], times[k_max], v_max_exact, 100 * err_v))
+if t[-1] > T_exact / 4 and abs(err_v) > a.speed_tolerance:
+    failures.append("v_max %.4f, expected %.4f within %g %%"
+                    % (speed[k_max], v_max_exact, 100 * a.speed_tolerance))
+
+# Bottom passages (x of the centre changes sign), linearly interpolated.
+xs = centre[:, 0]
+crossings = [times[k] - xs[k] * (times[k + 1] - times[k]) / (xs[k + 1] - xs[k])
+             for k in range(n_steps - 1) if xs[k] > 0 >= xs[k + 1] or xs[k] < 0 <= xs[k + 1]]
+if crossings:
+    print("bottom passages at %s s (exact %s)" % (
+        ", ".join("%.4f" % c for c in crossings),
+        ", ".join("%.4f" % ((2 * i + 1) * T_exact / 4) for i in range(len(crossings)))))
+if t[-1] > 1.1 * T_exact / 4:
+    if not crossings:
+        failures.append("the cylinder never reaches the bottom")
+    elif abs(crossings[0] / (T_exact / 4) - 1) > 0.005:
+        failures.append("first bottom passage at %.4f s, expected T/4 = %.4f within 0.5 %%"
+                        % (crossings[0], T_exact / 4))
+if len(crossings) >= 2:
+    half = np.diff(crossings)
+    T_measured = 2 * half.mean()
+    print("period from %d half swings: %.4f s (exact %.4f s, error %+.3f %%)"
+          % (len(half), T_measured, T_exact, 100 * (T_measured / T_exact - 1)))
+    worst = np.abs(2 * half / T_exact - 1).max()
+    if worst > 0.005:
+        failures.append("a half swing differs from T/2 = %.4f by %.3f %% (limit 0.5 %%)"
+                        % (T_exact / 2, 100 * worst))
+
+# Along the path: the speed of the centre against energy conservation for a rigid cylinder,
+# v = sqrt(2 g (y_0 - y)), and the distance of the centre from the ring centre against L,
+# from the first contact on (the run starts 0.001 inside; the faceted surfaces and the
+# contact compliance move the centre by a few 1e-4).
+active = s["active_nodes"]
+touched = np.nonzero(active > 0)[0]
+if len(touched):
+    k0 = touched[0]  # the Exodus records are the CSV rows (steps 1, 2, ...)
+    drop = Xc[1] - centre[k0:, 1]  # released at rest from the reference position
+    v_energy = np.sqrt(2 * g * np.maximum(drop, 0.0))
+    fast = v_energy > 0.5
+    err_path = np.abs(speed[k0:][fast] / v_energy[fast] - 1).max() if fast.any() else 0.0
+    radius = np.hypot(centre[k0:, 0], centre[k0:, 1])
+    print("from the first contact (t = %.3f): speed against sqrt(2 g drop) within %.2f %%, "
+          "|centre| - L in [%.2e, %.2e]" % (times[k0], 100 * err_path, (radius - L).min(),
+                                             (radius - L).max()))
+    if err_path > a.speed_tolerance:
+        failures.append("speed differs from sqrt(2 g drop) by %.2f %% (limit %g %%)"
+                        % (100 * err_path, 100 * a.speed_tolerance))
+    if (radius - L).max() > 1e-3:
+        failures.append("the centre goes %.2e beyond r = L: the cylinder enters the ring "
+                        "(limit 1e-3)" % (radius - L).max())
+    if (radius - L).min() < -0.01:
+        failures.append("the centre leaves the track by %.2e (bounces limited to 0.01)"
+                        % -(radius - L).min())
+else:
+    failures.append("no contact at all")
+
+# Rotation.
+print("rotation of the cylinder: max |angle| %.3e rad" % np.abs(rotation).max())
+if np.abs(rotation).max() > 1e-3:
+    failures.append("the cylinder turns by %.3e rad (frictionless: no rotation)"
+                    % np.abs(rotation).max())
+
+# 1 rank against 2 ranks.
+if not a.single_rank:
+    r2 = Results("np2/%s.e" % a.stem)
+    for name in ("displ_x", "displ_y", "velocity_x", "velocity_y"):
+        d = relative_difference(res.nodal(name), r2.nodal(name))
+        if d > 1e-8:
+            failures.append("%s differs between 1 and 2 ranks by %.3e" % (name, d))
+    s2 = read_csv("np2/%s.csv" % a.stem)
+    d = np.abs(s2["total_energy"] - E).max() / mgh
+    if d > 1e-8:
+        failures.append("total energy differs between 1 and 2 ranks by %.3e of m g h" % d)
+
+# Figures.
+import matplotlib.pyplot as plt  # noqa: E402
+
+fig, ax = plt.subplots(figsize=(6.4, 3.8))
+kin, strain = s["kinetic_energy"] / mgh, s["strain_energy"] / mgh
+potential = -s["external_work"] / mgh  # the work of gravity is the loss of potential energy
+ax.plot(t, kin, label="kinetic")
+ax.plot(t, potential + 1, label="potential (m g y) + m g h")
+ax.plot(t, 100 * strain, label="strain x 100")
+ax.plot(t, E / mgh + 1, "k", label="total + m g h")
+ax.axhline(1.0, color="grey", lw=0.5)
+ax.set_xlabel("t [s]")
+ax.set_ylabel("energy / (m g h)")
+ax.set_title("Cylinder in a ring: energy (drift %+.2f %%)" % (100 * drift[-1]))
+ax.legend(loc="lower right", fontsize=8)
+fig.tight_layout()
+fig.savefig("%s_energy.png" % a.stem, dpi=120)
+
+# The pendulum: theta'' = -(g/L) sin theta from theta0 = 90 degrees (RK4, fine steps).
+dt = 1e-4
+n = int(np.ceil(t[-1] / dt)) + 1
+th = np.zeros(n)
+om = np.zeros(n)
+th[0] = theta0
+f = lambda y: np.array([y[1], -g / L * np.sin(y[0])])  # noqa: E731
+y = np.array([theta0, 0.0])
+for i in range(1, n):
+    k1 = f(y)
+    k2 = f(y + 0.5 * dt * k1)
+    k3 = f(y + 0.5 * dt * k2)
+    k4 = f(y + dt * k3)
+    y = y + dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+    th[i], om[i] = y
+t_ref = dt * np.arange(n)
+angle = np.degrees(np.arctan2(centre[:, 0], -centre[:, 1]))
+fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(9, 3.6), gridspec_kw={"width_ratios": [2, 1]})
+ax1.plot(t_ref, np.degrees(th), "k", lw=1, label="pendulum L = 0.7 (exact)")
+ax1.plot(times, angle, "o", ms=2, label="Grout: centre of the cylinder")
+ax1.set_xlabel("t [s]")
+ax1.set_ylabel("angle from the bottom [deg]")
+ax1.legend(loc="lower left", fontsize=8)
+phi = np.linspace(-np.pi, 0, 200)
+ax2.plot(L * np.cos(phi), L * np.sin(phi), "k", lw=1, label="circle r = L")
+ax2.plot(centre[:, 0], centre[:, 1], ".", ms=2, label="centre")
+ax2.set_aspect("equal")
+ax2.set_xlabel("x [m]")
+ax2.set_ylabel("y [m]")
+ax2.legend(loc="upper center", fontsize=7)
+fig.tight_layout()
+fig.savefig("%s_trajectory.png" % a.stem, dpi=120)
+
+for msg in failures:
+    print("FAIL:", msg)
+sys.exit(1 if failures else 0)
