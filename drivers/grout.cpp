@@ -119,6 +119,9 @@ void run(const std::string& input_path, const std::string& output_dir,
                            *initial_velocity(solid, mesh, input), input.dynamics.stabilized_contact,
                            input.dynamics.velocity_update);
     LinearSolver mass_solver(Teuchos::ParameterList(), input.file + ": mass matrix");
+    // The dimension picks `auto`'s solver (MUMPS in 3D); without it a 3D mass matrix went to
+    // KLU2, whose 3D factorisations are 20-80x slower (docs/performance.md).
+    mass_solver.set_coordinates(mesh.coordinates, mesh.dimension);
     solve_time_steps(dynamic, linear, mass_solver, newton, stepping, write_step);
   } else {
     solve_load_steps(problem, linear, newton, stepping, write_step);

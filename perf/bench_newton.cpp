@@ -351,7 +351,9 @@ void step_benchmark(benchmark::State& state, int dim, bool dynamic) {
   stepping.steps = steps;
   LinearSolver linear(Teuchos::ParameterList(), "bench_newton");
   linear.set_multiplier_pairing(problem.multiplier_pairing(), dim);
+  linear.set_coordinates(mesh.coordinates, dim);  // `auto` picks by dimension: MUMPS in 3D
   LinearSolver mass_solver(Teuchos::ParameterList(), "bench_newton: mass");
+  mass_solver.set_coordinates(mesh.coordinates, dim);
   std::unique_ptr<DynamicProblem> dyn;
   if (dynamic) {
     Vector v0(solid.owned_map());
