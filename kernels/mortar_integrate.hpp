@@ -60,12 +60,13 @@ struct MortarPairKernel<2> {
     int n_nodes;
     bool parallel_normals;  ///< n₁ ∥ n₂: η(ξ) is affine, Φ_j N²_l quadratic (2 points exact)
     Scalar xs[2][2], ns[2][2];
-    MortarSlave2D<Scalar> segment;             ///< what the exact pair kernel needs of the slave
-    Scalar A[max_face_nodes][max_face_nodes];  ///< multiplier basis coefficients
+    MortarSlave2D<Scalar> segment;  ///< what the exact pair kernel needs of the slave
+    /// Multiplier basis; its LINE2 coefficients are constants (multiplier_basis.hpp), built
+    /// per pair by the full-D integrate only, not for the dual path.
+    MultiplierBasis basis;
   };
 
-  /// Copies the padded (max_face_nodes × 3) slave arrays and the basis coefficients; degenerate
-  /// unless LINE2.
+  /// Copies the padded (max_face_nodes × 3) slave arrays and the basis; degenerate unless LINE2.
   template <class Scalar>
   KOKKOS_INLINE_FUNCTION static MortarStatus prepare(int n_slave,
                                                      const Scalar xs[max_face_nodes][3],
@@ -73,7 +74,7 @@ struct MortarPairKernel<2> {
                                                      const MortarOptions&, MultiplierBasis basis,
                                                      SlaveFace<Scalar>& slave) {
     slave.n_nodes = n_slave;
-    multiplier_basis_coefficients(basis, 2, n_slave, xs, slave.A);
+    slave.basis = basis;
     for (int k = 0; k < 2; ++k)
       for (int d = 0; d < 2; ++d) slave.xs[k][d] = xs[k][d], slave.ns[k][d] = ns[k][d];
     // Exactly parallel (double only: for a Fad scalar the derivatives of η(ξ) are not affine).
@@ -123,12 +124,19 @@ struct MortarPairKernel<2> {
       return MortarStatus::degenerate;
     }
     const Scalar xm2[2][2] = {{xm[0][0], xm[0][1]}, {xm[1][0], xm[1][1]}};
+    Scalar xs[max_face_nodes][3] = {}, A[max_face_nodes][max_face_nodes];
+    for (int k = 0; k < 2; ++k)
+      for (int d = 0; d < 2; ++d) xs[k][d] = slave.xs[k][d];
+    if (multiplier_basis_coefficients(slave.basis, 2, 2, xs, A) != MortarStatus::ok) {
+      reset_pair_matrices(2, 2, out);
+      return MortarStatus::degenerate;
+    }
     if (options.scheme == MortarIntegration::collocation)
-      return integrate_mortar_matrices_2d_collocation(slave.xs, slave.ns, slave.A, xm2,
+      return integrate_mortar_matrices_2d_collocation(slave.xs, slave.ns, A, xm2,
                                                       options.n_collocation, out);
     // Parallel slave normals: N¹_j N¹_k and Φ_j N²_l are quadratic in ξ, 2 points are exact.
     const int n_gauss = slave.parallel_normals && options.n_gauss > 2 ? 2 : options.n_gauss;
-    return integrate_mortar_matrices_2d(slave.segment, slave.A, xm2, n_gauss, out);
+    return integrate_mortar_matrices_2d(slave.segment, A, xm2, n_gauss, out);
   }
 
   /// LINE2/LINE2 pair from padded (max_face_nodes × 3) arrays; only [0..1][0..1] are read.
