@@ -22,14 +22,12 @@ References and checks:
   the rigid block (ratio 10), the block >= 0.9 with the rigid arc (ratio 1e4), the deformable
   block in between (the share increases with the ratio at the last step);
 - 1 and 2 ranks agree to 1e-8; the Newton order of the last contraction in each step
-  (newton_rates) has median >= 1.5 and minimum >= 1.3.
+  (contact_check.newton_rates) has median >= 1.5 and minimum >= 1.3.
 Writes arc_block_split.png (the block's energy share against d, the three cases).
 
 Usage: check.py [--cases STEM:E_ARC:E_BLOCK ...]
 """
 import argparse
-import csv
-import math
 import os
 import sys
 
@@ -56,33 +54,6 @@ def arch_stiffness(e):
     lowest point: Castigliano, ../double_arch/arch_theory.py."""
     return arch_theory.arch_stiffness([(R - H / 2, R + H / 2, e, NU)])
 
-def newton_rates(path, failures):
-    """Convergence order of Newton's last judged contraction in every step,
-    p = log(|F_k+1| / |F_0|) / log(|F_k| / |F_0|) (2 = quadratic), over iterates with an
-    unchanged active set between 0.1 |F_0| and 10x the step's final (round-off) residual.
-    Required: median p >= 1.5 and every p >= 1.3 (superlinear: where the contact pairs, i.e.
-    the segments, change between iterates the current-geometry linearisation is exact only
-    piecewise). Returns the orders."""
-    rows = list(csv.DictReader(open(path)))
-    attempts = {}
-    for r in rows:
-        attempts.setdefault((int(r["step"]), r["time"]), []).append(r)
-    orders = []
-    for (step, t), hist in attempts.items():
-        f = [float(r["residual"]) for r in hist]
-        changes = [int(r["active_changes"]) for r in hist]
-        f0, floor = f[0], 10 * f[-1]
-        pairs = [k for k in range(1, len(f) - 1) if changes[k] == 0 and changes[k + 1] == 0
-                 and 0.1 * f0 > f[k] > floor and f[k + 1] > floor]
-        if pairs:
-            k = pairs[-1]
-            orders.append(math.log(f[k + 1] / f0) / math.log(f[k] / f0))
-            if orders[-1] < 1.3:
-                failures.append("%s step %d (t = %s): |F| %.3e -> %.3e, order %.2f < 1.3"
-                                % (path, step, t, f[k], f[k + 1], orders[-1]))
-    if orders and np.median(orders) < 1.5:
-        failures.append("%s: median Newton order %.2f < 1.5" % (path, np.median(orders)))
-    return orders
 
 def strain_energy(r, block, e, nu, step):
     """Neo-Hookean plane-strain energy of element block `block` at `step`:
@@ -129,8 +100,8 @@ def read_case(stem, failures, e_arc, e_block):
     steps = range(len(d) - 1)
     w_block = np.array([0.0] + [strain_energy(r1, "base", e_block, NU, k) for k in steps])
     w_arc = np.array([0.0] + [strain_energy(r1, "arc", e_arc, NU, k) for k in steps])
-    checked = newton_rates("np1/%s_newton.csv" % stem, failures)
-    newton_rates("np2/%s_newton.csv" % stem, failures)
+    checked = cc.newton_rates("np1/%s_newton.csv" % stem, failures, 1.5)
+    cc.newton_rates("np2/%s_newton.csv" % stem, failures, 1.5)
     return dict(d=d, dc=dc, f=f, work=work, w_block=w_block, w_arc=w_arc, diff=diff,
                 newton=checked)
 

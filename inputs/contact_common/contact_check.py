@@ -8,6 +8,7 @@ Import from a check.py with
 
 Run `python3 contact_check.py` to self-test the formulas on known numbers.
 """
+import csv
 import math
 
 import netCDF4
@@ -335,6 +336,36 @@ def plot_profiles(levels, b, p0, title, path, labels=None):
     fig.savefig(path, dpi=120)
     plt.close(fig)
     print("wrote", path)
+
+
+def newton_rates(path, failures, median_min):
+    """Convergence order of Newton's last judged contraction in every step of a
+    `<stem>_newton.csv`, p = log(|F_k+1| / |F_0|) / log(|F_k| / |F_0|) (2 = quadratic), over
+    iterates with an unchanged active set between 0.1 |F_0| and 10x the step's final
+    (round-off) residual. Required: median p >= median_min and every p >= 1.3 (superlinear:
+    where the contact pairs, i.e. the segments, change between iterates the current-geometry
+    linearisation is exact only piecewise). Appends to `failures`; returns the orders."""
+    rows = list(csv.DictReader(open(path)))
+    attempts = {}
+    for r in rows:
+        attempts.setdefault((int(r["step"]), r["time"]), []).append(r)
+    orders = []
+    for (step, t), hist in attempts.items():
+        f = [float(r["residual"]) for r in hist]
+        changes = [int(r["active_changes"]) for r in hist]
+        f0, floor = f[0], 10 * f[-1]
+        pairs = [k for k in range(1, len(f) - 1) if changes[k] == 0 and changes[k + 1] == 0
+                 and 0.1 * f0 > f[k] > floor and f[k + 1] > floor]
+        if pairs:
+            k = pairs[-1]
+            orders.append(math.log(f[k + 1] / f0) / math.log(f[k] / f0))
+            if orders[-1] < 1.3:
+                failures.append("%s step %d (t = %s): |F| %.3e -> %.3e, order %.2f < 1.3"
+                                % (path, step, t, f[k], f[k + 1], orders[-1]))
+    if orders and np.median(orders) < median_min:
+        failures.append("%s: median Newton order %.2f < %.1f"
+                        % (path, np.median(orders), median_min))
+    return orders
 
 
 def _self_test():

@@ -24,7 +24,7 @@ Checks:
   within TOL_RING (3 %);
 - 1 and 2 ranks: the centre curve and the final displacement field agree to 1e-8 (relative);
 - Newton: the order of the last contraction of the residual in each step (active set
-  unchanged) has median >= 1.8 and minimum >= 1.3 (newton_rates);
+  unchanged) has median >= 1.8 and minimum >= 1.3 (contact_check.newton_rates);
 Writes PREFIX_<stem>.png (default: the stem) with the curve against the reference.
 """
 import argparse
@@ -63,33 +63,6 @@ def centre_curve(path):
     return np.concatenate([[0.0], RATE * t]), np.concatenate([[0.0], u])
 
 
-def newton_rates(path, failures):
-    """Convergence order of Newton's last judged contraction in every step,
-    p = log(|F_k+1| / |F_0|) / log(|F_k| / |F_0|) (2 = quadratic), over iterates with an
-    unchanged active set between 0.1 |F_0| and 10x the step's final (round-off) residual.
-    Required: median p >= 1.8 and every p >= 1.3 (superlinear: where the contact pairs, i.e.
-    the segments, change between iterates the current-geometry linearisation is exact only
-    piecewise). Returns the orders."""
-    rows = list(csv.DictReader(open(path)))
-    attempts = {}
-    for r in rows:
-        attempts.setdefault((int(r["step"]), r["time"]), []).append(r)
-    orders = []
-    for (step, t), hist in attempts.items():
-        f = [float(r["residual"]) for r in hist]
-        changes = [int(r["active_changes"]) for r in hist]
-        f0, floor = f[0], 10 * f[-1]
-        pairs = [k for k in range(1, len(f) - 1) if changes[k] == 0 and changes[k + 1] == 0
-                 and 0.1 * f0 > f[k] > floor and f[k + 1] > floor]
-        if pairs:
-            k = pairs[-1]
-            orders.append(math.log(f[k + 1] / f0) / math.log(f[k] / f0))
-            if orders[-1] < 1.3:
-                failures.append("%s step %d (t = %s): |F| %.3e -> %.3e, order %.2f < 1.3"
-                                % (path, step, t, f[k], f[k + 1], orders[-1]))
-    if orders and np.median(orders) < 1.8:
-        failures.append("%s: median Newton order %.2f < 1.8" % (path, np.median(orders)))
-    return orders
 
 def check_ring(stem, failures):
     """The ring's deflection at the first step against Castigliano (arch_theory.py)."""
@@ -143,8 +116,8 @@ def check_case(stem, reference, tol, label, prefix, failures, report_only=False)
             print("KNOWN GAP (not failing, --report-only): " + msg)
         else:
             failures.append(msg)
-    orders = newton_rates("np1/%s_newton.csv" % stem, failures)
-    newton_rates("np2/%s_newton.csv" % stem, failures)
+    orders = cc.newton_rates("np1/%s_newton.csv" % stem, failures, 1.8)
+    cc.newton_rates("np2/%s_newton.csv" % stem, failures, 1.8)
     print("%s: Newton order of the last contraction in %d steps: min %.2f, median %.2f, "
           "%.0f %% of the steps >= 1.8" % (stem, len(orders), min(orders or [0]),
                                              np.median(orders or [0]),
