@@ -29,7 +29,10 @@ const SideSet* Mesh::find_side_set(std::string_view name) const {
   return find_by_name(side_sets, name);
 }
 const NodeSet* Mesh::find_node_set(std::string_view name) const {
-  return find_by_name(node_sets, name);
+  if (const NodeSet* set = find_by_name(node_sets, name)) return set;
+  // grout_mesh names a side set's node set "<side set>_nodes" (since 2026-11-24); inputs
+  // written before that name it "<side set>" and keep working.
+  return find_by_name(node_sets, std::string(name) + "_nodes");
 }
 
 }  // namespace grout

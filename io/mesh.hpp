@@ -58,6 +58,8 @@ struct Mesh {
   /// Look-up by Exodus name or by "id_<n>"; nullptr when absent.
   const ElementBlock* find_block(std::string_view name) const;
   const SideSet* find_side_set(std::string_view name) const;
+  /// A node set `name` that the mesh lacks resolves to `name`_nodes when that exists
+  /// (grout_mesh's naming since 2026-11-24), so inputs written for older meshes still run.
   const NodeSet* find_node_set(std::string_view name) const;
   /// The block holding global element `element`; nullptr if out of range.
   const ElementBlock* block_of(GlobalIndex element) const;

@@ -364,6 +364,22 @@ TEST(MeshGenerators, NodeSetsAreTheBoundaryNodes) {
   }
 }
 
+// grout_mesh writes a side set's node set as "<name>_nodes" (name_node_sets_apart); an input
+// written before that names the node set "<name>" and must still find it, and an exact name
+// always wins over the fallback.
+TEST(MeshLookup, NodeSetNamedWithoutSuffixFindsTheNodesSet) {
+  grout::Mesh m;
+  m.node_sets.push_back({"top_nodes", 1, {4, 5}});
+  m.node_sets.push_back({"left", 2, {0}});
+  m.node_sets.push_back({"left_nodes", 3, {0, 1}});
+  ASSERT_NE(m.find_node_set("top"), nullptr);
+  EXPECT_EQ(m.find_node_set("top"), m.find_node_set("top_nodes"));
+  EXPECT_EQ(m.find_node_set("left")->id, 2);  // exact name first
+  EXPECT_EQ(m.find_node_set("id_3")->name, "left_nodes");
+  EXPECT_EQ(m.find_node_set("bottom"), nullptr);
+  EXPECT_EQ(m.find_node_set("top_node"), nullptr);
+}
+
 TEST(MeshGenerators, SimplexMeshesConformAndArcsAreExact) {
   // Every face of a conforming mesh is shared by two elements or lies on the boundary;
   // the boundary faces are exactly the side-set faces (each once per boundary patch).

@@ -1,6 +1,6 @@
 """Hertz contact of two cylinders, plane strain, frictionless (BENCHMARKS row 8), on three
 nested meshes: contact half-width b and peak pressure p_max against Hertz, errors decreasing
-with refinement, the finest within 3 %; equilibrium |reaction_lower_bottom_nodes_y| = P; 1 and 2
+with refinement, the finest within 3 %; equilibrium |reaction_lower_bottom_y| = P; 1 and 2
 ranks agree to 1e-10. Writes hertz_profile.csv (finest mesh: x, p computed, p analytic),
 hertz_convergence.csv and hertz_profile.png.
 
@@ -48,7 +48,7 @@ if __name__ == "__main__":
         self_test()
         sys.exit(0)
     failures = cc.hertz_study(["hertz_1", "hertz_2", "hertz_3"], "upper_contact", B, P0, P,
-                              "reaction_lower_bottom_nodes_y",
+                              "reaction_lower_bottom_y",
                               "Hertz cylinder-cylinder (R = 8, P = 10): contact pressure", "hertz")
     for f in failures:
         print("FAIL:", f)
