@@ -407,6 +407,11 @@ void MortarCoupling::Impl::build() {
   slot.assign(surface.nodes.size(), -1);
 
   if (!options.derivatives) {  // the Views of the kernel launches
+    // Packed pair records: TRI3 × TRI3 (3D, every face a TRI3) or QUAD4-wide (integrate_pairs).
+    bool all_tri3 = true;
+    for (const SurfaceFaces* faces : {&surface.slave, &surface.master})
+      for (int n : faces->num_nodes) all_tri3 = all_tri3 && n == 3;
+    slave_width = master_width = dim == 2 ? 2 : all_tri3 ? 3 : max_face_nodes;
     const std::size_t cols = dim == 2 ? 2 : max_face_nodes;
     const auto table = [&](const SurfaceFaces& faces, const char* label) {
       Kokkos::View<int**> v(std::string(label), faces.size(), cols);
@@ -425,7 +430,13 @@ void MortarCoupling::Impl::build() {
     nodal_tangents = Kokkos::View<double***>("grout::MortarCoupling::tangents", n, dim - 1, dim);
     for (std::size_t i = 0; i < n; ++i)
       for (int d = 0; d < dim; ++d) coords(i, d) = x[i][d];
+    own_face_rows.assign(n_own_slave_faces * slave_width, -1);
+    for (std::size_t f = 0; f < n_own_slave_faces; ++f)
+      for (int a = 0; a < slave_width && normal_faces(f, a) >= 0; ++a)
+        if (host_row[normal_faces(f, a)].first == 0)
+          own_face_rows[f * slave_width + a] = host_row[normal_faces(f, a)].second;
   }
+  pattern_valid = false;  // the read-back's pattern is of the previous faces
   built = true;
 }
 

@@ -11,10 +11,12 @@
 //                    per pair, D read as CRS)
 //   api_derivatives  MortarCoupling::update with options.derivatives (evaluate_contact_mortar,
 //                    Sacado), on the smaller cases
-// Serial (one rank, no communicator): the API's distributed path adds the parallel search,
-// which bench_mortar does not have. Counter ns_per_slave as in bench_mortar. Results:
-// docs/performance.md ("Embedding API").
+// GROUT_BENCH_ITERATIONS=n in the environment fixes the iteration count (for instruction counts
+// by difference of two runs). Serial (one rank, no communicator): the API's distributed path adds
+// the parallel search, which bench_mortar does not have. Counter ns_per_slave as in bench_mortar.
+// Results: docs/performance.md ("Embedding API").
 
+#include <cstdlib>
 #include <memory>
 #include <string>
 #include <vector>
@@ -153,6 +155,11 @@ void run_path(benchmark::State& state, Case c, Path path) {
 }
 
 void register_benchmarks() {
+  // GROUT_BENCH_ITERATIONS=n: exactly n iterations in one run (no estimation runs), so that
+  // instruction counts of two runs with different n give the cost of one iteration by
+  // difference (valgrind; docs/performance.md, "Embedding API").
+  const char* fixed = std::getenv("GROUT_BENCH_ITERATIONS");
+  const int iterations = fixed ? std::atoi(fixed) : 0;
   std::vector<Case> cases;
   for (const char* name : {"2d_flat", "2d_curved"})
     for (int n : {10000, 100000}) cases.push_back({name, n});
@@ -167,9 +174,10 @@ void register_benchmarks() {
                          : path == Path::api          ? "api"
                          : path == Path::api_standard ? "api_standard"
                                                       : "api_derivatives";
-      benchmark::RegisterBenchmark((key + name).c_str(), run_path, c, path)
-          ->UseManualTime()
-          ->Unit(benchmark::kMillisecond);
+      auto* b = benchmark::RegisterBenchmark((key + name).c_str(), run_path, c, path)
+                    ->UseManualTime()
+                    ->Unit(benchmark::kMillisecond);
+      if (iterations > 0) b->Iterations(iterations);
     }
   }
   bench::at_finalize().push_back([] {
