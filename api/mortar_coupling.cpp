@@ -407,11 +407,10 @@ void MortarCoupling::Impl::build() {
   slot.assign(surface.nodes.size(), -1);
 
   if (!options.derivatives) {  // the Views of the kernel launches
-    // Packed pair records: TRI3 × TRI3 (3D, every face a TRI3) or QUAD4-wide (integrate_pairs).
-    bool all_tri3 = true;
-    for (const SurfaceFaces* faces : {&surface.slave, &surface.master})
-      for (int n : faces->num_nodes) all_tri3 = all_tri3 && n == 3;
-    slave_width = master_width = dim == 2 ? 2 : all_tri3 ? 3 : max_face_nodes;
+    // Packed pair records (integrate_pairs): LINE2 × LINE2, or QUAD4-wide in 3D (a TRI3-wide
+    // variant, 13 doubles instead of 21, would double the 3D launches in one unit for a
+    // kernel-bound case; the compiler then stopped inlining the 3D shape functions).
+    slave_width = master_width = dim == 2 ? 2 : max_face_nodes;
     const std::size_t cols = dim == 2 ? 2 : max_face_nodes;
     const auto table = [&](const SurfaceFaces& faces, const char* label) {
       Kokkos::View<int**> v(std::string(label), faces.size(), cols);

@@ -69,15 +69,9 @@ bool MortarCoupling::Impl::evaluate_values() {
   // (a far candidate whose projection does not converge) contribute zeros, as in the driver;
   // only inconsistent sizes are an error.
   const bool full_D = options.multipliers != MultiplierBasis::dual;
-  const bool tri3 = slave_width == 3;
-  MortarStatus status;
-  if (dim == 2) {
-    status = full_D ? integrate_pairs<2, true, 2, 2>() : integrate_pairs<2, false, 2, 2>();
-  } else if (tri3) {
-    status = full_D ? integrate_pairs<3, true, 3, 3>() : integrate_pairs<3, false, 3, 3>();
-  } else {
-    status = full_D ? integrate_pairs<3, true, 4, 4>() : integrate_pairs<3, false, 4, 4>();
-  }
+  const MortarStatus status =
+      dim == 2 ? (full_D ? integrate_pairs<2, true, 2, 2>() : integrate_pairs<2, false, 2, 2>())
+               : (full_D ? integrate_pairs<3, true, 4, 4>() : integrate_pairs<3, false, 4, 4>());
   if (status == MortarStatus::capacity_exceeded)
     throw MortarCouplingError(what + "internal error: pair candidates too short");
   read_back();

@@ -248,11 +248,6 @@ void MortarCoupling::Impl::read_back() {
       run(&Impl::read_back_merge<true, 2, 2>, &Impl::read_back_scatter<true, 2, 2>);
     else
       run(&Impl::read_back_merge<false, 2, 2>, &Impl::read_back_scatter<false, 2, 2>);
-  } else if (slave_width == 3) {
-    if (full_D)
-      run(&Impl::read_back_merge<true, 3, 3>, &Impl::read_back_scatter<true, 3, 3>);
-    else
-      run(&Impl::read_back_merge<false, 3, 3>, &Impl::read_back_scatter<false, 3, 3>);
   } else {
     if (full_D)
       run(&Impl::read_back_merge<true, 4, 4>, &Impl::read_back_scatter<true, 4, 4>);
