@@ -212,7 +212,6 @@ bool MortarCoupling::Impl::read_back_scatter() {
         }
       }
     }
-  (void)masters;
   // Gaps and normals per row, from the assembled rows (as read_back_merge).
   for (std::size_t r = 0; r < slave.n_nodes; ++r) {
     const int i = slave_row_position[r];
