@@ -407,6 +407,10 @@ void MortarCoupling::Impl::build() {
   slot.assign(surface.nodes.size(), -1);
 
   if (!options.derivatives) {  // the Views of the kernel launches
+    // Packed pair records (integrate_pairs): LINE2 × LINE2, or QUAD4-wide in 3D (a TRI3-wide
+    // variant, 13 doubles instead of 21, would double the 3D launches in one unit for a
+    // kernel-bound case; the compiler then stopped inlining the 3D shape functions).
+    slave_width = master_width = dim == 2 ? 2 : max_face_nodes;
     const std::size_t cols = dim == 2 ? 2 : max_face_nodes;
     const auto table = [&](const SurfaceFaces& faces, const char* label) {
       Kokkos::View<int**> v(std::string(label), faces.size(), cols);
@@ -425,7 +429,13 @@ void MortarCoupling::Impl::build() {
     nodal_tangents = Kokkos::View<double***>("grout::MortarCoupling::tangents", n, dim - 1, dim);
     for (std::size_t i = 0; i < n; ++i)
       for (int d = 0; d < dim; ++d) coords(i, d) = x[i][d];
+    own_face_rows.assign(n_own_slave_faces * slave_width, -1);
+    for (std::size_t f = 0; f < n_own_slave_faces; ++f)
+      for (int a = 0; a < slave_width && normal_faces(f, a) >= 0; ++a)
+        if (host_row[normal_faces(f, a)].first == 0)
+          own_face_rows[f * slave_width + a] = host_row[normal_faces(f, a)].second;
   }
+  pattern_valid = false;  // the read-back's pattern is of the previous faces
   built = true;
 }
 

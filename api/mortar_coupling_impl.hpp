@@ -13,6 +13,7 @@
 #include "assembly/contact_surface.hpp"
 #include "grout/mortar_coupling.hpp"
 #include "kernels/coarse_search.hpp"
+#include "kernels/mortar_types.hpp"
 
 namespace grout {
 
@@ -35,6 +36,30 @@ struct HostSurface {
     int n = 0;
     while (n < cols && faces[f * cols + n] >= 0) ++n;
     return n;
+  }
+};
+
+/// Sink of mortar_integrate_each: packs one pair (MortarPairResult: dual D_jj, or
+/// MortarPairMatrices: full D_jk) into its record of MortarCoupling::Impl::pair_values,
+/// [overlap, D, M] with NS slave and NM master nodes (D at offset D, M at offset M, row-major);
+/// a pair without overlap gets only its overlap, which the read-back tests first.
+template <bool FullD, int NS, int NM>
+struct PackPair {
+  static constexpr int D = 1, M = 1 + (FullD ? NS * NS : NS), stride = M + NS * NM;
+  Kokkos::View<double*> records;
+  template <class Pair>
+  KOKKOS_INLINE_FUNCTION void operator()(int, int p, const Pair& pair) const {
+    double* o = records.data() + std::size_t(p) * stride;
+    o[0] = pair.overlap;
+    if (!(pair.overlap > 0.0)) return;
+    for (int j = 0; j < NS; ++j) {
+      if constexpr (FullD) {
+        for (int k = 0; k < NS; ++k) o[D + j * NS + k] = pair.D[j][k];
+      } else {
+        o[D + j] = pair.D[j];
+      }
+      for (int l = 0; l < NM; ++l) o[M + j * NM + l] = pair.M[j][l];
+    }
   }
 };
 
@@ -65,8 +90,12 @@ struct MortarCoupling::Impl {
   Kokkos::View<double***> nodal_tangents;
   SearchCandidates<Kokkos::HostSpace> candidates;
   CoarseSearchWorkspace<Kokkos::HostSpace> workspace;
-  Kokkos::View<MortarPairResult<double>*> results;     ///< dual basis
-  Kokkos::View<MortarPairMatrices<double>*> matrices;  ///< other bases (full D per pair)
+  /// Per candidate pair, what the read-back uses of its MortarPairResult (dual basis) or
+  /// MortarPairMatrices (other bases), packed: [overlap, D (n_s or n_s × n_s), M (n_s × n_m)],
+  /// n_s, n_m the widest slave and master faces (2D: 7 or 9 doubles against the padded
+  /// structs' 22 or 34); the remaining entries of a pair without overlap are not written.
+  Kokkos::View<double*> pair_values;
+  int slave_width = 2, master_width = 2;  ///< n_s, n_m
 
   // Results, per slave row.
   std::vector<double> D, gaps, normals, tangents;
@@ -83,8 +112,16 @@ struct MortarCoupling::Impl {
   /// row (−1 when absent); the row's (position, value) entries.
   std::vector<int> slot;
   std::vector<std::pair<int, double>> row_entries, row_D_entries;
-  std::vector<double> view_x[2];  ///< update(View): gathered strided coordinates
-  bool tangents_ready = false;    ///< tangents are filled on first read after an update
+  /// The pattern of the last merge: the candidate lists it was made for, which pairs overlapped,
+  /// per pair entry (p, slave node a, master node l / slave node b) its index in M_values /
+  /// D_values (−1: padding), per M/D entry its node's position in surface.nodes. Valid until
+  /// the faces change (build).
+  bool pattern_valid = false;
+  std::vector<int> pattern_offsets, pattern_masters, M_dest, D_dest, M_position, D_position;
+  std::vector<char> pattern_overlap;
+  std::vector<int> own_face_rows;  ///< own slave face × slave_width: host slave row, −1
+  std::vector<double> view_x[2];   ///< update(View): gathered strided coordinates
+  bool tangents_ready = false;     ///< tangents are filled on first read after an update
   int pairs = 0;
   std::vector<DerivativeTriplet> dD, dM, dg;
 
@@ -94,9 +131,16 @@ struct MortarCoupling::Impl {
   void clear_results();  ///< zero D, gaps, frames; empty M and the derivatives
   /// Kernel launches (values only); false if a slave face has no normal (degenerate).
   bool evaluate_values();
-  /// D, M (CRS), gaps, normals per slave row from the pair results of the launches.
-  template <class Results>
-  void read_back(const Results& pair_results);
+  /// Integration launch (mortar_integrate_each) into pair_values, with NS × NM faces.
+  template <int Dim, bool FullD, int NS, int NM>
+  MortarStatus integrate_pairs();
+  /// D, M (CRS), gaps, normals per slave row from pair_values (mortar_coupling_read_back.cpp):
+  /// read_back_scatter if the pattern holds, else read_back_merge (which records it).
+  void read_back();
+  template <bool FullD, int NS, int NM>
+  void read_back_merge();
+  template <bool FullD, int NS, int NM>
+  bool read_back_scatter();
   void fill_diagonal_D();
   void evaluate_derivatives();  ///< evaluate_contact_mortar (values and exact derivatives)
   void fill_tangents();         ///< tangents per slave row (values path: on first read)

@@ -325,6 +325,51 @@ MortarStatus mortar_integrate_pairs(
   return static_cast<MortarStatus>(status);
 }
 
+/// The launch of mortar_integrate_each: as mortar_integrate_pairs, each pair integrated into a
+/// local Pair and handed to sink(s, p, pair) instead of stored.
+template <int Dim, class Pair, class ExecSpace, class PairSink>
+MortarStatus mortar_integrate_to_sink(
+    const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
+    Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
+    Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
+    Kokkos::View<const double**, typename ExecSpace::memory_space> normals,
+    Kokkos::View<const int*, typename ExecSpace::memory_space> candidate_offsets,
+    Kokkos::View<const int*, typename ExecSpace::memory_space> candidates, MultiplierBasis basis,
+    const MortarOptions& options, const PairSink& sink) {
+  static_assert(Dim == 2 || Dim == 3, "grout::mortar_integrate_each: Dim must be 2 or 3");
+  const size_t n_s = slave_faces.extent(0);
+  if (static_cast<int>(coords.extent(1)) != Dim || normals.extent(0) != coords.extent(0) ||
+      static_cast<int>(normals.extent(1)) != Dim || candidate_offsets.extent(0) != n_s + 1)
+    return MortarStatus::degenerate;
+  int status = 0;
+  Kokkos::parallel_reduce(
+      MortarPairKernel<Dim>::label, Kokkos::RangePolicy<ExecSpace>(space, 0, n_s),
+      KOKKOS_LAMBDA(const int s, int& worst) {
+        using Kernel = MortarPairKernel<Dim>;
+        double xs[max_face_nodes][3], ns[max_face_nodes][3], xm[max_face_nodes][3];
+        const int n_slave = gather_face_coordinates(slave_faces, s, coords, xs);
+        gather_face_coordinates(slave_faces, s, normals, ns);
+        const int begin = candidate_offsets(s), end = candidate_offsets(s + 1);
+        if (end > static_cast<int>(candidates.extent(0))) {
+          worst = static_cast<int>(MortarStatus::capacity_exceeded);
+          return;
+        }
+        typename Kernel::template SlaveFace<double> slave;
+        Kernel::prepare(n_slave, xs, ns, options, basis, slave);
+        for (int p = begin; p < end; ++p) {
+          const int n_master = gather_face_coordinates(master_faces, candidates(p), coords, xm);
+          Pair pair;
+          const MortarStatus st = Kernel::integrate(slave, n_master, xm, options, pair);
+          sink(s, p, pair);
+          const int code = st == MortarStatus::no_overlap ? 0 : static_cast<int>(st);
+          worst = code > worst ? code : worst;
+        }
+      },
+      Kokkos::Max<int>(status));
+  status = status > 0 ? status : 0;  // Max starts from INT_MIN (empty range)
+  return static_cast<MortarStatus>(status);
+}
+
 }  // namespace detail
 
 /// \brief Integrates every (slave face, candidate master face) pair with MortarPairKernel<Dim>,
@@ -366,6 +411,34 @@ MortarStatus mortar_integrate_matrices(
   return detail::mortar_integrate_pairs<Dim>(space, slave_faces, master_faces, coords, normals,
                                              candidate_offsets, candidates, basis, options,
                                              results);
+}
+
+/// \brief mortar_integrate (Pair = MortarPairResult<double>: dual basis) or
+/// mortar_integrate_matrices (Pair = MortarPairMatrices<double>: the basis `basis`) without a
+/// pair array: each pair is integrated into a local Pair and handed to sink(s, p, pair) (slave
+/// face s, CRS position p; called once per candidate, no_overlap and failed pairs with their
+/// zeroed result), which keeps what the caller needs of it (e.g. a compact copy, where the
+/// padded Pair is sized for QUAD4 × QUAD4). Same launch label, arguments and return as
+/// mortar_integrate (MortarPairResult: degenerate unless basis is dual).
+/// \pre sink(s, p, pair) writes nothing that another slave face's call writes (faces run in
+/// parallel).
+template <int Dim, class Pair, class ExecSpace, class PairSink>
+MortarStatus mortar_integrate_each(
+    const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
+    Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
+    Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
+    Kokkos::View<const double**, typename ExecSpace::memory_space> normals,
+    Kokkos::View<const int*, typename ExecSpace::memory_space> candidate_offsets,
+    Kokkos::View<const int*, typename ExecSpace::memory_space> candidates, MultiplierBasis basis,
+    const MortarOptions& options, const PairSink& sink) {
+  constexpr bool dual = std::is_same<Pair, MortarPairResult<double>>::value;
+  static_assert(dual || std::is_same<Pair, MortarPairMatrices<double>>::value,
+                "grout::mortar_integrate_each: Pair is MortarPairResult<double> (dual basis) or "
+                "MortarPairMatrices<double>");
+  if (dual && basis != MultiplierBasis::dual) return MortarStatus::degenerate;  // D not diagonal
+  return detail::mortar_integrate_to_sink<Dim, Pair>(space, slave_faces, master_faces, coords,
+                                                     normals, candidate_offsets, candidates, basis,
+                                                     options, sink);
 }
 
 /// mortar_integrate<2> (launch "grout::mortar_integrate<2D>") on the default execution space.

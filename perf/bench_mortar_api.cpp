@@ -9,12 +9,20 @@
 //                    computed on their first read, which this loop does not do)
 //   api_standard     the same with standard multipliers (mortar_integrate_matrices: full D
 //                    per pair, D read as CRS)
+//   api_moving       api with the master moved along the interface by h/8 (h the slave
+//                    element size) and back on alternate iterations: every update finds other
+//                    candidate or overlapping pairs, so D and M are merged anew (the other
+//                    loops repeat one configuration, whose pattern update keeps and scatters
+//                    into)
 //   api_derivatives  MortarCoupling::update with options.derivatives (evaluate_contact_mortar,
 //                    Sacado), on the smaller cases
-// Serial (one rank, no communicator): the API's distributed path adds the parallel search,
-// which bench_mortar does not have. Counter ns_per_slave as in bench_mortar. Results:
-// docs/performance.md ("Embedding API").
+// GROUT_BENCH_ITERATIONS=n in the environment fixes the iteration count (for instruction counts
+// by difference of two runs). Serial (one rank, no communicator): the API's distributed path adds
+// the parallel search, which bench_mortar does not have. Counter ns_per_slave as in bench_mortar.
+// Results: docs/performance.md ("Embedding API").
 
+#include <cmath>
+#include <cstdlib>
 #include <memory>
 #include <string>
 #include <vector>
@@ -78,15 +86,21 @@ struct InternalPath {
 
 /// The API path: the interface split into the host's two surfaces.
 struct ApiPath {
-  std::vector<double> xs, xm;
+  std::vector<double> xs, xm, xm_moved;  ///< xm_moved: master by h/8 along x (api_moving)
   std::unique_ptr<MortarCoupling> coupling;
+  bool moving = false;
+  long long step = 0;
 
   double sink = 0.0;  ///< keeps the reads of the results
 
-  ApiPath(const MortarInterface& mi, bool derivatives, bool standard) {
+  ApiPath(const MortarInterface& mi, bool derivatives, bool standard, bool moved = false)
+      : moving(moved) {
     const int dim = mi.dim, ns = mi.n_slave_nodes;
     xs.assign(mi.coords.begin(), mi.coords.begin() + std::size_t(ns) * dim);
     xm.assign(mi.coords.begin() + std::size_t(ns) * dim, mi.coords.end());
+    xm_moved = xm;
+    const double h = dim == 2 ? 1.0 / mi.n_slave() : std::sqrt(1.0 / mi.n_slave());
+    for (std::size_t i = 0; i < xm_moved.size(); i += dim) xm_moved[i] += 0.125 * h;
     std::vector<int> master = mi.master;
     for (int& node : master)
       if (node >= 0) node -= ns;
@@ -98,7 +112,7 @@ struct ApiPath {
                                                 surface_arrays(mi.cols, master, xm, dim), o);
   }
   void run() {
-    coupling->update(xs, xm);
+    coupling->update(xs, moving && step++ % 2 == 0 ? xm_moved : xm);
     const MortarCoupling& c = *coupling;
     const std::vector<double>& D = c.multipliers() == MultiplierBasis::dual ? c.D() : c.D_values();
     sink += D.back() + c.M_values().back() + c.weighted_gaps().back() + c.normals().back() +
@@ -117,7 +131,7 @@ struct Case {
   }
 };
 
-enum class Path { internal, api, api_standard, api_derivatives };
+enum class Path { internal, api, api_standard, api_moving, api_derivatives };
 
 // The current case's problems (one case at a time; freed before Kokkos is finalised).
 std::unique_ptr<InternalPath> g_internal;
@@ -132,8 +146,8 @@ void run_path(benchmark::State& state, Case c, Path path) {
     g_internal = std::make_unique<InternalPath>(mi);
     g_internal->run();
   } else {
-    g_api =
-        std::make_unique<ApiPath>(mi, path == Path::api_derivatives, path == Path::api_standard);
+    g_api = std::make_unique<ApiPath>(mi, path == Path::api_derivatives, path == Path::api_standard,
+                                      path == Path::api_moving);
   }
   for (auto _ : state) {
     bench::timed_iteration(state, [&] {
@@ -153,6 +167,11 @@ void run_path(benchmark::State& state, Case c, Path path) {
 }
 
 void register_benchmarks() {
+  // GROUT_BENCH_ITERATIONS=n: exactly n iterations in one run (no estimation runs), so that
+  // instruction counts of two runs with different n give the cost of one iteration by
+  // difference (valgrind; docs/performance.md, "Embedding API").
+  const char* fixed = std::getenv("GROUT_BENCH_ITERATIONS");
+  const int iterations = fixed ? std::atoi(fixed) : 0;
   std::vector<Case> cases;
   for (const char* name : {"2d_flat", "2d_curved"})
     for (int n : {10000, 100000}) cases.push_back({name, n});
@@ -161,15 +180,18 @@ void register_benchmarks() {
   for (const Case& c : cases) {
     const std::string key = c.name + "/" + std::to_string(c.n) + "/";
     const bool small = c.n == 10000 || c.n == 64;
-    for (Path path : {Path::internal, Path::api, Path::api_standard, Path::api_derivatives}) {
+    for (Path path :
+         {Path::internal, Path::api, Path::api_standard, Path::api_moving, Path::api_derivatives}) {
       if (path == Path::api_derivatives && !small) continue;
       const char* name = path == Path::internal       ? "internal"
                          : path == Path::api          ? "api"
                          : path == Path::api_standard ? "api_standard"
+                         : path == Path::api_moving   ? "api_moving"
                                                       : "api_derivatives";
-      benchmark::RegisterBenchmark((key + name).c_str(), run_path, c, path)
-          ->UseManualTime()
-          ->Unit(benchmark::kMillisecond);
+      auto* b = benchmark::RegisterBenchmark((key + name).c_str(), run_path, c, path)
+                    ->UseManualTime()
+                    ->Unit(benchmark::kMillisecond);
+      if (iterations > 0) b->Iterations(iterations);
     }
   }
   bench::at_finalize().push_back([] {

@@ -3,11 +3,13 @@
 // of a plain loop calling integrate_mortar_3d on every candidate pair (so the per-slave hoisting
 // of the dual basis and the early rejection change nothing), and the assembled D, M pass the
 // mortar checks of DESIGN.md §3: Σ D = slave area, Σ M = overlap area (the whole slave here),
-// Σ_l M_jl f(x²_l) = D_jj f(x¹_j) for linear f, and the weighted gap equals gap · D_jj.
+// Σ_l M_jl f(x²_l) = D_jj f(x¹_j) for linear f, and the weighted gap equals gap · D_jj. Also
+// mortar_integrate_each (pairs handed to a sink) against the stored launches, 2D and 3D.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "kernels/coarse_search.hpp"
@@ -190,4 +192,83 @@ TEST(MortarIntegrate3DLaunch, DegenerateSlaveFaceReported) {
   EXPECT_EQ(l.normals_status, MortarStatus::degenerate);
   EXPECT_EQ(l.status, MortarStatus::degenerate);
   for (size_t p = 0; p < l.results.extent(0); ++p) EXPECT_TRUE(std::isfinite(l.results(p).overlap));
+}
+
+namespace {
+
+/// Stores each pair handed to it at its CRS position (mortar_integrate_each's sink).
+template <class Pair>
+struct StorePair {
+  Kokkos::View<Pair*> out;
+  KOKKOS_INLINE_FUNCTION void operator()(int, int p, const Pair& pair) const { out(p) = pair; }
+};
+
+/// mortar_integrate_each on the interface mi (2D or 3D) against the stored launch
+/// (mortar_integrate / mortar_integrate_matrices): the same pairs, bit for bit.
+template <int Dim, class Pair>
+void expect_each_equals_stored(const MortarInterface& mi, grout::MultiplierBasis basis) {
+  const Kokkos::View<int**> slave = face_view(mi.slave, mi.cols, "slave");
+  const Kokkos::View<int**> master = face_view(mi.master, mi.cols, "master");
+  Kokkos::View<double**> coords("coords", mi.n_nodes(), Dim), normals("normals", mi.n_nodes(), Dim);
+  for (int i = 0; i < mi.n_nodes(); ++i)
+    for (int d = 0; d < Dim; ++d) coords(i, d) = mi.coords[Dim * i + d];
+  ASSERT_EQ(grout::compute_nodal_normals(slave, coords, normals), MortarStatus::ok);
+  grout::CoarseSearchWorkspace<Kokkos::HostSpace> workspace;
+  grout::SearchCandidates<Kokkos::HostSpace> c;
+  ASSERT_EQ(grout::coarse_search(workspace, slave, master, coords, 0.1, c), MortarStatus::ok);
+  Kokkos::View<Pair*> stored("stored", c.n_pairs), each("each", c.n_pairs);
+  const Kokkos::DefaultExecutionSpace space;
+  const grout::MortarOptions options;
+  MortarStatus status;
+  if constexpr (std::is_same<Pair, MortarPairResult<double>>::value) {
+    status = grout::mortar_integrate<Dim>(space, slave, master, coords, normals, c.offsets,
+                                          c.masters, options, stored);
+  } else {
+    status = grout::mortar_integrate_matrices<Dim>(space, slave, master, coords, normals, c.offsets,
+                                                   c.masters, basis, options, stored);
+  }
+  ASSERT_EQ(status, MortarStatus::ok);
+  const auto each_launch = [&](grout::MultiplierBasis b) {
+    return grout::mortar_integrate_each<Dim, Pair>(space, slave, master, coords, normals, c.offsets,
+                                                   c.masters, b, options, StorePair<Pair>{each});
+  };
+  ASSERT_EQ(each_launch(basis), MortarStatus::ok);
+  int overlapping = 0;
+  for (int p = 0; p < c.n_pairs; ++p) {
+    const Pair &a = each(p), &b = stored(p);
+    overlapping += a.overlap > 0.0;
+    ASSERT_EQ(a.n_slave, b.n_slave);
+    ASSERT_EQ(a.n_master, b.n_master);
+    EXPECT_EQ(a.overlap, b.overlap);
+    for (int j = 0; j < a.n_slave; ++j)
+      for (int l = 0; l < a.n_master; ++l) EXPECT_EQ(a.M[j][l], b.M[j][l]);
+    if constexpr (std::is_same<Pair, MortarPairResult<double>>::value) {
+      for (int j = 0; j < a.n_slave; ++j) EXPECT_EQ(a.D[j], b.D[j]);
+    } else {
+      for (int j = 0; j < a.n_slave; ++j)
+        for (int k = 0; k < a.n_slave; ++k) EXPECT_EQ(a.D[j][k], b.D[j][k]);
+    }
+  }
+  EXPECT_GE(overlapping, mi.n_slave());
+  // A dual result for another basis would be wrong (D is not diagonal): refused.
+  if constexpr (std::is_same<Pair, MortarPairResult<double>>::value) {
+    EXPECT_EQ(each_launch(grout::MultiplierBasis::standard), MortarStatus::degenerate);
+  }
+}
+
+}  // namespace
+
+// mortar_integrate_each (each pair handed to a sink, no pair array) runs the pair kernels of
+// the stored launches: 2D and 3D, dual and standard multipliers.
+TEST(MortarIntegrateEach, EqualsTheStoredLaunch) {
+  using grout::MortarPairMatrices;
+  using grout::MultiplierBasis;
+  const MortarInterface line = grout::bench::line_interface_2d(20, true);
+  expect_each_equals_stored<2, MortarPairResult<double>>(line, MultiplierBasis::dual);
+  expect_each_equals_stored<2, MortarPairMatrices<double>>(line, MultiplierBasis::standard);
+  for (FaceShape shape : {FaceShape::quad4, FaceShape::tri3}) {
+    const MortarInterface flat = grout::bench::flat_interface_3d(4, shape, shape);
+    expect_each_equals_stored<3, MortarPairResult<double>>(flat, MultiplierBasis::dual);
+    expect_each_equals_stored<3, MortarPairMatrices<double>>(flat, MultiplierBasis::standard);
+  }
 }

@@ -1,7 +1,7 @@
 // grout::MortarCoupling (api/), the embedding API: Σ D = slave measure, the weighted gap of a
 // known offset, force balance for any multiplier field, exact derivatives against central
 // differences, the two evaluation paths against each other, the distributed evaluation
-// against the serial one (on 2 ranks), and the errors.
+// against the serial one (on 2 ranks), repeated updates against new couplings, and the errors.
 
 #include <gtest/gtest.h>
 #include <mpi.h>
@@ -537,6 +537,89 @@ TEST(MortarCoupling, StandardDistributedEqualsSerial) {
 
 // The Kokkos View entry points: the same results as the arrays, from LayoutRight Views used in
 // place and LayoutLeft (strided) Views gathered; wrong extents are reported.
+/// The cylinders with both surfaces of TRI3 faces (each slave QUAD4 cut along a diagonal).
+Surfaces cylinders_3d_tri3(int n, int m, double R, double delta) {
+  Surfaces s = cylinders_3d(n, m, R, delta);
+  std::vector<int> tris;
+  for (std::size_t f = 0; f < s.fs.size() / 4; ++f) {
+    const int* q = &s.fs[4 * f];
+    tris.insert(tris.end(), {q[0], q[1], q[2], q[0], q[2], q[3]});
+  }
+  s.fs = tris;
+  s.cols_s = 3;
+  return s;
+}
+
+/// Every result of the values path of `c` equals that of `fresh` (a new coupling at the same
+/// coordinates): exactly, since both sum the same pair terms in the same order.
+void expect_same_results(const MortarCoupling& c, const MortarCoupling& fresh,
+                         const std::string& what) {
+  EXPECT_EQ(c.overlapping_pairs(), fresh.overlapping_pairs()) << what;
+  EXPECT_EQ(c.D_offsets(), fresh.D_offsets()) << what;
+  EXPECT_EQ(c.D_columns(), fresh.D_columns()) << what;
+  EXPECT_EQ(c.D_values(), fresh.D_values()) << what;
+  if (c.multipliers() == MultiplierBasis::dual) {
+    EXPECT_EQ(c.D(), fresh.D()) << what;
+  }
+  EXPECT_EQ(c.M_offsets(), fresh.M_offsets()) << what;
+  EXPECT_EQ(c.M_columns(), fresh.M_columns()) << what;
+  EXPECT_EQ(c.M_values(), fresh.M_values()) << what;
+  EXPECT_EQ(c.weighted_gaps(), fresh.weighted_gaps()) << what;
+  EXPECT_EQ(c.normals(), fresh.normals()) << what;
+}
+
+// A sequence of updates (the values path keeps the pattern of D and M while the candidate
+// pairs and the overlapping ones are unchanged, and scatters into it) gives what a new coupling
+// at each configuration gives: the master slid along the interface by 0.15 and 0.35 of a slave
+// element (other pairs overlap), pressed in (same pairs, other values), and the same again.
+TEST(MortarCoupling, UpdatesEqualNewCouplings) {
+  const std::vector<Surfaces> surfaces = {arcs_2d(12, 17, 1.0, 0.01), cylinders_3d(6, 8, 1.0, 0.01),
+                                          cylinders_3d_tri3(6, 8, 1.0, 0.01)};
+  for (const Surfaces& s0 : surfaces)
+    for (auto basis : {MultiplierBasis::dual, MultiplierBasis::standard}) {
+      MortarCouplingOptions o;
+      o.multipliers = basis;
+      MortarCoupling c = couple(s0, o);
+      Surfaces s = s0;
+      const double h = s.dim == 2 ? 1.0 / 12 : 0.8 / 6;  // slave element: Δθ or Δz
+      const auto slide = [&](double fraction) {          // master along θ (2D) or z (3D)
+        for (std::size_t i = 0; i < s.nm(); ++i) {
+          double* x = &s.xm[i * s.dim];
+          if (s.dim == 3) {
+            x[2] = s0.xm[i * 3 + 2] + fraction * h;
+            continue;
+          }
+          const double c_ = std::cos(fraction * h), s_ = std::sin(fraction * h);
+          const double* x0 = &s0.xm[i * 2];
+          x[0] = c_ * x0[0] - s_ * x0[1];
+          x[1] = s_ * x0[0] + c_ * x0[1];
+        }
+      };
+      const auto press = [&](double depth) {  // master radially by −depth (r ≈ 1)
+        for (std::size_t i = 0; i < s.nm(); ++i) {
+          double* x = &s.xm[i * s.dim];
+          const double r = std::hypot(x[0], x[1]), k = (r - depth) / r;
+          x[0] *= k;
+          x[1] *= k;
+        }
+      };
+      const std::string what = std::to_string(s.dim) + "D, " + std::to_string(s.cols_s) +
+                               "-node slave faces, " +
+                               (basis == MultiplierBasis::dual ? "dual" : "standard");
+      for (int step = 0; step < 5; ++step) {
+        if (step == 0) slide(0.15);
+        if (step == 1) slide(0.35);
+        if (step == 2) press(0.001);
+        // steps 3 and 4: the same coordinates again
+        c.update(s.xs, s.xm);
+        expect_same_results(c, couple(s, o), what + ", step " + std::to_string(step));
+      }
+      double sum = 0.0;  // the last configuration still covers the slave
+      for (double d : c.D_values()) sum += d;
+      EXPECT_NEAR(sum, s.slave_measure, 1e-12) << what;
+    }
+}
+
 TEST(MortarCoupling, ViewsGiveTheArraysResults) {
   using Coords = Kokkos::View<double**, Kokkos::LayoutRight, Kokkos::HostSpace>;
   using Left = Kokkos::View<double**, Kokkos::LayoutLeft, Kokkos::HostSpace>;

@@ -127,7 +127,10 @@ class MortarCoupling {
   MortarCoupling& operator=(MortarCoupling&&) noexcept;
 
   /// Recomputes everything at new coordinates (same rows and layout as at construction:
-  /// n_nodes × dim each). Collective with a communicator.
+  /// n_nodes × dim each). Collective with a communicator. Without one (values path), while the
+  /// candidate pairs of the search and the overlapping pairs are those of the previous update,
+  /// the CRS pattern of D and M is kept (offsets and columns unchanged) and only the values are
+  /// summed anew, in the same order: the results equal a new coupling's.
   void update(const double* slave_coordinates, const double* master_coordinates);
   /// The same, checking the sizes.
   void update(const std::vector<double>& slave_coordinates,
