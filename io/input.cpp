@@ -291,7 +291,8 @@ std::vector<ContactInput> read_contact(const Section& grout) {
       Key::choice("integration", {"exact", "collocation"}, "integration").defaults("exact"),
       Key::integer("collocation_points").at_least(1).at_most(max_collocation_points),
       Key::choice("geometry", {"reference", "current"}, "contact geometry"),
-      Key::number("start_gap").at_least(0).below(1)};
+      Key::number("start_gap").at_least(0).below(1),
+      Key::number("start_closure").above(0).at_most(1)};
   std::vector<ContactInput> pairs;
   for (const Section& s : grout.named_sections("contact", keys)) {
     ContactInput c;
@@ -318,6 +319,7 @@ std::vector<ContactInput> read_contact(const Section& grout) {
     }
     c.collocation_points = s.integer("collocation_points");
     if (s.has("start_gap")) c.start_gap = s.number("start_gap");
+    if (s.has("start_closure")) c.start_closure = s.number("start_closure");
     if (s.has("geometry")) {
       c.geometry =
           s.string("geometry") == "current" ? ContactGeometry::current : ContactGeometry::reference;

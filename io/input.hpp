@@ -77,6 +77,10 @@ struct ContactInput {
   /// At the start of a step (until the first Newton update), a slave node with no pressure and
   /// a gap below start_gap × the mean size of its slave faces counts as active; 0 = off.
   double start_gap = 0.05;
+  /// At a Newton iterate where more nodes close than were active: a closing node whose gap
+  /// reaches 0 later than this fraction of the update stays inactive for that iterate (once
+  /// per step; nonlinear/first_update_closures.hpp); 1 = off.
+  double start_closure = 0.5;
 };
 
 struct TimeInput {

@@ -12,6 +12,7 @@
 #include "assembly/weighted_slip.hpp"
 #include "io/errors.hpp"
 #include "nonlinear/dirichlet.hpp"
+#include "nonlinear/first_update_closures.hpp"
 
 namespace grout {
 
@@ -38,6 +39,9 @@ struct MechanicsProblem::Interface {
   std::vector<std::array<double, 3>> X, u, u_old;
   // Per owned slave node: results of the last evaluation and the slip history.
   std::vector<double> pressure, gap;
+  std::vector<double> iterate_gap;  ///< g_j at the last evaluation (if gap_known)
+  std::vector<char> gap_known;      ///< node j had a master at the last evaluation
+  std::vector<char> held_in_step;   ///< held back (inactive) once in this step already
   std::vector<std::array<double, 3>> lambda;
   std::vector<char> active, previous_active;
   std::vector<char> committed_active;  ///< active at the last converged state (commit_step)
@@ -144,6 +148,9 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
 
     c->pressure.assign(n_owned, 0.0);
     c->gap.assign(n_owned, 0.0);
+    c->iterate_gap.assign(n_owned, 0.0);
+    c->gap_known.assign(n_owned, 0);
+    c->held_in_step.assign(n_owned, 0);
     c->lambda.assign(n_owned, {0.0, 0.0, 0.0});
     c->active.assign(n_owned, 0);
     c->previous_active.assign(n_owned, 0);
@@ -208,6 +215,8 @@ MechanicsProblem::~MechanicsProblem() = default;
 
 void MechanicsProblem::begin_step(double t, Vector& x) {
   step_start_ = true;
+  first_update_ = false;
+  for (auto& c : interfaces_) std::fill(c->held_in_step.begin(), c->held_in_step.end(), 0);
   // The load expressions are evaluated on each rank's own faces: a value that is not finite
   // on one rank stops every rank.
   agree_on_errors(*solid_.comm(), [&] {
@@ -520,6 +529,55 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
 
   for (int q = 0; q < n_owned; ++q)
     for (int d = 0; d < dim; ++d) c.lambda[q][d] = xv(map_->getLocalElement(c.lambda_gid(q, d)), 0);
+  // After the step's start: the late-closing nodes held back (first_update_closures.hpp),
+  // measured from the last evaluation's gaps.
+  std::vector<char> held_back(n_owned, 0);
+  if (!tied) {
+    // g_j = −n_j·(D_jj x_j − Σ_l M_jl x_l) / D_jj at the given positions.
+    const auto nodal_gap = [&](int j, const auto& at) {
+      const SlaveFrame& fr = m.frames[j];
+      double g = 0.0;
+      for (int a = 0; a < dim; ++a) {
+        double v = m.D[j].value * at(s.slave_nodes[j], a);
+        for (auto it = m_range(j); it != m_range(j + 1); ++it)
+          v -= it->second.value * at(it->first.second, a);
+        g -= fr.n[a] * v;
+      }
+      return g / m.D[j].value;
+    };
+    std::vector<ClosureCandidate> nodes(n_owned);
+    for (int q = 0; q < n_owned; ++q) {
+      const int j = c.owned[q];
+      ClosureCandidate& node = nodes[q];
+      node.paired = m.D[j].value > D_tol;
+      if (!node.paired) continue;
+      node.was_active = c.active[q] != 0;
+      node.gap = nodal_gap(j, position);
+      // The base of the update: the last evaluation's gap; at the first update a node that
+      // had no master then is measured from its last converged position.
+      node.gap_old = c.gap_known[q]  ? c.iterate_gap[q]
+                     : first_update_ ? nodal_gap(j, old_position)
+                                     : 0.0;
+      double lambda_n = 0.0;
+      for (int a = 0; a < dim; ++a) lambda_n += m.frames[j].n[a] * c.lambda[q][a];
+      node.closing = !node.was_active && lambda_n - c.c_hat * node.gap >= -c.active_tolerance;
+    }
+    if (!step_start_ && c.input.start_closure < 1.0) {
+      const ClosureCounts local = count_closures(nodes);
+      double sums[2] = {local.active_before, local.closing}, global[2] = {0.0, 0.0};
+      Teuchos::reduceAll(*solid_.comm(), Teuchos::REDUCE_SUM, 2, sums, global);
+      held_back = held_back_closures(nodes, {global[0], global[1]}, c.input.start_closure);
+    }
+    // Once per node and step (a held node closes at the next iterate at the latest).
+    for (int q = 0; q < n_owned; ++q) {
+      if (c.held_in_step[q]) held_back[q] = 0;
+      if (held_back[q]) c.held_in_step[q] = 1;
+    }
+    for (int q = 0; q < n_owned; ++q) {
+      c.gap_known[q] = nodes[q].paired;
+      c.iterate_gap[q] = nodes[q].gap;
+    }
+  }
 
   // Contact forces f¹_k = D_kk λ_k, f²_l = −Σ_j M_jl λ_j (j owned).
   for (int q = 0; q < n_owned; ++q) {
@@ -623,7 +681,7 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
     // so the converged state satisfies the contact conditions exactly.
     const double augmented = lambda_n - c.c_hat * gap;
     const bool near = step_start_ && lambda_n <= 0.0 && gap <= c.proximity[q];
-    if (augmented < -c.active_tolerance && !near) {  // inactive: λ_j = 0
+    if ((augmented < -c.active_tolerance && !near) || held_back[q]) {  // inactive: λ_j = 0
       for (int a = 0; a < dim; ++a) {
         add_F_(c.lambda_gid(q, a), c.lambda[q][a]);
         add_entry(c.lambda_gid(q, a), c.lambda_gid(q, a), 1.0);
@@ -745,7 +803,8 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
   for (int q = 0; q < n_owned; ++q) {
     c.closing[q] = c.active[q] && !c.committed_active[q];
     active_size_ += c.active[q] != 0;
-    active_changes_ += c.active[q] != c.previous_active[q];
+    // A held-back node is a pending change: the iterate cannot be the converged one.
+    active_changes_ += c.active[q] != c.previous_active[q] || held_back[q];
   }
 }
 
@@ -824,7 +883,8 @@ bool MechanicsProblem::jacobian(const Vector&, Teuchos::RCP<Matrix>& J) {
   }
   Vector rhs(map_);
   apply_dirichlet(*J, rhs, delta);
-  step_start_ = false;  // the next residual is at the first Newton update
+  first_update_ = step_start_;  // the next residual is at the first Newton update
+  step_start_ = false;
   return true;
 }
 

@@ -147,6 +147,7 @@ class MechanicsProblem : public NonlinearProblem {
   double residual_floor_ = 0.0;
   double contact_floor2_ = 0.0;  ///< Σ of the squared multiplier-row floors (residual_floor)
   bool step_start_ = false;      ///< no Newton update yet in this step (proximity active set)
+  bool first_update_ = false;    ///< at the first Newton update of the step (until the next J)
 };
 
 }  // namespace grout
