@@ -29,6 +29,7 @@ struct LinearSolver::Impl {
   int dofs_per_node = 1;
   // --- end condensed multipliers ---
   std::vector<double> coordinates;
+  std::vector<int> bodies;  // body index per node; empty: one body
   int dim = 0;
   std::string last_type;
 };
@@ -175,6 +176,12 @@ void LinearSolver::set_coordinates(std::vector<double> coordinates, int dim) {
   impl_->dim = dim;
 }
 
+void LinearSolver::set_node_bodies(std::vector<int> body_of_node) {
+  const bool several = std::any_of(body_of_node.begin(), body_of_node.end(),
+                                   [&](int b) { return b != body_of_node.front(); });
+  impl_->bodies = several ? std::move(body_of_node) : std::vector<int>();
+}
+
 const std::string& LinearSolver::last_type() const {
   return impl_->last_type;
 }
@@ -191,7 +198,11 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   if (!condense || impl_->pairing.empty())
     return solve_system(K, b, x, type, impl_->belos_type_given ? impl_->belos_type : "CG");
   MultiplierCondensation condensation(impl_->pairing, impl_->dofs_per_node);
-  condensation.condense(*K, b);
+  {
+    Teuchos::TimeMonitor condense_timer(
+        *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: condensation"));
+    condensation.condense(*K, b);
+  }
   Vector y(condensation.matrix()->getRowMap());
   // A reduced row with a zero diagonal (a prescribed slave dof whose node's multiplier rows
   // do not involve that multiplier: tied or sticking) defeats relaxation smoothers: such a
@@ -221,14 +232,22 @@ int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector
   Teuchos::ParameterList muelu = impl_->muelu;
   const int num_ranks = K->getRowMap()->getComm()->getSize();
   const long long num_nodes = impl_->dim > 0 ? impl_->coordinates.size() / impl_->dim : 0;
+  const bool bodies = impl_->bodies.size() == std::size_t(num_nodes) && num_nodes > 0;
   if (num_nodes > 0 && is_nodal_displacement_map(*K->getRowMap(), impl_->dim, num_nodes))
     set_elasticity_defaults(muelu, impl_->dim, num_ranks,
                             rigid_body_modes(*K->getRowMap(), impl_->dim, impl_->coordinates),
-                            node_coordinates(*K->getRowMap(), impl_->dim, impl_->coordinates));
+                            node_coordinates(*K->getRowMap(), impl_->dim, impl_->coordinates,
+                                             bodies ? impl_->bodies : std::vector<int>()),
+                            bodies);
   if (num_ranks > 1 && !muelu.isParameter("coarse: type"))
     muelu.set("coarse: type", "RELAXATION");  // never KLU2 on a multi-rank communicator
   Teuchos::RCP<Operator> K_op = Teuchos::rcp_const_cast<Matrix>(K);
-  auto preconditioner = MueLu::CreateTpetraPreconditioner(K_op, muelu);
+  Teuchos::RCP<MueLu::TpetraOperator<double, LO, GO, Node>> preconditioner;
+  {
+    Teuchos::TimeMonitor setup_timer(
+        *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: MueLu set-up"));
+    preconditioner = MueLu::CreateTpetraPreconditioner(K_op, muelu);
+  }
   auto x_rcp = Teuchos::rcpFromRef(x);
   auto b_rcp = Teuchos::rcpFromRef(b);
   x.putScalar(0.0);
@@ -243,7 +262,13 @@ int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector
     params->set("Num Blocks", 200);  // Krylov vectors kept before a restart
   auto solver = factory.create(belos_type, params);
   solver->setProblem(problem);
-  if (solver->solve() != Belos::Converged) {
+  Belos::ReturnType converged;
+  {
+    Teuchos::TimeMonitor krylov_timer(
+        *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: Krylov iterations"));
+    converged = solver->solve();
+  }
+  if (converged != Belos::Converged) {
     // GMRES may stop on a loss of accuracy (the implicit residual met the tolerance, the
     // explicit one did not): accept an explicit residual within max(100 × the tolerance,
     // 1e-6), an inexact Newton step; Newton's residual test decides convergence.

@@ -69,6 +69,9 @@ class LinearSolver {
   /// dimension: the iterative path builds the rigid-body near-null space of MueLu from them,
   /// and `type: auto` picks its solver by the dimension (2 when never called).
   void set_coordinates(std::vector<double> coordinates, int dim);
+  /// Body index of every node (io/mesh_bodies.hpp): with more than one body the iterative
+  /// path's aggregation keeps the bodies apart (elasticity_preconditioner.hpp).
+  void set_node_bodies(std::vector<int> body_of_node);
   /// The type of the last solve (auto resolved): amesos2 or belos; empty before any solve.
   const std::string& last_type() const;
 
