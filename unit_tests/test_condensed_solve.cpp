@@ -18,6 +18,7 @@
 #include "assembly/contact_surface.hpp"
 #include "assembly/solid_problem.hpp"
 #include "io/errors.hpp"
+#include "io/mesh_bodies.hpp"
 #include "io/mesh_generators.hpp"
 #include "nonlinear/condensed_solve.hpp"
 #include "nonlinear/linear_solver.hpp"
@@ -441,6 +442,7 @@ void check_iteration_growth(int dim, ContactKind type, double mu, const std::vec
     LinearSolver solver(p, "test");
     solver.set_multiplier_pairing(mc.sys.pairing, dim);
     solver.set_coordinates(mc.mesh.coordinates, dim);
+    solver.set_node_bodies(node_bodies(mc.mesh));  // as the driver
     Vector x(mc.sys.J->getRowMap());
     iterations.push_back(solver.solve(mc.sys.J, *mc.sys.b, x));
     unknowns.push_back(double(mc.sys.J->getGlobalNumRows()));
