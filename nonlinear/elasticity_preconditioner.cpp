@@ -100,7 +100,12 @@ void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ran
   set_default("aggregation: type", std::string("uncoupled"));
   set_default("transpose: use implicit", true);
   set_default("smoother: type", std::string("RILUK"));  // ILU(0), rank-local
-  const int coarse_max_size = muelu.get<int>("coarse: max size", 2000);
+  // MueLu's default is 2000 rows. 500: the coarse KLU2 solve stays negligible, a system of
+  // 500-2000 unknowns on several ranks gets a coarse level (with 2000 it was smoothed only,
+  // 71 iterations on 2 ranks against 1 on one rank in 3D), and the stacked study's meshes
+  // all get multilevel hierarchies (docs/performance.md, "Iterative solver").
+  set_default("coarse: max size", 500);
+  const int coarse_max_size = muelu.get<int>("coarse: max size");
   if (num_ranks > 1 && !muelu.isParameter("coarse: type") &&
       !muelu.isParameter("repartition: enable") && !node_coordinates.is_null() &&
       null_space->getGlobalLength() > std::size_t(coarse_max_size)) {
