@@ -29,6 +29,7 @@
 #include "io/errors.hpp"
 #include "io/exodus.hpp"
 #include "io/input.hpp"
+#include "io/mesh_bodies.hpp"
 #include "nonlinear/dynamic_stepping.hpp"
 #include "nonlinear/linear_solver.hpp"
 #include "nonlinear/load_stepping.hpp"
@@ -91,6 +92,7 @@ void run(const std::string& input_path, const std::string& output_dir,
   LinearSolver linear(linear_params, input.file + ": grout/solver/Linear Solver");
   linear.set_multiplier_pairing(problem.multiplier_pairing(), mesh.dimension);
   linear.set_coordinates(mesh.coordinates, mesh.dimension);
+  linear.set_node_bodies(node_bodies(mesh));
   std::unique_ptr<ResultsOutput> output;
   agree_on_errors(*comm,
                   [&] { output = std::make_unique<ResultsOutput>(mesh, input, solid, problem); });

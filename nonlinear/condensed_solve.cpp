@@ -535,11 +535,40 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
   std::vector<std::vector<double>> row_vals(reduced.size());
   std::vector<std::size_t> counts(reduced.size());
   {
+    // Rows without a multiplier column or a known (prescribed slave) displacement column,
+    // most of them, are copied as they are; reduce() gives the same row (one value per
+    // column, the same right-hand side).
+    GO first_lambda = std::numeric_limits<GO>::max();
+    for (GO t : m.lambda) first_lambda = std::min(first_lambda, t);
+    std::vector<GO> known;  // sorted GIDs of the known slave displacements
+    for (int p = 0; p < n_pairs; ++p)
+      if (m.known_slave(p)) known.push_back(m.slave[p]);
+    std::sort(known.begin(), known.end());
+    const auto plain = [&](const Row& row) {
+      for (GO c : row.cols) {
+        if (c >= first_lambda && m.pair_of_lambda(c) >= 0) return false;
+        if (!known.empty() && c >= known.front() && c <= known.back() &&
+            std::binary_search(known.begin(), known.end(), c))
+          return false;
+      }
+      return true;
+    };
     auto bv = m.rhs->getLocalViewHost(Tpetra::Access::OverwriteAll);
     std::map<GO, double> out;
     for (std::size_t i = 0; i < reduced.size(); ++i) {
       const GO g = reduced[i];
       const std::map<GO, double>* R = &out;
+      if (assigned.find(g) == assigned.end() && m.pair_of_slave(g) < 0) {
+        const Row& row = m.rows.at(g);
+        if (plain(row)) {
+          row_cols[i] = row.cols, row_vals[i] = row.vals;
+          if (std::find(row.cols.begin(), row.cols.end(), g) == row.cols.end())
+            row_cols[i].push_back(g), row_vals[i].push_back(0.0);  // keep a diagonal entry
+          counts[i] = row_cols[i].size();
+          bv(i, 0) = row.rhs;
+          continue;
+        }
+      }
       if (auto it = assigned.find(g); it != assigned.end()) {
         R = &it->second;
         bv(i, 0) = assigned_rhs.at(g);

@@ -1,6 +1,8 @@
 #include "nonlinear/elasticity_preconditioner.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -57,7 +59,19 @@ bool is_nodal_displacement_map(const Map& map, int dim, long long num_nodes) {
 }
 
 Teuchos::RCP<MultiVector> node_coordinates(const Map& map, int dim,
-                                           const std::vector<double>& coordinates) {
+                                           const std::vector<double>& coordinates,
+                                           const std::vector<int>& bodies) {
+  // Bounding-box diagonal of all nodes: the bodies' spacing is 1000 times it.
+  double spacing = 0.0;
+  if (!bodies.empty() && !coordinates.empty()) {
+    for (int d = 0; d < dim; ++d) {
+      double lo = coordinates[d], hi = coordinates[d];
+      for (std::size_t i = d; i < coordinates.size(); i += dim)
+        lo = std::min(lo, coordinates[i]), hi = std::max(hi, coordinates[i]);
+      spacing += (hi - lo) * (hi - lo);
+    }
+    spacing = 1000.0 * std::max(std::sqrt(spacing), 1e-300);
+  }
   std::vector<GO> nodes;
   for (LO i = 0; i < LO(map.getNodeNumElements()); i += dim)
     nodes.push_back(map.getGlobalElement(i) / dim);
@@ -66,14 +80,17 @@ Teuchos::RCP<MultiVector> node_coordinates(const Map& map, int dim,
                            nodes.size(), 0, map.getComm()));
   auto X = Teuchos::rcp(new MultiVector(node_map, dim));
   auto v = X->getLocalViewHost(Tpetra::Access::OverwriteAll);
-  for (std::size_t n = 0; n < nodes.size(); ++n)
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
     for (int d = 0; d < dim; ++d) v(n, d) = coordinates[std::size_t(nodes[n]) * dim + d];
+    if (!bodies.empty()) v(n, 0) += spacing * bodies[std::size_t(nodes[n])];
+  }
   return X;
 }
 
 void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ranks,
                              const Teuchos::RCP<MultiVector>& null_space,
-                             const Teuchos::RCP<MultiVector>& node_coordinates) {
+                             const Teuchos::RCP<MultiVector>& node_coordinates,
+                             bool separate_bodies) {
   const auto set_default = [&](const std::string& key, const auto& value) {
     if (!muelu.isParameter(key)) muelu.set(key, value);
   };
@@ -83,7 +100,12 @@ void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ran
   set_default("aggregation: type", std::string("uncoupled"));
   set_default("transpose: use implicit", true);
   set_default("smoother: type", std::string("RILUK"));  // ILU(0), rank-local
-  const int coarse_max_size = muelu.get<int>("coarse: max size", 2000);
+  // MueLu's default is 2000 rows. 500: the coarse KLU2 solve stays negligible, a system of
+  // 500-2000 unknowns on several ranks gets a coarse level (with 2000 it was smoothed only,
+  // 71 iterations on 2 ranks against 1 on one rank in 3D), and the stacked study's meshes
+  // all get multilevel hierarchies (docs/performance.md, "Iterative solver").
+  set_default("coarse: max size", 500);
+  const int coarse_max_size = muelu.get<int>("coarse: max size");
   if (num_ranks > 1 && !muelu.isParameter("coarse: type") &&
       !muelu.isParameter("repartition: enable") && !node_coordinates.is_null() &&
       null_space->getGlobalLength() > std::size_t(coarse_max_size)) {
@@ -96,9 +118,21 @@ void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ran
     muelu.set("repartition: max imbalance", 1.2);
     muelu.set("repartition: use subcommunicators", true);
     muelu.sublist("repartition: params").set("algorithm", std::string("multijagged"));
-    muelu.sublist("user data").set("Coordinates", node_coordinates);
     muelu.set("coarse: type", std::string("KLU2"));  // on the one-rank subcommunicator
   }
+  if (separate_bodies && !node_coordinates.is_null() &&
+      !muelu.isParameter("aggregation: drop scheme")) {
+    // Links between bodies have weight 1/S² in the distance Laplacian and are dropped
+    // (elasticity_preconditioner.hpp).
+    muelu.set("aggregation: drop scheme", std::string("distance laplacian"));
+    set_default("aggregation: drop tol", 1e-4);
+    // The prolongator is smoothed with the whole matrix: the matrix filtered by the dropping,
+    // with the dropped entries lumped onto the diagonal, has a zero diagonal in a condensed
+    // gap row (D_jj − Σ_l M_jl = 0).
+    set_default("sa: use filtered matrix", false);
+  }
+  if (!node_coordinates.is_null() && !muelu.sublist("user data").isParameter("Coordinates"))
+    muelu.sublist("user data").set("Coordinates", node_coordinates);
   if (!null_space.is_null() && !muelu.sublist("user data").isParameter("Nullspace"))
     muelu.sublist("user data").set("Nullspace", null_space);
 }

@@ -21,7 +21,21 @@
 //   (Zoltan2 multi-jagged on the node coordinates) onto one rank with a subcommunicator,
 //   where KLU2 is exact (Debian's KLU2 is wrong on a multi-rank communicator, TOOLCHAIN.md;
 //   relaxation as the coarse solve lets GMRES stall on the condensed 3D systems). A system
-//   no larger than `coarse: max size` has no coarse level: its one level is smoothed.
+//   no larger than `coarse: max size` (Grout's default 500, MueLu's 2000) has no coarse
+//   level: its one level is smoothed.
+// - bodies kept apart in the aggregation: when the nodes belong to more than one body (the
+//   connected components of the mesh, io/mesh_bodies.hpp), MueLu aggregates with the
+//   distance-Laplacian graph of coordinates in which body b is moved by b·S along x
+//   (S = 1000 × the mesh's bounding-box diagonal), `aggregation: drop tol` 1e-4: a link
+//   between nodes of two bodies has a weight 1/S² against ≥ 1/(h²·n) inside a body, and is
+//   dropped; links inside a body (aspect ratios below ~25) are kept. No aggregate then
+//   spans a contact interface, so the coarse spaces can represent the jump of the tangential
+//   displacement across it (an aggregate on both sides ties the two bodies together
+//   rigidly, and that error is left to the smoother, at a cost growing like 1/h; measured in
+//   docs/performance.md, "Iterative solver"). The contact coupling itself stays in every
+//   coarse operator (Galerkin products with the whole matrix), and the prolongator is
+//   smoothed with the whole matrix (`sa: use filtered matrix: false`: lumping the dropped
+//   entries would leave a condensed gap row with the diagonal D_jj − Σ_l M_jl = 0);
 // Every default is only set when the user's `MueLu` sublist does not set that key.
 
 #include <Teuchos_ParameterList.hpp>
@@ -42,14 +56,20 @@ Teuchos::RCP<MultiVector> rigid_body_modes(const Map& map, int dim,
 bool is_nodal_displacement_map(const Map& map, int dim, long long num_nodes);
 
 /// Grout's MueLu defaults for elasticity, merged under the user's `muelu` entries, plus the
-/// near-null space in `user data` (`muelu` is modified).
+/// near-null space and the coordinates in `user data` (`muelu` is modified).
+/// `separate_bodies`: the coordinates keep the bodies apart (node_coordinates), and the
+/// aggregation drops the links between them.
 void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ranks,
                              const Teuchos::RCP<MultiVector>& null_space,
-                             const Teuchos::RCP<MultiVector>& node_coordinates);
+                             const Teuchos::RCP<MultiVector>& node_coordinates,
+                             bool separate_bodies = false);
 
 /// The coordinates of the nodes of a nodal displacement map (one row per node of `map`, in
-/// its order): MueLu's `Coordinates` for repartitioning.
+/// its order): MueLu's `Coordinates` for the aggregation and the repartitioning. With
+/// `bodies` (body index per node, as io/mesh_bodies.hpp; empty: one body) body b is moved
+/// by b·S along x, S = 1000 × the bounding-box diagonal of all nodes.
 Teuchos::RCP<MultiVector> node_coordinates(const Map& map, int dim,
-                                           const std::vector<double>& coordinates);
+                                           const std::vector<double>& coordinates,
+                                           const std::vector<int>& bodies = {});
 
 }  // namespace grout

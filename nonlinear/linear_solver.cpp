@@ -4,8 +4,10 @@
 #include <BelosSolverFactory.hpp>
 #include <BelosTpetraAdapter.hpp>
 #include <MueLu_CreateTpetraPreconditioner.hpp>
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <stdexcept>
 
@@ -29,6 +31,14 @@ struct LinearSolver::Impl {
   int dofs_per_node = 1;
   // --- end condensed multipliers ---
   std::vector<double> coordinates;
+  std::vector<int> bodies;  // body index per node; empty: one body
+  // The last MueLu hierarchy (type: belos), for reuse_preconditioner.
+  bool reuse_preconditioner = false;
+  Teuchos::RCP<MueLu::TpetraOperator<double, LO, GO, Node>> hierarchy;
+  Teuchos::RCP<const Map> hierarchy_map;
+  std::uint64_t hierarchy_pattern = 0;  // local_pattern_fingerprint of its matrix
+  int fresh_iterations = 0;
+  int reused = 0;  // solves that reused the hierarchy
   int dim = 0;
   std::string last_type;
 };
@@ -75,6 +85,11 @@ LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::stri
     impl_->condense = params.get<bool>("condense_multipliers");
     impl_->condense_given = true;
   }
+  if (params.isParameter("reuse_preconditioner")) {
+    if (!params.isType<bool>("reuse_preconditioner"))
+      throw InputError(where + "/reuse_preconditioner: expected true or false");
+    impl_->reuse_preconditioner = params.get<bool>("reuse_preconditioner");
+  }
   impl_->belos_type_given = impl_->belos.isParameter("Solver Type");
   // --- end condensed multipliers ---
   if (impl_->belos_type_given && !impl_->belos.isType<std::string>("Solver Type"))
@@ -109,6 +124,25 @@ LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::stri
 LinearSolver::~LinearSolver() = default;
 
 namespace {
+
+// FNV-1a hash of this rank's rows of K's sparsity pattern (row and column global ids).
+std::uint64_t local_pattern_fingerprint(const Matrix& K) {
+  std::uint64_t h = 1469598103934665603ull;
+  const auto mix = [&](long long v) {
+    for (int byte = 0; byte < 8; ++byte, v >>= 8)
+      h = (h ^ std::uint64_t(v & 0xff)) * 1099511628211ull;
+  };
+  const auto& row_map = *K.getRowMap();
+  const auto& col_map = *K.getColMap();
+  const auto local = K.getLocalMatrixHost();
+  for (LO i = 0; i < LO(row_map.getNodeNumElements()); ++i) {
+    mix(row_map.getGlobalElement(i));
+    for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p)
+      mix(col_map.getGlobalElement(local.graph.entries(p)));
+    mix(-1);
+  }
+  return h;
+}
 
 // Direct solve on rank 0: gather K, b to a map owned by rank 0, copy them onto a 1-rank
 // communicator (KLU2 is only trusted there), solve, scatter x back.
@@ -175,6 +209,16 @@ void LinearSolver::set_coordinates(std::vector<double> coordinates, int dim) {
   impl_->dim = dim;
 }
 
+void LinearSolver::set_node_bodies(std::vector<int> body_of_node) {
+  const bool several = std::any_of(body_of_node.begin(), body_of_node.end(),
+                                   [&](int b) { return b != body_of_node.front(); });
+  impl_->bodies = several ? std::move(body_of_node) : std::vector<int>();
+}
+
+int LinearSolver::reused_hierarchies() const {
+  return impl_->reused;
+}
+
 const std::string& LinearSolver::last_type() const {
   return impl_->last_type;
 }
@@ -191,7 +235,11 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   if (!condense || impl_->pairing.empty())
     return solve_system(K, b, x, type, impl_->belos_type_given ? impl_->belos_type : "CG");
   MultiplierCondensation condensation(impl_->pairing, impl_->dofs_per_node);
-  condensation.condense(*K, b);
+  {
+    Teuchos::TimeMonitor condense_timer(
+        *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: condensation"));
+    condensation.condense(*K, b);
+  }
   Vector y(condensation.matrix()->getRowMap());
   // A reduced row with a zero diagonal (a prescribed slave dof whose node's multiplier rows
   // do not involve that multiplier: tied or sticking) defeats relaxation smoothers: such a
@@ -221,47 +269,99 @@ int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector
   Teuchos::ParameterList muelu = impl_->muelu;
   const int num_ranks = K->getRowMap()->getComm()->getSize();
   const long long num_nodes = impl_->dim > 0 ? impl_->coordinates.size() / impl_->dim : 0;
+  const bool bodies = impl_->bodies.size() == std::size_t(num_nodes) && num_nodes > 0;
   if (num_nodes > 0 && is_nodal_displacement_map(*K->getRowMap(), impl_->dim, num_nodes))
     set_elasticity_defaults(muelu, impl_->dim, num_ranks,
                             rigid_body_modes(*K->getRowMap(), impl_->dim, impl_->coordinates),
-                            node_coordinates(*K->getRowMap(), impl_->dim, impl_->coordinates));
+                            node_coordinates(*K->getRowMap(), impl_->dim, impl_->coordinates,
+                                             bodies ? impl_->bodies : std::vector<int>()),
+                            bodies);
   if (num_ranks > 1 && !muelu.isParameter("coarse: type"))
     muelu.set("coarse: type", "RELAXATION");  // never KLU2 on a multi-rank communicator
-  Teuchos::RCP<Operator> K_op = Teuchos::rcp_const_cast<Matrix>(K);
-  auto preconditioner = MueLu::CreateTpetraPreconditioner(K_op, muelu);
-  auto x_rcp = Teuchos::rcpFromRef(x);
-  auto b_rcp = Teuchos::rcpFromRef(b);
-  x.putScalar(0.0);
-  auto problem = Teuchos::rcp(new Belos::LinearProblem<double, MultiVector, Operator>(
-      K_op, Teuchos::rcp_implicit_cast<MultiVector>(x_rcp),
-      Teuchos::rcp_implicit_cast<const MultiVector>(b_rcp)));
-  problem->setRightPrec(preconditioner);
-  problem->setProblem();
+  const auto K_crs = Teuchos::rcp_const_cast<Matrix>(K);
+  Teuchos::RCP<Operator> K_op = K_crs;
+  // Reuse (Newton iterations after the first): the last hierarchy's prolongators and
+  // restrictions, with the coarse operators and the smoothers recomputed from K (MueLu
+  // `reuse: type: RP`), when K has the same unknowns and the same sparsity pattern (RP keeps
+  // the coarse matrices' patterns; a changed active set changes K's). A reused hierarchy that does
+  // not converge is rebuilt and the system solved again; one that needs more than twice the
+  // iterations of its fresh build (+10) is rebuilt at the next solve.
+  const bool reuse_allowed = impl_->reuse_preconditioner;
+  if (reuse_allowed && !muelu.isParameter("reuse: type")) muelu.set("reuse: type", "RP");
+  const std::uint64_t pattern = reuse_allowed ? local_pattern_fingerprint(*K) : 0;
+  bool may_reuse = reuse_allowed && !impl_->hierarchy.is_null() &&
+                   impl_->hierarchy_map->isSameAs(*K->getRowMap());
+  if (may_reuse) {  // MueLu's RP reuse keeps the coarse patterns: K's must not change
+    int same = pattern == impl_->hierarchy_pattern ? 1 : 0, all_same = 0;
+    Teuchos::reduceAll(*K->getRowMap()->getComm(), Teuchos::REDUCE_MIN, same,
+                       Teuchos::outArg(all_same));
+    may_reuse = all_same == 1;
+  }
   Belos::SolverFactory<double, MultiVector, Operator> factory;
   auto params = Teuchos::rcp(new Teuchos::ParameterList(impl_->belos));
   if (belos_type == "GMRES" && !params->isParameter("Num Blocks"))
     params->set("Num Blocks", 200);  // Krylov vectors kept before a restart
-  auto solver = factory.create(belos_type, params);
-  solver->setProblem(problem);
-  if (solver->solve() != Belos::Converged) {
-    // GMRES may stop on a loss of accuracy (the implicit residual met the tolerance, the
-    // explicit one did not): accept an explicit residual within max(100 × the tolerance,
-    // 1e-6), an inexact Newton step; Newton's residual test decides convergence.
-    Vector r(b.getMap());
-    K->apply(x, r);
-    r.update(1.0, b, -1.0);
-    const double b_norm = b.norm2();
-    const double relative = b_norm > 0.0 ? r.norm2() / b_norm : r.norm2();
-    if (relative > std::max(1e-6, 100.0 * params->get<double>("Convergence Tolerance"))) {
-      char message[160];
-      std::snprintf(message, sizeof message,
-                    "linear solver %s did not converge in %d iterations (|b - A x| / |b| = %.3e%s)",
-                    belos_type.c_str(), solver->getNumIters(), relative,
-                    solver->isLOADetected() ? ", loss of accuracy" : "");
-      throw std::runtime_error(message);
+  for (int attempt = 0;; ++attempt) {
+    const bool reused = may_reuse && attempt == 0;
+    {
+      Teuchos::TimeMonitor setup_timer(
+          *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: MueLu set-up"));
+      if (reused) {
+        MueLu::ReuseTpetraPreconditioner(K_crs, *impl_->hierarchy);
+        ++impl_->reused;
+      } else {
+        impl_->hierarchy = MueLu::CreateTpetraPreconditioner(K_op, muelu);
+        impl_->hierarchy_map = K->getRowMap();
+        impl_->hierarchy_pattern = pattern;
+      }
     }
+    auto x_rcp = Teuchos::rcpFromRef(x);
+    auto b_rcp = Teuchos::rcpFromRef(b);
+    x.putScalar(0.0);
+    auto problem = Teuchos::rcp(new Belos::LinearProblem<double, MultiVector, Operator>(
+        K_op, Teuchos::rcp_implicit_cast<MultiVector>(x_rcp),
+        Teuchos::rcp_implicit_cast<const MultiVector>(b_rcp)));
+    problem->setRightPrec(impl_->hierarchy);
+    problem->setProblem();
+    auto solver = factory.create(belos_type, params);
+    solver->setProblem(problem);
+    Belos::ReturnType converged;
+    {
+      Teuchos::TimeMonitor krylov_timer(
+          *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: Krylov iterations"));
+      converged = solver->solve();
+    }
+    const int iterations = solver->getNumIters();
+    bool accepted = converged == Belos::Converged;
+    double relative = 0.0;
+    if (!accepted) {
+      // GMRES may stop on a loss of accuracy (the implicit residual met the tolerance, the
+      // explicit one did not): accept an explicit residual within max(100 × the tolerance,
+      // 1e-6), an inexact Newton step; Newton's residual test decides convergence.
+      Vector r(b.getMap());
+      K->apply(x, r);
+      r.update(1.0, b, -1.0);
+      const double b_norm = b.norm2();
+      relative = b_norm > 0.0 ? r.norm2() / b_norm : r.norm2();
+      accepted = relative <= std::max(1e-6, 100.0 * params->get<double>("Convergence Tolerance"));
+    }
+    if (accepted) {
+      if (!reused)
+        impl_->fresh_iterations = iterations;
+      else if (iterations > 2 * impl_->fresh_iterations + 10)
+        impl_->hierarchy = Teuchos::null;  // rebuilt at the next solve
+      if (!reuse_allowed) impl_->hierarchy = Teuchos::null;
+      return iterations;
+    }
+    if (reused) continue;  // once more with a fresh hierarchy
+    impl_->hierarchy = Teuchos::null;
+    char message[160];
+    std::snprintf(message, sizeof message,
+                  "linear solver %s did not converge in %d iterations (|b - A x| / |b| = %.3e%s)",
+                  belos_type.c_str(), iterations, relative,
+                  solver->isLOADetected() ? ", loss of accuracy" : "");
+    throw std::runtime_error(message);
   }
-  return solver->getNumIters();
 }
 
 }  // namespace grout

@@ -18,6 +18,10 @@
 //                            aggregation for elasticity (elasticity_preconditioner.hpp) when
 //                            the coordinates are given (set_coordinates). The `MueLu` sublist
 //                            overrides any of these settings.
+//   reuse_preconditioner: true   (default false; type: belos) a system with the same unknowns
+//                            and sparsity pattern as the last one reuses its MueLu hierarchy's
+//                            prolongators (MueLu `reuse: type: RP`; coarse operators and
+//                            smoothers recomputed); the hierarchy is kept between solves.
 // --- condensed multipliers (nonlinear/condensed_solve.hpp) ---
 //   condense_multipliers: true   (default: true on the iterative path, false on the direct
 //                            one) the paired multipliers (set_multiplier_pairing) are
@@ -69,6 +73,11 @@ class LinearSolver {
   /// dimension: the iterative path builds the rigid-body near-null space of MueLu from them,
   /// and `type: auto` picks its solver by the dimension (2 when never called).
   void set_coordinates(std::vector<double> coordinates, int dim);
+  /// Body index of every node (io/mesh_bodies.hpp): with more than one body the iterative
+  /// path's aggregation keeps the bodies apart (elasticity_preconditioner.hpp).
+  void set_node_bodies(std::vector<int> body_of_node);
+  /// Solves that reused a MueLu hierarchy (`reuse_preconditioner: true`), since construction.
+  int reused_hierarchies() const;
   /// The type of the last solve (auto resolved): amesos2 or belos; empty before any solve.
   const std::string& last_type() const;
 

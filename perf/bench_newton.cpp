@@ -22,6 +22,8 @@
 //   iteration_cpu_s, solve_cpu_s, resolve_cpu_s   process CPU time (all threads) of the
 //                              whole iteration / the two solves, max over ranks: on a loaded
 //                              machine closer to the uncontended cost than the wall time
+//   condense_s, muelu_s, krylov_s   inside solve_s (belos): the condensation of the
+//                              multipliers, the MueLu set-up, the Belos iterations
 //   linear_iterations          of the first solve (1 for a direct solver)
 //   residual                   |J dx + F| / |F| of the first solve
 //   diff_vs_mumps              max |dx − dx_mumps| / max |dx_mumps| (solvers after mumps)
@@ -35,6 +37,9 @@
 //                                     mumps-amd etc.: MUMPS with that ordering)
 //   GROUT_BENCH_NEWTON_KLU2_ALL=1     amesos2 (KLU2) at every size (default: 2D up to 1e5
 //                                     dofs, 3D n = 14 only: 3D n = 20 takes ~160 s per solve)
+//   GROUT_BENCH_NEWTON_PARAMS=file.xml   a Teuchos XML `Linear Solver` list merged over the
+//                                     bench's (e.g. a MueLu or Belos sublist to try)
+//   GROUT_BENCH_NEWTON_RESOLVE=0      skip the second solve (resolve_s = 0)
 // belos runs with condense_multipliers: true and its defaults.
 //
 // Benchmarks step/<2d|3d>/<quasi_static|dynamic>/<n>: whole steps on the same meshes and
@@ -56,6 +61,7 @@
 #include <sys/resource.h>
 
 #include <Teuchos_TimeMonitor.hpp>
+#include <Teuchos_XMLParameterListHelpers.hpp>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -70,6 +76,7 @@
 #include "assembly/mass_matrix.hpp"
 #include "assembly/solid_problem.hpp"
 #include "io/contact_meshes.hpp"
+#include "io/mesh_bodies.hpp"
 #include "nonlinear/dynamic_problem.hpp"
 #include "nonlinear/linear_solver.hpp"
 #include "nonlinear/load_stepping.hpp"
@@ -122,6 +129,7 @@ Input newton_input(int dim) {
 struct NewtonCase {
   CaseKey key;
   Mesh mesh;
+  std::vector<int> bodies;  // io/mesh_bodies.hpp
   Input input;
   std::unique_ptr<SolidProblem> solid;
   std::unique_ptr<MechanicsProblem> problem;
@@ -206,6 +214,7 @@ NewtonCase& newton_case(const CaseKey& key) {
     spec.height_lower = spec.height_upper = 0.5;
   }
   c->mesh = key.dim == 2 ? stacked_blocks_2d(spec) : stacked_blocks_3d(spec);
+  c->bodies = node_bodies(c->mesh);
   c->input = newton_input(key.dim);
   c->solid = std::make_unique<SolidProblem>(c->mesh, c->input, Tpetra::getDefaultComm());
   c->problem = std::make_unique<MechanicsProblem>(*c->solid, c->mesh, c->input);
@@ -230,6 +239,8 @@ Teuchos::ParameterList solver_params(const std::string& name) {
     p.set("condense_multipliers", true);
     p.sublist("MueLu").set("verbosity", "none");
   }
+  if (const char* file = std::getenv("GROUT_BENCH_NEWTON_PARAMS"))
+    Teuchos::updateParametersFromXmlFile(file, Teuchos::outArg(p));
   return p;
 }
 
@@ -244,6 +255,9 @@ void newton_benchmark(benchmark::State& state, int dim, std::string solver_type)
   MechanicsProblem& problem = *c.problem;
   Vector dx(problem.map()), rhs(problem.map());
   double solid = 0, contact = 0, jacobian = 0, solve = 0, analysis = 0, resolve = 0;
+  double condense = 0, muelu = 0, krylov = 0;
+  const char* resolve_env = std::getenv("GROUT_BENCH_NEWTON_RESOLVE");
+  const bool resolve_wanted = !resolve_env || std::string(resolve_env) != "0";
   double iteration_cpu = 0, solve_cpu = 0, resolve_cpu = 0;
   int iterations = 0;
   bool ok = true;
@@ -252,6 +266,9 @@ void newton_benchmark(benchmark::State& state, int dim, std::string solver_type)
     const double solid0 = timer_seconds("grout: solid assembly");
     const double contact0 = timer_seconds("grout: contact (search, integration, assembly)");
     const double analysis0 = timer_seconds("grout: MUMPS analysis");
+    const double condense0 = timer_seconds("grout: linear solve: condensation");
+    const double muelu0 = timer_seconds("grout: linear solve: MueLu set-up");
+    const double krylov0 = timer_seconds("grout: linear solve: Krylov iterations");
     iteration_cpu = solve_cpu = resolve_cpu = 0;
     const double t_residual = timed([&] { ok &= problem.residual(*c.x, *c.F); }, &iteration_cpu);
     solid = max_over_ranks(timer_seconds("grout: solid assembly") - solid0);
@@ -261,18 +278,28 @@ void newton_benchmark(benchmark::State& state, int dim, std::string solver_type)
     rhs.update(-1.0, *c.F, 0.0);
     LinearSolver linear(solver_params(solver_type), "bench_newton");
     linear.set_multiplier_pairing(problem.multiplier_pairing(), dim);
+    // As the driver: the iterative path's MueLu defaults for elasticity (block size, rigid-body
+    // modes, bodies kept apart) need the coordinates; without them MueLu ran with its scalar
+    // defaults.
+    linear.set_coordinates(c.mesh.coordinates, dim);
+    linear.set_node_bodies(c.bodies);
     try {
       solve = timed([&] { iterations = linear.solve(c.J, rhs, dx); }, &solve_cpu);
       iteration_cpu += solve_cpu;
       analysis = max_over_ranks(timer_seconds("grout: MUMPS analysis") - analysis0);
-      // The same pattern, other values: a Newton iteration with an unchanged active set.
-      Matrix J2(*c.J, Teuchos::Copy);
-      J2.resumeFill();
-      J2.scale(1.0 + 1e-9);
-      J2.fillComplete(c.J->getDomainMap(), c.J->getRangeMap());
-      Vector dx2(problem.map());
-      const auto J2_ptr = Teuchos::rcpFromRef(J2);
-      resolve = timed([&] { linear.solve(J2_ptr, rhs, dx2); }, &resolve_cpu);
+      condense = max_over_ranks(timer_seconds("grout: linear solve: condensation") - condense0);
+      muelu = max_over_ranks(timer_seconds("grout: linear solve: MueLu set-up") - muelu0);
+      krylov = max_over_ranks(timer_seconds("grout: linear solve: Krylov iterations") - krylov0);
+      if (resolve_wanted) {
+        // The same pattern, other values: a Newton iteration with an unchanged active set.
+        Matrix J2(*c.J, Teuchos::Copy);
+        J2.resumeFill();
+        J2.scale(1.0 + 1e-9);
+        J2.fillComplete(c.J->getDomainMap(), c.J->getRangeMap());
+        Vector dx2(problem.map());
+        const auto J2_ptr = Teuchos::rcpFromRef(J2);
+        resolve = timed([&] { linear.solve(J2_ptr, rhs, dx2); }, &resolve_cpu);
+      }
     } catch (const std::exception& e) {
       ok = false;
       error = e.what();
@@ -303,6 +330,9 @@ void newton_benchmark(benchmark::State& state, int dim, std::string solver_type)
   state.counters["solve_s"] = solve;
   state.counters["analysis_s"] = analysis;
   state.counters["resolve_s"] = resolve;
+  state.counters["condense_s"] = condense;
+  state.counters["muelu_s"] = muelu;
+  state.counters["krylov_s"] = krylov;
   state.counters["iteration_cpu_s"] = iteration_cpu;
   state.counters["solve_cpu_s"] = solve_cpu;
   state.counters["resolve_cpu_s"] = resolve_cpu;
