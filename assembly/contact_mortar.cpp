@@ -2,7 +2,6 @@
 
 #include <Sacado.hpp>
 #include <algorithm>
-#include <type_traits>
 
 #include "io/errors.hpp"
 #include "kernels/coarse_search.hpp"
@@ -17,23 +16,6 @@ namespace {
 using DFad = Sacado::Fad::DFad<double>;
 constexpr int pair_vars_2d = 12;  // slave x (2x2), slave normals (2x2), master x (2x2)
 constexpr int pair_vars_3d = 24;  // slave x (4x3), master x (4x3)
-
-// A pair is integrated in SFad over its nodal coordinates when the derivatives are wanted, in
-// double otherwise (the same operations on the values: the same D and M, for a ~25th of the
-// work; the reference geometry re-integrates D and M without derivatives when the pairing
-// changes).
-inline void seed(double&, int, int) {}
-template <int N>
-void seed(Sacado::Fad::SFad<double, N>& v, int i, int n) {
-  v.diff(i, n);
-}
-inline double value_of(double v) {
-  return v;
-}
-template <int N>
-double value_of(const Sacado::Fad::SFad<double, N>& v) {
-  return v.val();
-}
 
 int position_of(const ContactSurface& s, GlobalIndex node) {
   return int(std::lower_bound(s.nodes.begin(), s.nodes.end(), node) - s.nodes.begin());
@@ -127,28 +109,27 @@ MortarStatus integrate_pair(const ContactSurface& s, int dim, const Scalar xs[4]
                                                  options.collocation_points, out);
 }
 
-// Dual-basis coefficients A_e (Fad or double) of the last 3D slave face: they depend on the
-// slave coordinates only, which are the first pair variables of every pair of that face, so
-// the candidates of one slave face share them (a 16-point mass matrix and its inverse).
-template <class Scalar>
+// Dual-basis coefficients A_e (Fad) of the last 3D slave face: they depend on the slave
+// coordinates only, which are the first pair variables of every pair of that face, so the
+// candidates of one slave face share them (a 16-point mass matrix and its inverse in Fad).
+template <int NVars>
 struct SlaveDualCache {
   int face = -1;
   MortarStatus status = MortarStatus::degenerate;
-  Scalar A[max_face_nodes][max_face_nodes];
+  Sacado::Fad::SFad<double, NVars> A[max_face_nodes][max_face_nodes];
 };
 
-// One (slave face f, master face m) pair: integrate (with AD when Fad is an SFad over NVars
-// variables, in double when it is double) and accumulate D, M.
-template <class Fad, int NVars>
+// One (slave face f, master face m) pair: integrate with AD and accumulate D, M.
+template <int NVars>
 void add_pair(const ContactSurface& s, const std::vector<std::array<double, 3>>& x,
               const ContactMortarOptions& options, int f, int m, ContactMortar& result,
-              SlaveDualCache<Fad>* dual_cache) {
-  constexpr bool with_derivatives = !std::is_same_v<Fad, double>;
+              SlaveDualCache<NVars>* dual_cache) {
+  using Fad = Sacado::Fad::SFad<double, NVars>;
   const int dim = s.dimension;
   const int n_slave = s.slave.num_nodes[f], n_master = s.master.num_nodes[m];
   std::vector<long long> var_dof(NVars, -1);
   std::vector<std::pair<int, int>> var_normal(NVars, {-1, -1});
-  Fad xs[4][3] = {}, ns[4][3] = {}, xm[4][3] = {};
+  Fad xs[4][3], ns[4][3], xm[4][3];
   int v = 0;
   int slave_index[4];
   for (int a = 0; a < n_slave; ++a) {
@@ -158,7 +139,7 @@ void add_pair(const ContactSurface& s, const std::vector<std::array<double, 3>>&
       xs[a][d] = x[position_of(s, node)][d];
       ns[a][d] = result.frames[slave_index[a]].n[d];
       if (d < dim) {
-        seed(xs[a][d], v, NVars);
+        xs[a][d].diff(v, NVars);
         var_dof[v++] = node * dim + d;
       }
     }
@@ -166,7 +147,7 @@ void add_pair(const ContactSurface& s, const std::vector<std::array<double, 3>>&
   if (dim == 2) {  // the 2D projection follows the slave nodal normals
     for (int a = 0; a < n_slave; ++a)
       for (int d = 0; d < dim; ++d) {
-        seed(ns[a][d], v, NVars);
+        ns[a][d].diff(v, NVars);
         var_normal[v++] = {slave_index[a], d};
       }
   }
@@ -175,7 +156,7 @@ void add_pair(const ContactSurface& s, const std::vector<std::array<double, 3>>&
     for (int d = 0; d < 3; ++d) {
       xm[b][d] = x[position_of(s, node)][d];
       if (d < dim) {
-        seed(xm[b][d], v, NVars);
+        xm[b][d].diff(v, NVars);
         var_dof[v++] = node * dim + d;
       }
     }
@@ -185,7 +166,7 @@ void add_pair(const ContactSurface& s, const std::vector<std::array<double, 3>>&
   const bool exact_3d = dual_cache && dim == 3 && options.scheme == MortarIntegration::exact &&
                         (n_slave == 3 || n_slave == 4) && (n_master == 3 || n_master == 4);
   if (exact_3d) {  // integrate_mortar_3d with the face's cached A_e
-    SlaveDualCache<Fad>& cache = *dual_cache;
+    SlaveDualCache<NVars>& cache = *dual_cache;
     if (cache.face != f) {
       cache.face = f;
       cache.status = dual_basis_coefficients_3d(n_slave, xs, cache.A);
@@ -201,13 +182,13 @@ void add_pair(const ContactSurface& s, const std::vector<std::array<double, 3>>&
   ++result.pairs;
   for (int j = 0; j < n_slave; ++j) {
     MortarValue& D = result.D[slave_index[j]];
-    D.value += value_of(pair.D[j]);
-    if constexpr (with_derivatives)
+    D.value += pair.D[j].val();
+    if (options.derivatives)
       add_pair_gradient(pair.D[j], var_dof, var_normal, result.frames, D.gradient);
     for (int l = 0; l < n_master; ++l) {
       MortarValue& M = result.M[{slave_index[j], s.master.nodes[m][l]}];
-      M.value += value_of(pair.M[j][l]);
-      if constexpr (with_derivatives)
+      M.value += pair.M[j][l].val();
+      if (options.derivatives)
         add_pair_gradient(pair.M[j][l], var_dof, var_normal, result.frames, M.gradient);
     }
   }
@@ -311,21 +292,14 @@ ContactMortar evaluate_contact_mortar(const ContactSurface& s,
 
   // Pairs in (slave face, master face) order: the master faces are in id order, so every
   // sum over pairs runs in the same order however the faces are distributed.
-  using Fad2 = Sacado::Fad::SFad<double, pair_vars_2d>;
-  using Fad3 = Sacado::Fad::SFad<double, pair_vars_3d>;
-  SlaveDualCache<Fad3> dual_cache;
-  SlaveDualCache<double> dual_cache_values;
+  SlaveDualCache<pair_vars_3d> dual_cache;
   for (std::size_t k = 0; k < candidates.evaluated.size(); ++k) {
     const int f = candidates.evaluated[k];
     for (int m : candidates.masters[k]) {
-      if (s.dimension == 2 && options.derivatives)
-        add_pair<Fad2, pair_vars_2d>(s, x, options, f, m, result, nullptr);
-      else if (s.dimension == 2)
-        add_pair<double, pair_vars_2d>(s, x, options, f, m, result, nullptr);
-      else if (options.derivatives)
-        add_pair<Fad3, pair_vars_3d>(s, x, options, f, m, result, &dual_cache);
+      if (s.dimension == 2)
+        add_pair<pair_vars_2d>(s, x, options, f, m, result, nullptr);
       else
-        add_pair<double, pair_vars_3d>(s, x, options, f, m, result, &dual_cache_values);
+        add_pair<pair_vars_3d>(s, x, options, f, m, result, &dual_cache);
     }
   }
   for (auto& D : result.D) compress_gradient(D.gradient);
