@@ -69,7 +69,8 @@ class DynamicProblem : public NonlinearProblem {
   /// closing steps' loss is given back as a velocity jump (file comment).
   DynamicProblem(MechanicsProblem& problem, int dimension, Teuchos::RCP<const Matrix> mass,
                  const TimeIntegrator& integrator, const std::array<double, 3>& gravity,
-                 const Vector& v0, bool stabilized_contact = true, bool velocity_update = false);
+                 const Vector& v0, bool stabilized_contact = true, bool velocity_update = false,
+                 bool sliding_update = true);
 
   MechanicsProblem& quasi_static() { return problem_; }
   Teuchos::RCP<const Map> map() const override { return problem_.map(); }
@@ -100,7 +101,7 @@ class DynamicProblem : public NonlinearProblem {
   /// The velocity jump of the velocity update (file comment) for the contact force f_c on
   /// the free dofs (0 elsewhere) that gives the bodies back `loss`; returns the energy given
   /// back. Collective.
-  double give_back(const Vector& f_contact, double loss);
+  double give_back(const Vector& f_contact, double loss, bool sliding);
   /// Kinetic and strain energy, momentum and total of the state (u, v); collective.
   void measure_state(const Vector& u, const Vector& v);
 
@@ -122,6 +123,7 @@ class DynamicProblem : public NonlinearProblem {
   Teuchos::RCP<Matrix> mass_free_;  ///< M with the prescribed rows/columns eliminated
   bool stabilized_contact_ = true;
   bool velocity_update_ = false;
+  bool sliding_update_ = false;  ///< sliding contacts' loss given back along the sliding
   LinearSolver* solver_ = nullptr;
   double residual_floor_ = 0.0;
   EnergyBalance balance_;
