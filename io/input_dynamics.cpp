@@ -47,7 +47,8 @@ void read_dynamics(const Section& grout, Input& input) {
        Key::choice("contact_treatment", {"stabilized", "standard", "velocity_update"},
                    "contact treatment")
            .defaults("stabilized"),
-       Key::choice("sliding", {"tangential", "impact"}, "velocity update of sliding contacts")
+       Key::choice("sliding", {"tangential", "impact", "balanced"},
+                   "velocity update of sliding contacts")
            .defaults("tangential")});
   DynamicsInput& dyn = input.dynamics;
   dyn.enabled = true;
@@ -76,7 +77,8 @@ void read_dynamics(const Section& grout, Input& input) {
   dyn.velocity_update = treatment == "velocity_update";
   if (d.has("sliding") && !dyn.velocity_update)
     d.fail("sliding", "only with contact_treatment: velocity_update");
-  dyn.sliding_update = d.string("sliding") == "tangential";
+  dyn.sliding_update = d.string("sliding") != "impact";
+  dyn.sliding_balance = d.string("sliding") == "balanced";
   for (const MaterialInput& m : input.materials) {
     if (!(m.density > 0.0)) {
       throw InputError(input.file + ": grout/materials/" + m.name +

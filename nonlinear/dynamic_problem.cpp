@@ -12,14 +12,16 @@ namespace grout {
 DynamicProblem::DynamicProblem(MechanicsProblem& problem, int dimension,
                                Teuchos::RCP<const Matrix> mass, const TimeIntegrator& integrator,
                                const std::array<double, 3>& gravity, const Vector& v0,
-                               bool stabilized_contact, bool velocity_update, bool sliding_update)
+                               bool stabilized_contact, bool velocity_update, bool sliding_update,
+                               bool sliding_balance)
     : problem_(problem),
       mass_(std::move(mass)),
       integrator_(integrator),
       dim_(dimension),
       stabilized_contact_(stabilized_contact),
       velocity_update_(stabilized_contact && velocity_update),
-      sliding_update_(stabilized_contact && velocity_update && sliding_update) {
+      sliding_update_(stabilized_contact && velocity_update && sliding_update),
+      sliding_balance_(sliding_update_ && sliding_balance) {
   const auto u_map = mass_->getRowMap();
   num_owned_u_ = int(u_map->getNodeNumElements());
   auto make = [&] { return Teuchos::rcp(new Vector(u_map)); };
@@ -236,6 +238,14 @@ double DynamicProblem::give_back(const Vector& f_contact, double loss, bool slid
   mass_->apply(*work2_, *work_);
   const double a = 0.5 * work2_->dot(*work_), b = v_->dot(*work_);  // collective
   if (!(a > 0.0)) return 0.0;
+  if (loss < 0.0) {
+    // A gain to take out (balanced sliding, b = 2a): the root of a s² + b s − loss = 0
+    // nearest 0, s ∈ [−b/(2a), 0); at most the energy of the motion along w, b²/(4a).
+    const double taken = std::max(loss, -b * b / (4.0 * a));
+    const double root = std::sqrt(std::max(b * b + 4.0 * a * taken, 0.0));
+    v_->update(2.0 * taken / (root + b), *work2_, 1.0);
+    return taken;
+  }
   const double root = std::sqrt(b * b + 4.0 * a * loss);
   const double s = b <= 0.0 ? (root - b) / (2.0 * a) : 2.0 * loss / (root + b);
   v_->update(s, *work2_, 1.0);
@@ -303,6 +313,9 @@ void DynamicProblem::commit_step(const Vector& x) {
     // Sliding contacts (file comment): their closing loss is given back along the sliding.
     const double sliding_loss = sliding_update_ ? -step_energy.closing_sliding : 0.0;
     const double impact_loss = -step_energy.closing - sliding_loss;
+    // Balanced: also the energy of the nodes that stay closed (of either sign; all on
+    // interfaces in contact at the last step), so that the step's contact work is zero.
+    const double balanced_loss = sliding_balance_ ? sliding_loss - step_energy.other : 0.0;
     Vector rhs(u_map), da(u_map);
     rhs.assign(f_contact);
     {
@@ -317,7 +330,12 @@ void DynamicProblem::commit_step(const Vector& x) {
       // bodies) is no impact: no jump (it would reverse the bodies' approach).
       const double scale = balance_.kinetic + balance_.strain;
       if (impact_loss > 1e-12 * scale) balance_.contact_work += give_back(rhs, impact_loss, false);
-      if (sliding_loss > 1e-12 * scale) balance_.contact_work += give_back(rhs, sliding_loss, true);
+      if (sliding_balance_) {
+        if (std::abs(balanced_loss) > 1e-12 * scale)
+          balance_.contact_work += give_back(rhs, balanced_loss, true);
+      } else if (sliding_loss > 1e-12 * scale) {
+        balance_.contact_work += give_back(rhs, sliding_loss, true);
+      }
     }
     f_static_n_->update(-1.0, f_contact, 1.0);
     f_contact_n_->putScalar(0.0);

@@ -590,6 +590,13 @@ TEST(InputDynamics, ReadsSchemeGravityAndInitialVelocity) {
                           "mass: lumped, contact_treatment: velocity_update, sliding: impact")));
   EXPECT_TRUE(impact.dynamics.velocity_update);
   EXPECT_FALSE(impact.dynamics.sliding_update);
+  EXPECT_FALSE(updated.dynamics.sliding_balance);
+  const Input balanced = read_input(
+      write_file("sliding_balanced.yaml",
+                 replaced(dynamic_input, "mass: lumped",
+                          "mass: lumped, contact_treatment: velocity_update, sliding: balanced")));
+  EXPECT_TRUE(balanced.dynamics.sliding_update);
+  EXPECT_TRUE(balanced.dynamics.sliding_balance);
   const Input standard = read_input(write_file(
       "standard.yaml",
       replaced(dynamic_input, "mass: lumped", "mass: lumped, contact_treatment: standard")));
