@@ -119,7 +119,8 @@ void run(const std::string& input_path, const std::string& output_dir,
                            assemble_mass_matrix(solid, input.dynamics.mass == MassKind::lumped),
                            time_integrator_from(input.dynamics), input.gravity,
                            *initial_velocity(solid, mesh, input), input.dynamics.stabilized_contact,
-                           input.dynamics.velocity_update);
+                           input.dynamics.velocity_update, input.dynamics.sliding_update,
+                           input.dynamics.sliding_balance);
     LinearSolver mass_solver(Teuchos::ParameterList(), input.file + ": mass matrix");
     // The dimension picks `auto`'s solver (MUMPS in 3D); without it a 3D mass matrix went to
     // KLU2, whose 3D factorisations are 20-80x slower (docs/performance.md).

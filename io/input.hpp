@@ -102,6 +102,8 @@ struct DynamicsInput {
   MassKind mass = MassKind::consistent;
   bool stabilized_contact = true;  ///< contact_treatment: stabilized (true) or standard
   bool velocity_update = false;    ///< contact_treatment: velocity_update (stabilized, plus)
+  bool sliding_update = true;      ///< velocity_update's sliding: tangential (true) or impact
+  bool sliding_balance = false;    ///< sliding: balanced (tangential, plus the closed nodes)
 };
 
 /// An initial velocity field on the nodes of one element block (`grout/initial_velocity`).

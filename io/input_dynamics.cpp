@@ -46,7 +46,10 @@ void read_dynamics(const Section& grout, Input& input) {
        Key::choice("mass", {"consistent", "lumped"}, "mass matrix").defaults("consistent"),
        Key::choice("contact_treatment", {"stabilized", "standard", "velocity_update"},
                    "contact treatment")
-           .defaults("stabilized")});
+           .defaults("stabilized"),
+       Key::choice("sliding", {"tangential", "impact", "balanced"},
+                   "velocity update of sliding contacts")
+           .defaults("tangential")});
   DynamicsInput& dyn = input.dynamics;
   dyn.enabled = true;
   const std::string scheme = d.string("scheme");
@@ -72,6 +75,10 @@ void read_dynamics(const Section& grout, Input& input) {
   const std::string treatment = d.string("contact_treatment");
   dyn.stabilized_contact = treatment != "standard";
   dyn.velocity_update = treatment == "velocity_update";
+  if (d.has("sliding") && !dyn.velocity_update)
+    d.fail("sliding", "only with contact_treatment: velocity_update");
+  dyn.sliding_update = d.string("sliding") != "impact";
+  dyn.sliding_balance = d.string("sliding") == "balanced";
   for (const MaterialInput& m : input.materials) {
     if (!(m.density > 0.0)) {
       throw InputError(input.file + ": grout/materials/" + m.name +

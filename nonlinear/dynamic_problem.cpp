@@ -12,13 +12,16 @@ namespace grout {
 DynamicProblem::DynamicProblem(MechanicsProblem& problem, int dimension,
                                Teuchos::RCP<const Matrix> mass, const TimeIntegrator& integrator,
                                const std::array<double, 3>& gravity, const Vector& v0,
-                               bool stabilized_contact, bool velocity_update)
+                               bool stabilized_contact, bool velocity_update, bool sliding_update,
+                               bool sliding_balance)
     : problem_(problem),
       mass_(std::move(mass)),
       integrator_(integrator),
       dim_(dimension),
       stabilized_contact_(stabilized_contact),
-      velocity_update_(stabilized_contact && velocity_update) {
+      velocity_update_(stabilized_contact && velocity_update),
+      sliding_update_(stabilized_contact && velocity_update && sliding_update),
+      sliding_balance_(sliding_update_ && sliding_balance) {
   const auto u_map = mass_->getRowMap();
   num_owned_u_ = int(u_map->getNodeNumElements());
   auto make = [&] { return Teuchos::rcp(new Vector(u_map)); };
@@ -180,44 +183,69 @@ void DynamicProblem::start(Vector& x0, LinearSolver& linear) {
   measure_state(*u_, *v_);
 }
 
-double DynamicProblem::give_back(const Vector& f_contact, double loss) {
-  // Per body: the resultant F_b of f_c, the mass m_b = Σ (M 1) over its x dofs, and whether
-  // it has a prescribed dof; summed over the ranks.
-  const int stride = dim_ + 2;
+double DynamicProblem::give_back(const Vector& f_contact, double loss, bool sliding) {
+  // Per body: the resultant F_b of f_c, the mass m_b = Σ (M 1) over its x dofs, whether it
+  // has a prescribed dof, and its momentum P_b = Σ (M v); summed over the ranks.
+  const int stride = 2 * dim_ + 2, mass_at = dim_, held_at = dim_ + 1, p_at = dim_ + 2;
   std::vector<double> local(std::size_t(num_bodies_) * stride, 0.0), sums(local.size(), 0.0);
   work2_->putScalar(1.0);
   mass_->apply(*work2_, *work_);
+  Vector momentum(mass_->getRowMap());
+  mass_->apply(*v_, momentum);
   const auto& u_map = *mass_->getRowMap();
   {
     const auto f = f_contact.getLocalViewHost(Tpetra::Access::ReadOnly);
     const auto m1 = work_->getLocalViewHost(Tpetra::Access::ReadOnly);
+    const auto mv = momentum.getLocalViewHost(Tpetra::Access::ReadOnly);
     for (int i = 0; i < num_owned_u_; ++i) {
       if (body_[i] < 0) continue;
       double* row = &local[std::size_t(body_[i]) * stride];
       const int d = int(u_map.getGlobalElement(i) % dim_);
       row[d] += f(i, 0);
-      if (d == 0) row[dim_] += m1(i, 0);
-      if (!free_[i]) row[dim_ + 1] = 1.0;
+      row[p_at + d] += mv(i, 0);
+      if (d == 0) row[mass_at] += m1(i, 0);
+      if (!free_[i]) row[held_at] = 1.0;
     }
   }
   Teuchos::reduceAll(*u_map.getComm(), Teuchos::REDUCE_SUM, int(local.size()), local.data(),
                      sums.data());
+  // The rigid translation w_b of each free body: −F_b/m_b (impact), or the part of its mean
+  // velocity P_b/m_b normal to F_b (sliding; none without a contact force on it).
+  std::vector<double> w_body(std::size_t(num_bodies_) * dim_, 0.0);
+  for (int b = 0; b < num_bodies_; ++b) {
+    const double* row = &sums[std::size_t(b) * stride];
+    double* w = &w_body[std::size_t(b) * dim_];
+    if (row[held_at] > 0.0 || !(row[mass_at] > 0.0)) continue;  // held, or massless
+    if (!sliding) {
+      for (int d = 0; d < dim_; ++d) w[d] = -row[d] / row[mass_at];
+      continue;
+    }
+    double ff = 0.0, fv = 0.0;
+    for (int d = 0; d < dim_; ++d) ff += row[d] * row[d], fv += row[d] * row[p_at + d];
+    if (!(ff > 0.0)) continue;
+    for (int d = 0; d < dim_; ++d) w[d] = (row[p_at + d] - fv / ff * row[d]) / row[mass_at];
+  }
   {
     auto w = work2_->getLocalViewHost(Tpetra::Access::OverwriteAll);
-    for (int i = 0; i < num_owned_u_; ++i) {
-      w(i, 0) = 0.0;
-      if (body_[i] < 0) continue;
-      const double* row = &sums[std::size_t(body_[i]) * stride];
-      if (row[dim_ + 1] > 0.0 || !(row[dim_] > 0.0)) continue;  // held, or massless
-      w(i, 0) = -row[u_map.getGlobalElement(i) % dim_] / row[dim_];
-    }
+    for (int i = 0; i < num_owned_u_; ++i)
+      w(i, 0) = body_[i] < 0 ? 0.0
+                             : w_body[std::size_t(body_[i]) * dim_ +
+                                      std::size_t(u_map.getGlobalElement(i) % dim_)];
   }
   // ½ s² wᵀMw + s vᵀMw = loss: a s² + b s − loss = 0 with a > 0, loss > 0, so one root is
-  // positive (the jump along the impulse: the contact opens, as after an elastic impact);
-  // the stable form of that root.
+  // positive (impact: the jump along the impulse, the contact opens as after an elastic
+  // impact; sliding: the tangential speed grows); the stable form of that root.
   mass_->apply(*work2_, *work_);
   const double a = 0.5 * work2_->dot(*work_), b = v_->dot(*work_);  // collective
   if (!(a > 0.0)) return 0.0;
+  if (loss < 0.0) {
+    // A gain to take out (balanced sliding, b = 2a): the root of a s² + b s − loss = 0
+    // nearest 0, s ∈ [−b/(2a), 0); at most the energy of the motion along w, b²/(4a).
+    const double taken = std::max(loss, -b * b / (4.0 * a));
+    const double root = std::sqrt(std::max(b * b + 4.0 * a * taken, 0.0));
+    v_->update(2.0 * taken / (root + b), *work2_, 1.0);
+    return taken;
+  }
   const double root = std::sqrt(b * b + 4.0 * a * loss);
   const double s = b <= 0.0 ? (root - b) / (2.0 * a) : 2.0 * loss / (root + b);
   v_->update(s, *work2_, 1.0);
@@ -280,8 +308,14 @@ void DynamicProblem::commit_step(const Vector& x) {
   if (stabilized_contact_ && problem_.has_contact()) {
     // The contact force acted on this step only: a*_{n+1} = a_{n+1} + M⁻¹ f_c,n+1, and
     // neither it nor f_c,n+1 is carried into the next step (file comment).
-    const double closing_loss =
-        velocity_update_ ? -problem_.contact_step_energy().closing : 0.0;  // collective
+    ContactStepEnergy step_energy;
+    if (velocity_update_) step_energy = problem_.contact_step_energy();  // collective
+    // Sliding contacts (file comment): their closing loss is given back along the sliding.
+    const double sliding_loss = sliding_update_ ? -step_energy.closing_sliding : 0.0;
+    const double impact_loss = -step_energy.closing - sliding_loss;
+    // Balanced: also the energy of the nodes that stay closed (of either sign; all on
+    // interfaces in contact at the last step), so that the step's contact work is zero.
+    const double balanced_loss = sliding_balance_ ? sliding_loss - step_energy.other : 0.0;
     Vector rhs(u_map), da(u_map);
     rhs.assign(f_contact);
     {
@@ -295,7 +329,13 @@ void DynamicProblem::commit_step(const Vector& x) {
       // A loss at round-off level (a contact that closes with no gap to close: touching
       // bodies) is no impact: no jump (it would reverse the bodies' approach).
       const double scale = balance_.kinetic + balance_.strain;
-      if (closing_loss > 1e-12 * scale) balance_.contact_work += give_back(rhs, closing_loss);
+      if (impact_loss > 1e-12 * scale) balance_.contact_work += give_back(rhs, impact_loss, false);
+      if (sliding_balance_) {
+        if (std::abs(balanced_loss) > 1e-12 * scale)
+          balance_.contact_work += give_back(rhs, balanced_loss, true);
+      } else if (sliding_loss > 1e-12 * scale) {
+        balance_.contact_work += give_back(rhs, sliding_loss, true);
+      }
     }
     f_static_n_->update(-1.0, f_contact, 1.0);
     f_contact_n_->putScalar(0.0);

@@ -915,13 +915,27 @@ std::vector<GlobalIndex> MechanicsProblem::slave_nodes() const {
 }
 
 ContactStepEnergy MechanicsProblem::contact_step_energy() const {
-  double local[2] = {0.0, 0.0}, global[2] = {0.0, 0.0};
-  for (const auto& c : interfaces_)
-    for (std::size_t q = 0; q < c->owned.size(); ++q)
-      local[c->closing[q] ? 0 : 1] += c->step_energy[q];
-  if (!interfaces_.empty())
-    Teuchos::reduceAll(*map_->getComm(), Teuchos::REDUCE_SUM, 2, local, global);
-  return {global[0], global[1]};
+  // Per interface: the closing and other energies, and its number of slave nodes active at
+  // the last converged state (> 0: the closing nodes of the step are a sliding contact's).
+  const std::size_t n = interfaces_.size();
+  std::vector<double> local(3 * n, 0.0), global(3 * n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& c = *interfaces_[i];
+    for (std::size_t q = 0; q < c.owned.size(); ++q) {
+      local[3 * i + (c.closing[q] ? 0 : 1)] += c.step_energy[q];
+      local[3 * i + 2] += c.committed_active[q] ? 1.0 : 0.0;
+    }
+  }
+  if (n > 0)
+    Teuchos::reduceAll(*map_->getComm(), Teuchos::REDUCE_SUM, int(3 * n), local.data(),
+                       global.data());
+  ContactStepEnergy out;
+  for (std::size_t i = 0; i < n; ++i) {
+    out.closing += global[3 * i];
+    out.other += global[3 * i + 1];
+    if (global[3 * i + 2] > 0.0) out.closing_sliding += global[3 * i];
+  }
+  return out;
 }
 
 void MechanicsProblem::commit_step() {

@@ -54,10 +54,14 @@ struct ContactFields {
 /// contact_step_energy): per slave node j, e_j = −½ λ_j·(D_jj Δx_j − Σ_l M_jl Δx_l) with the
 /// evaluation's D, M (Σ_j e_j = −½ f_c·Δu, the contact term of a step's energy balance under
 /// the stabilised dynamics of DynamicProblem), summed over the nodes that close in the step
-/// (active now, not at the last converged state) and over the others.
+/// (active now, not at the last converged state) and over the others. closing_sliding: the
+/// part of `closing` on interfaces that had active slave nodes at the last converged state
+/// (the contact moves on to new slave nodes, as when a body slides over a curved, faceted
+/// surface), the rest is new impacts.
 struct ContactStepEnergy {
   double closing = 0.0;
   double other = 0.0;
+  double closing_sliding = 0.0;
 };
 
 class MechanicsProblem : public NonlinearProblem {

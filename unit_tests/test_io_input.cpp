@@ -583,6 +583,20 @@ TEST(InputDynamics, ReadsSchemeGravityAndInitialVelocity) {
       replaced(dynamic_input, "mass: lumped", "mass: lumped, contact_treatment: velocity_update")));
   EXPECT_TRUE(updated.dynamics.stabilized_contact);
   EXPECT_TRUE(updated.dynamics.velocity_update);
+  EXPECT_TRUE(updated.dynamics.sliding_update);
+  const Input impact = read_input(
+      write_file("sliding_impact.yaml",
+                 replaced(dynamic_input, "mass: lumped",
+                          "mass: lumped, contact_treatment: velocity_update, sliding: impact")));
+  EXPECT_TRUE(impact.dynamics.velocity_update);
+  EXPECT_FALSE(impact.dynamics.sliding_update);
+  EXPECT_FALSE(updated.dynamics.sliding_balance);
+  const Input balanced = read_input(
+      write_file("sliding_balanced.yaml",
+                 replaced(dynamic_input, "mass: lumped",
+                          "mass: lumped, contact_treatment: velocity_update, sliding: balanced")));
+  EXPECT_TRUE(balanced.dynamics.sliding_update);
+  EXPECT_TRUE(balanced.dynamics.sliding_balance);
   const Input standard = read_input(write_file(
       "standard.yaml",
       replaced(dynamic_input, "mass: lumped", "mass: lumped, contact_treatment: standard")));
@@ -614,6 +628,13 @@ TEST(InputDynamics, ErrorsNameTheKey) {
                    replaced(dynamic_input, "generalized_alpha, rho_infinity: 0.8",
                             "newmark, gamma: 0.9, beta: 0.25"),
                    {"grout/dynamics/beta: must be >= (gamma + 1/2)^2 / 4"});
+  expect_bad_input("sliding_stabilized",
+                   replaced(dynamic_input, "mass: lumped", "mass: lumped, sliding: impact"),
+                   {"grout/dynamics/sliding: only with contact_treatment: velocity_update"});
+  expect_bad_input("sliding_bad",
+                   replaced(dynamic_input, "mass: lumped",
+                            "mass: lumped, contact_treatment: velocity_update, sliding: normal"),
+                   {"grout/dynamics/sliding", "normal"});
 }
 
 }  // namespace
