@@ -282,6 +282,79 @@ struct MortarPairKernel<3> {
 
 namespace detail {
 
+/// The launch shared by mortar_integrate, mortar_integrate_matrices and mortar_integrate_each:
+/// one work item per slave face (gathered and prepared once), looping over its candidates;
+/// pair(p, slave, n_master, xm, s) integrates candidate p and returns its status. capacity:
+/// the number of pair slots the caller has (the candidates' CRS end must fit in it).
+template <int Dim, class ExecSpace, class PairIntegrator>
+MortarStatus mortar_integrate_launch(
+    const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
+    Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
+    Kokkos::View<const double**, typename ExecSpace::memory_space> coords,
+    Kokkos::View<const double**, typename ExecSpace::memory_space> normals,
+    Kokkos::View<const int*, typename ExecSpace::memory_space> candidate_offsets,
+    Kokkos::View<const int*, typename ExecSpace::memory_space> candidates, MultiplierBasis basis,
+    const MortarOptions& options, size_t capacity, const PairIntegrator& pair) {
+  static_assert(Dim == 2 || Dim == 3, "grout::mortar_integrate: Dim must be 2 or 3");
+  const size_t n_s = slave_faces.extent(0);
+  if (static_cast<int>(coords.extent(1)) != Dim || normals.extent(0) != coords.extent(0) ||
+      static_cast<int>(normals.extent(1)) != Dim || candidate_offsets.extent(0) != n_s + 1)
+    return MortarStatus::degenerate;
+  if (candidates.extent(0) < capacity) capacity = candidates.extent(0);
+  int status = 0;
+  Kokkos::parallel_reduce(
+      MortarPairKernel<Dim>::label, Kokkos::RangePolicy<ExecSpace>(space, 0, n_s),
+      KOKKOS_LAMBDA(const int s, int& worst) {
+        using Kernel = MortarPairKernel<Dim>;
+        double xs[max_face_nodes][3], ns[max_face_nodes][3], xm[max_face_nodes][3];
+        const int n_slave = gather_face_coordinates(slave_faces, s, coords, xs);
+        gather_face_coordinates(slave_faces, s, normals, ns);
+        const int begin = candidate_offsets(s), end = candidate_offsets(s + 1);
+        if (end > static_cast<int>(capacity)) {
+          worst = static_cast<int>(MortarStatus::capacity_exceeded);
+          return;
+        }
+        typename Kernel::template SlaveFace<double> slave;
+        Kernel::prepare(n_slave, xs, ns, options, basis, slave);
+        for (int p = begin; p < end; ++p) {
+          const int n_master = gather_face_coordinates(master_faces, candidates(p), coords, xm);
+          const MortarStatus st = pair(p, slave, n_master, xm, s);
+          const int code = st == MortarStatus::no_overlap ? 0 : static_cast<int>(st);
+          worst = code > worst ? code : worst;
+        }
+      },
+      Kokkos::Max<int>(status));
+  status = status > 0 ? status : 0;  // Max starts from INT_MIN (empty range)
+  return static_cast<MortarStatus>(status);
+}
+
+/// Pair integrator of mortar_integrate(_matrices): into the caller's array, results(p).
+template <int Dim, class ResultView>
+struct StorePair {
+  ResultView results;
+  MortarOptions options;
+  template <class SlaveFace>
+  KOKKOS_INLINE_FUNCTION MortarStatus operator()(int p, const SlaveFace& slave, int n_master,
+                                                 const double xm[max_face_nodes][3], int) const {
+    return MortarPairKernel<Dim>::integrate(slave, n_master, xm, options, results(p));
+  }
+};
+
+/// Pair integrator of mortar_integrate_each: into a local Pair, handed to sink(s, p, pair).
+template <int Dim, class Pair, class PairSink>
+struct SinkPair {
+  PairSink sink;
+  MortarOptions options;
+  template <class SlaveFace>
+  KOKKOS_INLINE_FUNCTION MortarStatus operator()(int p, const SlaveFace& slave, int n_master,
+                                                 const double xm[max_face_nodes][3], int s) const {
+    Pair pair;
+    const MortarStatus st = MortarPairKernel<Dim>::integrate(slave, n_master, xm, options, pair);
+    sink(s, p, pair);
+    return st;
+  }
+};
+
 /// The launch of mortar_integrate and mortar_integrate_matrices, for either result type.
 template <int Dim, class ExecSpace, class ResultView>
 MortarStatus mortar_integrate_pairs(
@@ -292,37 +365,9 @@ MortarStatus mortar_integrate_pairs(
     Kokkos::View<const int*, typename ExecSpace::memory_space> candidate_offsets,
     Kokkos::View<const int*, typename ExecSpace::memory_space> candidates, MultiplierBasis basis,
     const MortarOptions& options, ResultView results) {
-  static_assert(Dim == 2 || Dim == 3, "grout::mortar_integrate: Dim must be 2 or 3");
-  const size_t n_s = slave_faces.extent(0);
-  if (static_cast<int>(coords.extent(1)) != Dim || normals.extent(0) != coords.extent(0) ||
-      static_cast<int>(normals.extent(1)) != Dim || candidate_offsets.extent(0) != n_s + 1)
-    return MortarStatus::degenerate;
-  int status = 0;
-  Kokkos::parallel_reduce(
-      MortarPairKernel<Dim>::label, Kokkos::RangePolicy<ExecSpace>(space, 0, n_s),
-      KOKKOS_LAMBDA(const int s, int& worst) {
-        using Kernel = MortarPairKernel<Dim>;
-        double xs[max_face_nodes][3], ns[max_face_nodes][3], xm[max_face_nodes][3];
-        const int n_slave = gather_face_coordinates(slave_faces, s, coords, xs);
-        gather_face_coordinates(slave_faces, s, normals, ns);
-        const int begin = candidate_offsets(s), end = candidate_offsets(s + 1);
-        if (end > static_cast<int>(results.extent(0)) ||
-            end > static_cast<int>(candidates.extent(0))) {
-          worst = static_cast<int>(MortarStatus::capacity_exceeded);
-          return;
-        }
-        typename Kernel::template SlaveFace<double> slave;
-        Kernel::prepare(n_slave, xs, ns, options, basis, slave);
-        for (int p = begin; p < end; ++p) {
-          const int n_master = gather_face_coordinates(master_faces, candidates(p), coords, xm);
-          const MortarStatus st = Kernel::integrate(slave, n_master, xm, options, results(p));
-          const int code = st == MortarStatus::no_overlap ? 0 : static_cast<int>(st);
-          worst = code > worst ? code : worst;
-        }
-      },
-      Kokkos::Max<int>(status));
-  status = status > 0 ? status : 0;  // Max starts from INT_MIN (empty range)
-  return static_cast<MortarStatus>(status);
+  return mortar_integrate_launch<Dim>(
+      space, slave_faces, master_faces, coords, normals, candidate_offsets, candidates, basis,
+      options, results.extent(0), StorePair<Dim, ResultView>{results, options});
 }
 
 /// The launch of mortar_integrate_each: as mortar_integrate_pairs, each pair integrated into a
@@ -336,38 +381,9 @@ MortarStatus mortar_integrate_to_sink(
     Kokkos::View<const int*, typename ExecSpace::memory_space> candidate_offsets,
     Kokkos::View<const int*, typename ExecSpace::memory_space> candidates, MultiplierBasis basis,
     const MortarOptions& options, const PairSink& sink) {
-  static_assert(Dim == 2 || Dim == 3, "grout::mortar_integrate_each: Dim must be 2 or 3");
-  const size_t n_s = slave_faces.extent(0);
-  if (static_cast<int>(coords.extent(1)) != Dim || normals.extent(0) != coords.extent(0) ||
-      static_cast<int>(normals.extent(1)) != Dim || candidate_offsets.extent(0) != n_s + 1)
-    return MortarStatus::degenerate;
-  int status = 0;
-  Kokkos::parallel_reduce(
-      MortarPairKernel<Dim>::label, Kokkos::RangePolicy<ExecSpace>(space, 0, n_s),
-      KOKKOS_LAMBDA(const int s, int& worst) {
-        using Kernel = MortarPairKernel<Dim>;
-        double xs[max_face_nodes][3], ns[max_face_nodes][3], xm[max_face_nodes][3];
-        const int n_slave = gather_face_coordinates(slave_faces, s, coords, xs);
-        gather_face_coordinates(slave_faces, s, normals, ns);
-        const int begin = candidate_offsets(s), end = candidate_offsets(s + 1);
-        if (end > static_cast<int>(candidates.extent(0))) {
-          worst = static_cast<int>(MortarStatus::capacity_exceeded);
-          return;
-        }
-        typename Kernel::template SlaveFace<double> slave;
-        Kernel::prepare(n_slave, xs, ns, options, basis, slave);
-        for (int p = begin; p < end; ++p) {
-          const int n_master = gather_face_coordinates(master_faces, candidates(p), coords, xm);
-          Pair pair;
-          const MortarStatus st = Kernel::integrate(slave, n_master, xm, options, pair);
-          sink(s, p, pair);
-          const int code = st == MortarStatus::no_overlap ? 0 : static_cast<int>(st);
-          worst = code > worst ? code : worst;
-        }
-      },
-      Kokkos::Max<int>(status));
-  status = status > 0 ? status : 0;  // Max starts from INT_MIN (empty range)
-  return static_cast<MortarStatus>(status);
+  return mortar_integrate_launch<Dim>(
+      space, slave_faces, master_faces, coords, normals, candidate_offsets, candidates, basis,
+      options, candidates.extent(0), SinkPair<Dim, Pair, PairSink>{sink, options});
 }
 
 }  // namespace detail
