@@ -25,6 +25,17 @@ from exodus_mesh import Mesh, MeshError, write_exodus  # noqa: E402
 GMSH_TYPES = {3: "QUAD4", 2: "TRI3", 4: "TETRA4", 5: "HEX8"}  # gmsh element type -> Exodus
 
 
+def generate_all_quads():
+    """Mesh the current 2D gmsh model in quadrilaterals only: Frontal-Delaunay for quads
+    (Mesh.Algorithm 6), triangles recombined, then every element subdivided once (the mesh
+    sizes set before are halved by the subdivision)."""
+    import gmsh
+    gmsh.option.setNumber("Mesh.RecombineAll", 1)
+    gmsh.option.setNumber("Mesh.SubdivisionAlgorithm", 1)  # all quads
+    gmsh.option.setNumber("Mesh.Algorithm", 6)
+    gmsh.model.mesh.generate(2)
+
+
 def model_to_mesh(source="gmsh model"):
     """Mesh of the current gmsh model (gmsh initialised, model meshed or loaded)."""
     import gmsh

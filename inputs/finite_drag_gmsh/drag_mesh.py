@@ -26,7 +26,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 from exodus_mesh import MeshError, write_exodus  # noqa: E402
-from gmsh_to_exodus import model_to_mesh  # noqa: E402
+from gmsh_to_exodus import generate_all_quads, model_to_mesh  # noqa: E402
 
 L, HB = 8.0, 5.0  # block
 W, HD, XC = 2.0, 2.0, 4.0  # die width, height, centre
@@ -85,10 +85,7 @@ def build(h, radius):
     gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
     gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
     gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
-    gmsh.option.setNumber("Mesh.RecombineAll", 1)
-    gmsh.option.setNumber("Mesh.SubdivisionAlgorithm", 1)  # all quads
-    gmsh.option.setNumber("Mesh.Algorithm", 6)
-    gmsh.model.mesh.generate(2)
+    generate_all_quads()
 
 
 def main():

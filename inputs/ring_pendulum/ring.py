@@ -19,7 +19,7 @@ import gmsh
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 from exodus_mesh import MeshError, write_exodus  # noqa: E402
-from gmsh_to_exodus import model_to_mesh  # noqa: E402
+from gmsh_to_exodus import generate_all_quads, model_to_mesh  # noqa: E402
 
 
 def circle(g, cx, cy, r):
@@ -57,10 +57,7 @@ def build(h, interior):
         gmsh.option.setNumber("Mesh.MeshSizeMax", 2 * interior)
         gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
         gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
-    gmsh.option.setNumber("Mesh.RecombineAll", 1)
-    gmsh.option.setNumber("Mesh.SubdivisionAlgorithm", 1)  # all quads
-    gmsh.option.setNumber("Mesh.Algorithm", 6)
-    gmsh.model.mesh.generate(2)
+    generate_all_quads()
 
 
 def main():
