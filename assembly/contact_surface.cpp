@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "io/errors.hpp"
+#include "io/mesh_bodies.hpp"
 
 namespace grout {
 
@@ -47,34 +48,12 @@ SurfaceFaces faces_of(const Mesh& mesh, const Input& input, const ContactInput& 
   return faces;
 }
 
-/// The body (connected set of elements, through shared nodes) of every node, as the
-/// smallest node index of its body (union-find over the element connectivity).
-std::vector<GlobalIndex> body_of_nodes(const Mesh& mesh) {
-  std::vector<GlobalIndex> parent(mesh.num_nodes());
-  for (GlobalIndex n = 0; n < GlobalIndex(parent.size()); ++n) parent[n] = n;
-  const auto root = [&](GlobalIndex n) {
-    while (parent[n] != n) n = parent[n] = parent[parent[n]];
-    return n;
-  };
-  for (const ElementBlock& b : mesh.blocks) {
-    for (GlobalIndex e = 0; e < b.num_elements(); ++e) {
-      const GlobalIndex first = root(b.connectivity[e * b.nodes_per_element]);
-      for (int a = 1; a < b.nodes_per_element; ++a) {
-        const GlobalIndex other = root(b.connectivity[e * b.nodes_per_element + a]);
-        if (other != first) parent[std::max(first, other)] = std::min(first, other);
-      }
-    }
-  }
-  for (GlobalIndex n = 0; n < GlobalIndex(parent.size()); ++n) parent[n] = root(n);
-  return parent;
-}
-
 /// A slave face must not lie on a body that carries master faces (a slave side set with
 /// faces of both bodies would put a body in contact with itself).
 void check_bodies(const Mesh& mesh, const Input& input, const ContactInput& contact,
                   const SurfaceFaces& slave, const SurfaceFaces& master) {
-  const std::vector<GlobalIndex> body = body_of_nodes(mesh);
-  std::vector<GlobalIndex> master_bodies;
+  const std::vector<int> body = node_bodies(mesh);  // connected components of the elements
+  std::vector<int> master_bodies;
   for (std::size_t f = 0; f < master.size(); ++f) master_bodies.push_back(body[master.nodes[f][0]]);
   std::sort(master_bodies.begin(), master_bodies.end());
   for (std::size_t f = 0; f < slave.size(); ++f) {
