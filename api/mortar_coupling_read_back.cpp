@@ -133,13 +133,7 @@ void MortarCoupling::Impl::read_back_merge() {
       for (int d = 0; d < dim; ++d) v[d] -= value * coords(position, d);
     }
     M_offsets[r + 1] = M_columns.size();
-    double g = 0.0;
-    for (int d = 0; d < dim; ++d) {
-      const double n = i >= 0 ? nodal_normals(i, d) : 0.0;
-      normals[r * dim + d] = n;
-      g -= n * v[d];
-    }
-    gaps[r] = g;
+    store_row_gap(r, i, v);
     // The pattern: where each of the row's pair entries goes.
     for (int k = row_offsets[r]; k < row_offsets[r + 1]; ++k) {
       const auto [f, a] = faces_of_row[k];
@@ -224,13 +218,7 @@ bool MortarCoupling::Impl::read_back_scatter() {
     }
     for (std::size_t k = M_offsets[r]; k < M_offsets[r + 1]; ++k)
       for (int d = 0; d < dim; ++d) v[d] -= M_values[k] * coords(M_position[k], d);
-    double g = 0.0;
-    for (int d = 0; d < dim; ++d) {
-      const double n = i >= 0 ? nodal_normals(i, d) : 0.0;
-      normals[r * dim + d] = n;
-      g -= n * v[d];
-    }
-    gaps[r] = g;
+    store_row_gap(r, i, v);
   }
   pairs = n_pairs;
   D_crs_ready = FullD;

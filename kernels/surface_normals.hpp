@@ -17,9 +17,9 @@ namespace grout {
 /// \brief Gathers the coordinates of face f (rows of `faces`, −1 padding) into x (unused
 /// components zero). \return the number of face nodes.
 template <class FaceView, class CoordView>
-KOKKOS_INLINE_FUNCTION int gather_face_coordinates(const FaceView& faces, int f,
-                                                   const CoordView& coords,
-                                                   double x[max_face_nodes][3]) {
+KOKKOS_FORCEINLINE_FUNCTION int gather_face_coordinates(const FaceView& faces, int f,
+                                                        const CoordView& coords,
+                                                        double x[max_face_nodes][3]) {
   const int n_cols = static_cast<int>(faces.extent(1));
   const int dim = static_cast<int>(coords.extent(1));
   int n_nodes = 0;
