@@ -130,9 +130,13 @@ void check_ghosting(const Mesh& mesh) {
       EXPECT_TRUE(received.count(GlobalIndex(m))) << "slave " << slave.ids[s] << " master " << m;
     }
   }
-  if (slave.size() > 0) EXPECT_GT(pairs, 0);
+  if (slave.size() > 0) {
+    EXPECT_GT(pairs, 0);
+  }
   // With the slave surface split, no rank needs the whole master surface.
-  if (size > 1) EXPECT_LT(ghost.size(), n_master);
+  if (size > 1) {
+    EXPECT_LT(ghost.size(), n_master);
+  }
 }
 
 TEST(ContactDistribution, GhostsExactlyTheMasterFacesOverlappingTheRegion2D) {
