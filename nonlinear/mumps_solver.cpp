@@ -4,6 +4,11 @@
 #include <dmumps_c.h>
 #include <mpi.h>
 
+#include <cstdint>
+#include <cstdio>
+// After <cstdio> and <cstdint>: scotch.h uses FILE and the fixed-width types.
+#include <scotch.h>
+
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <algorithm>
@@ -37,6 +42,11 @@ MumpsOptions mumps_options_from(const Teuchos::ParameterList& params, const std:
     }
   }
   return options;
+}
+
+void make_scotch_ordering_reproducible() {
+  setenv("SCOTCH_PTHREAD_NUMBER", "1", 0);  // 0: keep the user's value
+  SCOTCH_randomReset();
 }
 
 void limit_blas_threads_under_mpi(int num_ranks) {
@@ -357,6 +367,7 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
     s.m.n = MUMPS_INT(n);
     s.m.nz_loc = MUMPS_INT(s.irn.size());
     s.m.nnz_loc = MUMPS_INT8(s.irn.size());
+    make_scotch_ordering_reproducible();
     s.run(1, "analysis");
     ++s.stats.analyses;
     s.analysed = true;
