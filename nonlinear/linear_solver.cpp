@@ -24,6 +24,19 @@ struct LinearSolver::Impl {
   Teuchos::ParameterList muelu;
   std::string belos_type = "CG";
   std::unique_ptr<MumpsSolver> mumps;  // type: mumps
+  MumpsOptions mumps_options;
+  // Rank 0's 1-rank communicator for the gathered direct solves (split from `parent` once:
+  // MUMPS keeps its analysis per communicator).
+  Teuchos::RCP<const Comm> parent, self;
+
+  // Collective on `comm` the first time it is seen (every rank solves with the same maps).
+  Teuchos::RCP<const Comm> self_communicator(const Teuchos::RCP<const Comm>& comm) {
+    if (parent.get() != comm.get()) {
+      parent = comm;
+      self = comm->split(comm->getRank() == 0 ? 0 : 1, comm->getRank());
+    }
+    return self;
+  }
   // --- condensed multipliers ---
   bool belos_type_given = false;
   bool condense = false, condense_given = false;
@@ -49,7 +62,7 @@ struct LinearSolver::Impl {
 // count, which the 2D point-contact and Hertz cases amplify (docs/performance.md, "MUMPS as
 // the default direct solver in 3D").
 std::string default_direct_type(int dim) {
-  return dim == 3 ? "mumps" : "amesos2";
+  return dim == 3 ? "mumps" : "mumps_gathered";
 }
 
 // 3D: MUMPS against Belos (docs/performance.md, "MUMPS as the default direct solver in 3D" and
@@ -71,11 +84,9 @@ LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::stri
     throw InputError(where + "/type: unknown linear solver '" + impl_->type +
                      "' (expected: auto, mumps, amesos2, belos)");
   }
-  if (impl_->type == "mumps") {
-    impl_->mumps = std::make_unique<MumpsSolver>(mumps_options_from(
-        params.isSublist("MUMPS") ? params.sublist("MUMPS") : Teuchos::ParameterList(),
-        where + "/MUMPS"));
-  }
+  impl_->mumps_options = mumps_options_from(
+      params.isSublist("MUMPS") ? params.sublist("MUMPS") : Teuchos::ParameterList(),
+      where + "/MUMPS");
   if (params.isSublist("Belos")) impl_->belos = params.sublist("Belos");
   if (params.isSublist("MueLu")) impl_->muelu = params.sublist("MueLu");
   // --- condensed multipliers ---
@@ -144,9 +155,13 @@ std::uint64_t local_pattern_fingerprint(const Matrix& K) {
   return h;
 }
 
-// Direct solve on rank 0: gather K, b to a map owned by rank 0, copy them onto a 1-rank
-// communicator (KLU2 is only trusted there), solve, scatter x back.
-int solve_direct(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x) {
+// Direct solve on rank 0: gather K, b to a map owned by rank 0, copy them onto rank 0's
+// 1-rank communicator `self` (KLU2 is only trusted there), call solve_on_root(K, b, x) on
+// that copy, scatter x back. The copy is the same matrix, entry for entry, on any number of
+// ranks (Grout's global ids do not depend on the partition).
+template <class SolveOnRoot>
+void solve_gathered(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
+                    const Teuchos::RCP<const Comm>& self, SolveOnRoot&& solve_on_root) {
   const auto comm = K->getRowMap()->getComm();
   const auto& row_map = *K->getRowMap();
   const GO n = GO(row_map.getGlobalNumElements());
@@ -159,7 +174,7 @@ int solve_direct(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x
   Vector b_root(gathered_map), x_root(gathered_map);
   b_root.doExport(b, to_root, Tpetra::INSERT);
 
-  const auto self = comm->split(root ? 0 : 1, comm->getRank());
+  std::string failure;
   if (root) {
     const auto map = Teuchos::rcp(new Map(n, n, 0, self));
     const auto& col_map = *K_root.getColMap();
@@ -174,21 +189,32 @@ int solve_direct(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x
     }
     auto K_self = Teuchos::rcp(new Matrix(map, map, rows, cols, vals));
     K_self->fillComplete(map, map);
-    auto b_self = Teuchos::rcp(new MultiVector(map, 1));
-    auto x_self = Teuchos::rcp(new MultiVector(map, 1));
+    Vector b_self(map), x_self(map);
     {
-      auto bs = b_self->getLocalViewHost(Tpetra::Access::OverwriteAll);
+      auto bs = b_self.getLocalViewHost(Tpetra::Access::OverwriteAll);
       auto br = b_root.getLocalViewHost(Tpetra::Access::ReadOnly);
       for (GO i = 0; i < n; ++i) bs(i, 0) = br(i, 0);
     }
-    auto solver = Amesos2::create<Matrix, MultiVector>("KLU2", K_self, x_self, b_self);
-    solver->symbolicFactorization().numericFactorization().solve();
-    auto xs = x_self->getLocalViewHost(Tpetra::Access::ReadOnly);
+    try {
+      solve_on_root(K_self, b_self, x_self);
+    } catch (const std::exception& e) {
+      failure = e.what();
+      if (failure.empty()) failure = "direct solve failed";
+    }
+    auto xs = x_self.getLocalViewHost(Tpetra::Access::ReadOnly);
     auto xr = x_root.getLocalViewHost(Tpetra::Access::OverwriteAll);
     for (GO i = 0; i < n; ++i) xr(i, 0) = xs(i, 0);
   }
+  // A failure on rank 0 (e.g. a singular matrix) is thrown on every rank alike, so that
+  // Newton cuts the step back everywhere.
+  int length = int(failure.size());
+  Teuchos::broadcast(*comm, 0, Teuchos::outArg(length));
+  if (length > 0) {
+    failure.resize(std::size_t(length));
+    Teuchos::broadcast(*comm, 0, length, &failure[0]);
+    throw std::runtime_error(failure);
+  }
   x.doImport(x_root, to_root, Tpetra::INSERT);
-  return 1;
 }
 
 }  // namespace
@@ -256,12 +282,30 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
 
 int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
                                const std::string& type, const std::string& belos_type) {
-  if (type == "amesos2") return solve_direct(K, b, x);
-  if (type == "mumps") {
-    if (!impl_->mumps)  // type: auto or the direct fallback of belos: MUMPS's defaults
-      impl_->mumps = std::make_unique<MumpsSolver>(
-          mumps_options_from(Teuchos::ParameterList(), "grout/solver/Linear Solver/MUMPS"));
-    impl_->mumps->solve(K, b, x);
+  if (type == "amesos2") {
+    solve_gathered(K, b, x, impl_->self_communicator(K->getRowMap()->getComm()),
+                   [](const Teuchos::RCP<Matrix>& K_self, Vector& b_self, Vector& x_self) {
+                     Amesos2::create<Matrix, MultiVector>(
+                         "KLU2", K_self, Teuchos::rcpFromRef(x_self), Teuchos::rcpFromRef(b_self))
+                         ->symbolicFactorization()
+                         .numericFactorization()
+                         .solve();
+                   });
+    return 1;
+  }
+  if (type == "mumps" || type == "mumps_gathered") {
+    if (!impl_->mumps) impl_->mumps = std::make_unique<MumpsSolver>(impl_->mumps_options);
+    if (type == "mumps" && !impl_->mumps_options.gather) {
+      impl_->mumps->solve(K, b, x);
+      return 1;
+    }
+    // Rank 0 alone, on one BLAS thread: the same operations in the same order on any number
+    // of ranks (MumpsOptions::gather).
+    const SingleBlasThread one_thread;
+    solve_gathered(K, b, x, impl_->self_communicator(K->getRowMap()->getComm()),
+                   [&](const Teuchos::RCP<Matrix>& K_self, Vector& b_self, Vector& x_self) {
+                     impl_->mumps->solve(K_self, b_self, x_self);
+                   });
     return 1;
   }
 

@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 #include <dmumps_c.h>
 #include <mpi.h>
+#include <scotch.h>
 
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Teuchos_TimeMonitor.hpp>
@@ -32,22 +33,57 @@ MumpsOptions mumps_options_from(const Teuchos::ParameterList& params, const std:
     } else if (key == "symmetric") {
       if (!params.isType<bool>(key)) throw InputError(where + "/symmetric: expected true or false");
       options.symmetric = params.get<bool>(key);
+    } else if (key == "gather") {
+      if (!params.isType<bool>(key)) throw InputError(where + "/gather: expected true or false");
+      options.gather = params.get<bool>(key);
     } else {
-      throw InputError("unknown key " + where + "/" + key + " (expected: ordering, symmetric)");
+      throw InputError("unknown key " + where + "/" + key +
+                       " (expected: ordering, symmetric, gather)");
     }
   }
   return options;
 }
 
-void limit_blas_threads_under_mpi(int num_ranks) {
-  if (num_ranks < 2) return;
+namespace {
+
+bool user_set_blas_threads() {
   for (const char* user : {"OPENBLAS_NUM_THREADS", "GOTO_NUM_THREADS", "OMP_NUM_THREADS"})
-    if (std::getenv(user)) return;
-  // OpenBLAS read its environment when it was loaded: set the count through its API, found
-  // at run time (absent with another BLAS, which then keeps its own setting).
-  using SetThreads = void (*)(int);
-  if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
-    set(1);
+    if (std::getenv(user)) return true;
+  return false;
+}
+
+// OpenBLAS read its environment when it was loaded: its thread count is set through its API,
+// found at run time (absent with another BLAS, which then keeps its own setting).
+using SetThreads = void (*)(int);
+using GetThreads = int (*)();
+SetThreads openblas_set() {
+  return reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+}
+GetThreads openblas_get() {
+  return reinterpret_cast<GetThreads>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+}
+
+}  // namespace
+
+void limit_blas_threads_under_mpi(int num_ranks) {
+  if (num_ranks < 2 || user_set_blas_threads()) return;
+  if (const auto set = openblas_set()) set(1);
+}
+
+SingleBlasThread::SingleBlasThread() {
+  if (user_set_blas_threads()) return;
+  const auto set = openblas_set();
+  const auto get = openblas_get();
+  if (!set || !get) return;
+  const int threads = get();
+  if (threads == 1) return;
+  restore_ = threads;
+  set(1);
+}
+
+SingleBlasThread::~SingleBlasThread() {
+  if (restore_ > 0)
+    if (const auto set = openblas_set()) set(restore_);
 }
 
 namespace {
@@ -58,6 +94,20 @@ MUMPS_INT& icntl(DMUMPS_STRUC_C& m, int i) {
 }
 MUMPS_INT infog(const DMUMPS_STRUC_C& m, int i) {
   return m.infog[i - 1];
+}
+
+// SCOTCH 7 (ICNTL(7) = 3, ICNTL(29) = 1) orders with several threads and draws from one
+// pseudo-random generator over the whole process, so the ordering, and with it the
+// factorisation's rounding, changed from run to run and from one analysis to the next of the
+// same matrix (2D Hertz level 3: 9e-8 relative in displ_x between two identical 1-rank runs,
+// docs/performance.md "2D speed and the demo on 2 ranks (demo9)"). One SCOTCH thread (unless
+// the user set SCOTCH_PTHREAD_NUMBER) and the generator reset to a fixed seed before every
+// analysis make the ordering a function of the matrix alone. SCOTCH_randomSeed is looked up
+// at run time in the SCOTCH that MUMPS loaded (absent: nothing to seed).
+void make_scotch_deterministic() {
+  setenv("SCOTCH_PTHREAD_NUMBER", "1", 0);
+  using Seed = void (*)(SCOTCH_Num);
+  if (const auto seed = reinterpret_cast<Seed>(dlsym(RTLD_DEFAULT, "SCOTCH_randomSeed"))) seed(1);
 }
 
 MPI_Comm raw_comm(const Comm& comm) {
@@ -357,6 +407,7 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
     s.m.n = MUMPS_INT(n);
     s.m.nz_loc = MUMPS_INT(s.irn.size());
     s.m.nnz_loc = MUMPS_INT8(s.irn.size());
+    make_scotch_deterministic();
     s.run(1, "analysis");
     ++s.stats.analyses;
     s.analysed = true;
