@@ -110,6 +110,24 @@ void make_scotch_deterministic() {
   if (const auto seed = reinterpret_cast<Seed>(dlsym(RTLD_DEFAULT, "SCOTCH_randomSeed"))) seed(1);
 }
 
+// The position in `pattern` (sorted, unique) of every key; false if a key is not in it.
+// Increasing keys are found in one forward walk, others by binary search.
+bool locate(const std::vector<long long>& pattern, const std::vector<long long>& keys,
+            bool keys_sorted, std::vector<std::size_t>& position) {
+  position.assign(keys.size(), 0);
+  auto it = pattern.begin();
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    if (keys_sorted) {
+      while (it != pattern.end() && *it < keys[k]) ++it;
+    } else {
+      it = std::lower_bound(pattern.begin(), pattern.end(), keys[k]);
+    }
+    if (it == pattern.end() || *it != keys[k]) return false;
+    position[k] = std::size_t(it - pattern.begin());
+  }
+  return true;
+}
+
 MPI_Comm raw_comm(const Comm& comm) {
   if (const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm))
     return (*mpi->getRawMpiComm())();
@@ -355,22 +373,16 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   // of the analysed pattern that the matrix lacks are explicit zeros. A new entry leads to
   // a new analysis of the union of both patterns, or of the new pattern alone if the union
   // would be more than twice its size.
+  // Keys in increasing order (the gathered matrix: rows in order, each row's columns in
+  // order) are looked up in one forward walk and need no sort.
+  const bool keys_sorted = std::is_sorted(keys.begin(), keys.end());
   int missing = 0;
-  if (!(s.analysed && s.n == n && keys == s.last_keys)) {
-    s.position.assign(keys.size(), 0);
-    for (std::size_t k = 0; k < keys.size(); ++k) {
-      const auto it = std::lower_bound(s.pattern.begin(), s.pattern.end(), keys[k]);
-      if (!s.analysed || s.n != n || it == s.pattern.end() || *it != keys[k]) {
-        missing = 1;
-        break;
-      }
-      s.position[k] = std::size_t(it - s.pattern.begin());
-    }
-  }
+  if (!(s.analysed && s.n == n && keys == s.last_keys))
+    missing = int(!(s.analysed && s.n == n && locate(s.pattern, keys, keys_sorted, s.position)));
   MPI_Allreduce(MPI_IN_PLACE, &missing, 1, MPI_INT, MPI_MAX, mpi_comm);
   if (missing) {
     std::vector<long long> sorted = keys;
-    std::sort(sorted.begin(), sorted.end());
+    if (!keys_sorted) std::sort(sorted.begin(), sorted.end());
     sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
     std::vector<long long> merged;
     if (s.analysed && s.n == n) {
@@ -386,10 +398,7 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
       s.irn[e] = MUMPS_INT(s.pattern[e] / n) + 1;
       s.jcn[e] = MUMPS_INT(s.pattern[e] % n) + 1;
     }
-    s.position.resize(keys.size());
-    for (std::size_t k = 0; k < keys.size(); ++k)
-      s.position[k] = std::size_t(std::lower_bound(s.pattern.begin(), s.pattern.end(), keys[k]) -
-                                  s.pattern.begin());
+    locate(s.pattern, keys, keys_sorted, s.position);
   }
   s.last_keys.swap(keys);
 
