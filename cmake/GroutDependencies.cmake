@@ -36,7 +36,6 @@ find_library(MUPARSER_LIBRARY NAMES muparser REQUIRED)
 find_path(MUMPS_INCLUDE_DIR dmumps_c.h REQUIRED)
 find_library(MUMPS_DMUMPS_LIBRARY NAMES dmumps_ptscotch REQUIRED)
 find_library(MUMPS_COMMON_LIBRARY NAMES mumps_common_ptscotch REQUIRED)
-# SCOTCH (libscotch-dev, which libmumps-ptscotch-dev pulls in): MumpsSolver resets its random
-# generator before each analysis (nonlinear/mumps_solver.hpp, make_scotch_ordering_reproducible).
+# SCOTCH's header (libscotch-dev, which libptscotch-dev pulls in): MumpsSolver seeds the
+# SCOTCH that MUMPS loaded, found at run time (nonlinear/mumps_solver.cpp).
 find_path(SCOTCH_INCLUDE_DIR scotch.h PATH_SUFFIXES scotch REQUIRED)
-find_library(SCOTCH_LIBRARY NAMES scotch REQUIRED)

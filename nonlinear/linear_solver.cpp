@@ -1,12 +1,15 @@
 #include "nonlinear/linear_solver.hpp"
 
+#include <mpi.h>
 #include <Amesos2.hpp>
 #include <BelosSolverFactory.hpp>
 #include <BelosTpetraAdapter.hpp>
 #include <MueLu_CreateTpetraPreconditioner.hpp>
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <algorithm>
+#include <climits>
 #include <cstdint>
 #include <cstdio>
 #include <stdexcept>
@@ -24,6 +27,20 @@ struct LinearSolver::Impl {
   Teuchos::ParameterList muelu;
   std::string belos_type = "CG";
   std::unique_ptr<MumpsSolver> mumps;  // type: mumps
+  MumpsOptions mumps_options;
+  MumpsOptions gathered_options;  // mumps_options for the gathered solves (ordering: amd)
+  // Rank 0's 1-rank communicator for the gathered direct solves (split from `parent` once:
+  // MUMPS keeps its analysis per communicator).
+  Teuchos::RCP<const Comm> parent, self;
+
+  // Collective on `comm` the first time it is seen (every rank solves with the same maps).
+  Teuchos::RCP<const Comm> self_communicator(const Teuchos::RCP<const Comm>& comm) {
+    if (parent.get() != comm.get()) {
+      parent = comm;
+      self = comm->split(comm->getRank() == 0 ? 0 : 1, comm->getRank());
+    }
+    return self;
+  }
   // --- condensed multipliers ---
   bool belos_type_given = false;
   bool condense = false, condense_given = false;
@@ -49,7 +66,7 @@ struct LinearSolver::Impl {
 // count, which the 2D point-contact and Hertz cases amplify (docs/performance.md, "MUMPS as
 // the default direct solver in 3D").
 std::string default_direct_type(int dim) {
-  return dim == 3 ? "mumps" : "amesos2";
+  return dim == 3 ? "mumps" : "mumps_gathered";
 }
 
 // 3D: MUMPS against Belos (docs/performance.md, "MUMPS as the default direct solver in 3D" and
@@ -71,11 +88,15 @@ LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::stri
     throw InputError(where + "/type: unknown linear solver '" + impl_->type +
                      "' (expected: auto, mumps, amesos2, belos)");
   }
-  if (impl_->type == "mumps") {
-    impl_->mumps = std::make_unique<MumpsSolver>(mumps_options_from(
-        params.isSublist("MUMPS") ? params.sublist("MUMPS") : Teuchos::ParameterList(),
-        where + "/MUMPS"));
-  }
+  const Teuchos::ParameterList mumps =
+      params.isSublist("MUMPS") ? params.sublist("MUMPS") : Teuchos::ParameterList();
+  impl_->mumps_options = mumps_options_from(mumps, where + "/MUMPS");
+  // The gathered solve orders with AMD unless told otherwise: on 2D Hertz (19 k and 75 k
+  // unknowns) SCOTCH's nested dissection cost more in its analyses than it saved in the
+  // factorisations (docs/performance.md, "2D speed and the demo on 2 ranks (demo9)").
+  impl_->gathered_options = impl_->mumps_options;
+  impl_->gathered_options.gather = true;
+  if (!mumps.isParameter("ordering")) impl_->gathered_options.ordering = "amd";
   if (params.isSublist("Belos")) impl_->belos = params.sublist("Belos");
   if (params.isSublist("MueLu")) impl_->muelu = params.sublist("MueLu");
   // --- condensed multipliers ---
@@ -144,51 +165,140 @@ std::uint64_t local_pattern_fingerprint(const Matrix& K) {
   return h;
 }
 
-// Direct solve on rank 0: gather K, b to a map owned by rank 0, copy them onto a 1-rank
-// communicator (KLU2 is only trusted there), solve, scatter x back.
-int solve_direct(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x) {
-  const auto comm = K->getRowMap()->getComm();
-  const auto& row_map = *K->getRowMap();
-  const GO n = GO(row_map.getGlobalNumElements());
-  const bool root = comm->getRank() == 0;
-  const auto gathered_map = Teuchos::rcp(new Map(n, root ? n : 0, 0, comm));
-  const Export to_root(K->getRowMap(), gathered_map);
-  Matrix K_root(gathered_map, 0);
-  K_root.doExport(*K, to_root, Tpetra::INSERT);
-  K_root.fillComplete(gathered_map, gathered_map);
-  Vector b_root(gathered_map), x_root(gathered_map);
-  b_root.doExport(b, to_root, Tpetra::INSERT);
+MPI_Comm raw_mpi_comm(const Comm& comm) {
+  if (const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm))
+    return (*mpi->getRawMpiComm())();
+  return MPI_COMM_SELF;
+}
 
-  const auto self = comm->split(root ? 0 : 1, comm->getRank());
-  if (root) {
-    const auto map = Teuchos::rcp(new Map(n, n, 0, self));
-    const auto& col_map = *K_root.getColMap();
-    const auto local = K_root.getLocalMatrixHost();
-    Kokkos::View<std::size_t*> rows("grout::direct_rows", n + 1);
-    Kokkos::View<LO*> cols("grout::direct_cols", local.nnz());
-    Kokkos::View<double*> vals("grout::direct_vals", local.nnz());
-    for (GO i = 0; i <= n; ++i) rows(i) = local.graph.row_map(i);
+// Direct solve on rank 0: gather K's rows and b to rank 0 (plain arrays, one gatherv each),
+// build there the whole matrix on rank 0's 1-rank communicator `self` (KLU2 is only trusted
+// there), with the rows in global-id order and each row's entries in column order, call
+// solve_on_root(K, b, x) on it, broadcast x. The matrix built is the same, entry for entry
+// and in the same order, on any number of ranks (Grout's global ids do not depend on the
+// partition). A failure on rank 0 (e.g. a singular matrix) is thrown on every rank alike, so
+// that Newton cuts the step back everywhere.
+template <class SolveOnRoot>
+void solve_gathered(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
+                    const Teuchos::RCP<const Comm>& self, SolveOnRoot&& solve_on_root) {
+  const auto comm = K->getRowMap()->getComm();
+  const int ranks = comm->getSize();
+  const bool root = comm->getRank() == 0;
+  const auto& row_map = *K->getRowMap();
+  const auto& col_map = *K->getColMap();
+  const auto local = K->getLocalMatrixHost();
+  const LO n_local = LO(row_map.getNodeNumElements());
+  const GO n = GO(row_map.getGlobalNumElements());
+  if (n >= GO(INT_MAX) || GO(local.nnz()) >= GO(INT_MAX))
+    throw std::runtime_error("gathered direct solve: more than 2^31 unknowns or entries");
+  if (row_map.getMinAllGlobalIndex() != 0 || row_map.getMaxAllGlobalIndex() != n - 1)
+    throw std::logic_error("gathered direct solve: the row map's global ids must be 0 .. n-1");
+
+  // This rank's rows (global id, entry count), right-hand side and entries.
+  std::vector<GO> my_rows(2 * std::size_t(n_local)), my_cols(local.nnz());
+  std::vector<double> my_b(static_cast<std::size_t>(n_local)), my_values(local.nnz());
+  {
+    auto bv = b.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (LO i = 0; i < n_local; ++i) {
+      my_rows[2 * std::size_t(i)] = row_map.getGlobalElement(i);
+      my_rows[2 * std::size_t(i) + 1] = GO(local.graph.row_map(i + 1) - local.graph.row_map(i));
+      my_b[std::size_t(i)] = bv(i, 0);
+    }
     for (std::size_t p = 0; p < local.nnz(); ++p) {
-      cols(p) = LO(col_map.getGlobalElement(local.graph.entries(p)));
-      vals(p) = local.values(p);
+      my_cols[p] = col_map.getGlobalElement(local.graph.entries(p));
+      my_values[p] = local.values(p);
     }
-    auto K_self = Teuchos::rcp(new Matrix(map, map, rows, cols, vals));
-    K_self->fillComplete(map, map);
-    auto b_self = Teuchos::rcp(new MultiVector(map, 1));
-    auto x_self = Teuchos::rcp(new MultiVector(map, 1));
-    {
-      auto bs = b_self->getLocalViewHost(Tpetra::Access::OverwriteAll);
-      auto br = b_root.getLocalViewHost(Tpetra::Access::ReadOnly);
-      for (GO i = 0; i < n; ++i) bs(i, 0) = br(i, 0);
-    }
-    auto solver = Amesos2::create<Matrix, MultiVector>("KLU2", K_self, x_self, b_self);
-    solver->symbolicFactorization().numericFactorization().solve();
-    auto xs = x_self->getLocalViewHost(Tpetra::Access::ReadOnly);
-    auto xr = x_root.getLocalViewHost(Tpetra::Access::OverwriteAll);
-    for (GO i = 0; i < n; ++i) xr(i, 0) = xs(i, 0);
   }
-  x.doImport(x_root, to_root, Tpetra::INSERT);
-  return 1;
+  const MPI_Comm mpi = raw_mpi_comm(*comm);
+  const int my_counts[2] = {int(n_local), int(local.nnz())};
+  std::vector<int> counts(root ? 2 * static_cast<std::size_t>(ranks) : 0);
+  MPI_Gather(my_counts, 2, MPI_INT, counts.data(), 2, MPI_INT, 0, mpi);
+  std::vector<int> row_counts(static_cast<std::size_t>(ranks)),
+      row_displs(static_cast<std::size_t>(ranks)), pair_counts(static_cast<std::size_t>(ranks)),
+      pair_displs(static_cast<std::size_t>(ranks)), entry_counts(static_cast<std::size_t>(ranks)),
+      entry_displs(static_cast<std::size_t>(ranks));
+  long long total_rows = 0, total_entries = 0;
+  if (root) {
+    for (int r = 0; r < ranks; ++r) {
+      row_counts[r] = counts[2 * r], entry_counts[r] = counts[2 * r + 1];
+      pair_counts[r] = 2 * row_counts[r];
+      row_displs[r] = int(total_rows), pair_displs[r] = int(2 * total_rows);
+      entry_displs[r] = int(total_entries);
+      total_rows += row_counts[r], total_entries += entry_counts[r];
+    }
+  }
+  std::vector<GO> all_rows(root ? 2 * std::size_t(total_rows) : 0),
+      all_cols(root ? std::size_t(total_entries) : 0);
+  std::vector<double> all_b(root ? std::size_t(total_rows) : 0),
+      all_values(root ? std::size_t(total_entries) : 0);
+  MPI_Gatherv(my_rows.data(), 2 * n_local, MPI_LONG_LONG, all_rows.data(), pair_counts.data(),
+              pair_displs.data(), MPI_LONG_LONG, 0, mpi);
+  MPI_Gatherv(my_b.data(), n_local, MPI_DOUBLE, all_b.data(), row_counts.data(), row_displs.data(),
+              MPI_DOUBLE, 0, mpi);
+  MPI_Gatherv(my_cols.data(), my_counts[1], MPI_LONG_LONG, all_cols.data(), entry_counts.data(),
+              entry_displs.data(), MPI_LONG_LONG, 0, mpi);
+  MPI_Gatherv(my_values.data(), my_counts[1], MPI_DOUBLE, all_values.data(), entry_counts.data(),
+              entry_displs.data(), MPI_DOUBLE, 0, mpi);
+
+  std::string failure;
+  std::vector<double> x_all(std::size_t(n), 0.0);
+  if (root) {
+    // Rows in global-id order: start of each gathered row, and the CSR row pointers.
+    std::vector<std::size_t> start(std::size_t(n), 0);
+    Kokkos::View<std::size_t*> row_ptr("grout::direct_rows", n + 1);
+    for (std::size_t i = 0, p = 0; i < std::size_t(total_rows); ++i) {
+      const GO row = all_rows[2 * i], length = all_rows[2 * i + 1];
+      start[std::size_t(row)] = p;
+      row_ptr(row + 1) = std::size_t(length);
+      p += std::size_t(length);
+    }
+    for (GO i = 0; i < n; ++i) row_ptr(i + 1) += row_ptr(i);
+    Kokkos::View<LO*> cols("grout::direct_cols", std::size_t(total_entries));
+    Kokkos::View<double*> values("grout::direct_vals", std::size_t(total_entries));
+    Vector b_self(Teuchos::rcp(new Map(n, n, 0, self))), x_self(b_self.getMap());
+    {
+      auto bs = b_self.getLocalViewHost(Tpetra::Access::OverwriteAll);
+      std::vector<std::pair<GO, double>> row_entries;
+      for (std::size_t i = 0; i < std::size_t(total_rows); ++i) {
+        const GO row = all_rows[2 * i];
+        bs(row, 0) = all_b[i];
+      }
+      for (GO row = 0; row < n; ++row) {
+        const std::size_t from = start[std::size_t(row)];
+        const std::size_t length = row_ptr(row + 1) - row_ptr(row);
+        row_entries.clear();
+        for (std::size_t k = 0; k < length; ++k)
+          row_entries.emplace_back(all_cols[from + k], all_values[from + k]);
+        std::sort(row_entries.begin(), row_entries.end(),
+                  [](const auto& a, const auto& c) { return a.first < c.first; });
+        for (std::size_t k = 0; k < length; ++k) {
+          cols(row_ptr(row) + k) = LO(row_entries[k].first);
+          values(row_ptr(row) + k) = row_entries[k].second;
+        }
+      }
+    }
+    const auto map = b_self.getMap();
+    auto K_self = Teuchos::rcp(new Matrix(map, map, row_ptr, cols, values));
+    K_self->fillComplete(map, map);
+    try {
+      solve_on_root(K_self, b_self, x_self);
+      auto xs = x_self.getLocalViewHost(Tpetra::Access::ReadOnly);
+      for (GO i = 0; i < n; ++i) x_all[std::size_t(i)] = xs(i, 0);
+    } catch (const std::exception& e) {
+      failure = e.what();
+      if (failure.empty()) failure = "direct solve failed";
+    }
+  }
+  int length = int(failure.size());
+  Teuchos::broadcast(*comm, 0, Teuchos::outArg(length));
+  if (length > 0) {
+    failure.resize(std::size_t(length));
+    Teuchos::broadcast(*comm, 0, length, &failure[0]);
+    throw std::runtime_error(failure);
+  }
+  if (ranks > 1) MPI_Bcast(x_all.data(), int(n), MPI_DOUBLE, 0, mpi);
+  auto xv = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  for (LO i = 0; i < n_local; ++i) xv(i, 0) = x_all[std::size_t(row_map.getGlobalElement(i))];
 }
 
 }  // namespace
@@ -256,12 +366,33 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
 
 int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
                                const std::string& type, const std::string& belos_type) {
-  if (type == "amesos2") return solve_direct(K, b, x);
-  if (type == "mumps") {
-    if (!impl_->mumps)  // type: auto or the direct fallback of belos: MUMPS's defaults
-      impl_->mumps = std::make_unique<MumpsSolver>(
-          mumps_options_from(Teuchos::ParameterList(), "grout/solver/Linear Solver/MUMPS"));
-    impl_->mumps->solve(K, b, x);
+  if (type == "amesos2") {
+    solve_gathered(K, b, x, impl_->self_communicator(K->getRowMap()->getComm()),
+                   [](const Teuchos::RCP<Matrix>& K_self, Vector& b_self, Vector& x_self) {
+                     Amesos2::create<Matrix, MultiVector>(
+                         "KLU2", K_self, Teuchos::rcpFromRef(x_self), Teuchos::rcpFromRef(b_self))
+                         ->symbolicFactorization()
+                         .numericFactorization()
+                         .solve();
+                   });
+    return 1;
+  }
+  if (type == "mumps" || type == "mumps_gathered") {
+    const bool gather = type == "mumps_gathered" || impl_->mumps_options.gather;
+    if (!impl_->mumps)
+      impl_->mumps =
+          std::make_unique<MumpsSolver>(gather ? impl_->gathered_options : impl_->mumps_options);
+    if (!gather) {
+      impl_->mumps->solve(K, b, x);
+      return 1;
+    }
+    // Rank 0 alone, on one BLAS thread: the same operations in the same order on any number
+    // of ranks (MumpsOptions::gather).
+    const SingleBlasThread one_thread;
+    solve_gathered(K, b, x, impl_->self_communicator(K->getRowMap()->getComm()),
+                   [&](const Teuchos::RCP<Matrix>& K_self, Vector& b_self, Vector& x_self) {
+                     impl_->mumps->solve(K_self, b_self, x_self);
+                   });
     return 1;
   }
 

@@ -1,12 +1,15 @@
 #pragma once
 // Linear solves K x = b, chosen by the `solver/Linear Solver` sublist:
-//   type: auto (default)     the direct solver default_direct_type(dim) (MUMPS in 3D, KLU2
-//                            in 2D) for a system of
-//                            fewer than auto_iterative_threshold(dim) global unknowns,
-//                            otherwise the iterative path (type: belos with its defaults).
+//   type: auto (default)     the direct solver default_direct_type(dim) (MUMPS in 3D; in 2D
+//                            MUMPS on the system gathered to rank 0, "mumps_gathered") for a
+//                            system of fewer than auto_iterative_threshold(dim) global
+//                            unknowns, otherwise the iterative path (type: belos with its
+//                            defaults).
 //   type: mumps              sparse direct MUMPS solve on the distributed matrix
 //                            (nonlinear/mumps_solver.hpp; `MUMPS` sublist: ordering,
-//                            symmetric).
+//                            symmetric, gather). With `gather: true` (what auto does in 2D) the
+//                            system is gathered to rank 0 and factorised there on one BLAS
+//                            thread: the same answer bit for bit on any number of ranks.
 //   type: amesos2            direct KLU2 solve. Debian's KLU2 is silently wrong on a
 //                            communicator of more than one rank (TOOLCHAIN.md), so the
 //                            system is gathered to rank 0 and solved on a 1-rank
@@ -42,7 +45,7 @@
 namespace grout {
 
 /// The direct solver that `type: auto` picks for small systems in `dim` dimensions: mumps in
-/// 3D, amesos2 (KLU2) in 2D.
+/// 3D, mumps_gathered in 2D (MUMPS on rank 0, as `type: mumps` with `MUMPS/gather: true`).
 std::string default_direct_type(int dim);
 /// `type: auto` uses the iterative path from this many global unknowns (u and λ) on.
 long long auto_iterative_threshold(int dim);
@@ -78,7 +81,8 @@ class LinearSolver {
   void set_node_bodies(std::vector<int> body_of_node);
   /// Solves that reused a MueLu hierarchy (`reuse_preconditioner: true`), since construction.
   int reused_hierarchies() const;
-  /// The type of the last solve (auto resolved): amesos2 or belos; empty before any solve.
+  /// The type of the last solve (auto resolved): mumps, mumps_gathered, amesos2 or belos;
+  /// empty before any solve.
   const std::string& last_type() const;
 
  private:

@@ -3,10 +3,6 @@
 #include <dlfcn.h>
 #include <dmumps_c.h>
 #include <mpi.h>
-
-#include <cstdint>
-#include <cstdio>
-// After <cstdio> and <cstdint>: scotch.h uses FILE and the fixed-width types.
 #include <scotch.h>
 
 #include <Teuchos_DefaultMpiComm.hpp>
@@ -37,27 +33,57 @@ MumpsOptions mumps_options_from(const Teuchos::ParameterList& params, const std:
     } else if (key == "symmetric") {
       if (!params.isType<bool>(key)) throw InputError(where + "/symmetric: expected true or false");
       options.symmetric = params.get<bool>(key);
+    } else if (key == "gather") {
+      if (!params.isType<bool>(key)) throw InputError(where + "/gather: expected true or false");
+      options.gather = params.get<bool>(key);
     } else {
-      throw InputError("unknown key " + where + "/" + key + " (expected: ordering, symmetric)");
+      throw InputError("unknown key " + where + "/" + key +
+                       " (expected: ordering, symmetric, gather)");
     }
   }
   return options;
 }
 
-void make_scotch_ordering_reproducible() {
-  setenv("SCOTCH_PTHREAD_NUMBER", "1", 0);  // 0: keep the user's value
-  SCOTCH_randomReset();
+namespace {
+
+bool user_set_blas_threads() {
+  for (const char* user : {"OPENBLAS_NUM_THREADS", "GOTO_NUM_THREADS", "OMP_NUM_THREADS"})
+    if (std::getenv(user)) return true;
+  return false;
 }
 
+// OpenBLAS read its environment when it was loaded: its thread count is set through its API,
+// found at run time (absent with another BLAS, which then keeps its own setting).
+using SetThreads = void (*)(int);
+using GetThreads = int (*)();
+SetThreads openblas_set() {
+  return reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+}
+GetThreads openblas_get() {
+  return reinterpret_cast<GetThreads>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+}
+
+}  // namespace
+
 void limit_blas_threads_under_mpi(int num_ranks) {
-  if (num_ranks < 2) return;
-  for (const char* user : {"OPENBLAS_NUM_THREADS", "GOTO_NUM_THREADS", "OMP_NUM_THREADS"})
-    if (std::getenv(user)) return;
-  // OpenBLAS read its environment when it was loaded: set the count through its API, found
-  // at run time (absent with another BLAS, which then keeps its own setting).
-  using SetThreads = void (*)(int);
-  if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
-    set(1);
+  if (num_ranks < 2 || user_set_blas_threads()) return;
+  if (const auto set = openblas_set()) set(1);
+}
+
+SingleBlasThread::SingleBlasThread() {
+  if (user_set_blas_threads()) return;
+  const auto set = openblas_set();
+  const auto get = openblas_get();
+  if (!set || !get) return;
+  const int threads = get();
+  if (threads == 1) return;
+  restore_ = threads;
+  set(1);
+}
+
+SingleBlasThread::~SingleBlasThread() {
+  if (restore_ > 0)
+    if (const auto set = openblas_set()) set(restore_);
 }
 
 namespace {
@@ -68,6 +94,38 @@ MUMPS_INT& icntl(DMUMPS_STRUC_C& m, int i) {
 }
 MUMPS_INT infog(const DMUMPS_STRUC_C& m, int i) {
   return m.infog[i - 1];
+}
+
+// SCOTCH 7 (ICNTL(7) = 3, ICNTL(29) = 1) orders with several threads and draws from one
+// pseudo-random generator over the whole process, so the ordering, and with it the
+// factorisation's rounding, changed from run to run and from one analysis to the next of the
+// same matrix (2D Hertz level 3: 9e-8 relative in displ_x between two identical 1-rank runs,
+// docs/performance.md "2D speed and the demo on 2 ranks (demo9)"). One SCOTCH thread (unless
+// the user set SCOTCH_PTHREAD_NUMBER) and the generator reset to a fixed seed before every
+// analysis make the ordering a function of the matrix alone. SCOTCH_randomSeed is looked up
+// at run time in the SCOTCH that MUMPS loaded (absent: nothing to seed).
+void make_scotch_deterministic() {
+  setenv("SCOTCH_PTHREAD_NUMBER", "1", 0);
+  using Seed = void (*)(SCOTCH_Num);
+  if (const auto seed = reinterpret_cast<Seed>(dlsym(RTLD_DEFAULT, "SCOTCH_randomSeed"))) seed(1);
+}
+
+// The position in `pattern` (sorted, unique) of every key; false if a key is not in it.
+// Increasing keys are found in one forward walk, others by binary search.
+bool locate(const std::vector<long long>& pattern, const std::vector<long long>& keys,
+            bool keys_sorted, std::vector<std::size_t>& position) {
+  position.assign(keys.size(), 0);
+  auto it = pattern.begin();
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    if (keys_sorted) {
+      while (it != pattern.end() && *it < keys[k]) ++it;
+    } else {
+      it = std::lower_bound(pattern.begin(), pattern.end(), keys[k]);
+    }
+    if (it == pattern.end() || *it != keys[k]) return false;
+    position[k] = std::size_t(it - pattern.begin());
+  }
+  return true;
 }
 
 MPI_Comm raw_comm(const Comm& comm) {
@@ -315,22 +373,16 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   // of the analysed pattern that the matrix lacks are explicit zeros. A new entry leads to
   // a new analysis of the union of both patterns, or of the new pattern alone if the union
   // would be more than twice its size.
+  // Keys in increasing order (the gathered matrix: rows in order, each row's columns in
+  // order) are looked up in one forward walk and need no sort.
+  const bool keys_sorted = std::is_sorted(keys.begin(), keys.end());
   int missing = 0;
-  if (!(s.analysed && s.n == n && keys == s.last_keys)) {
-    s.position.assign(keys.size(), 0);
-    for (std::size_t k = 0; k < keys.size(); ++k) {
-      const auto it = std::lower_bound(s.pattern.begin(), s.pattern.end(), keys[k]);
-      if (!s.analysed || s.n != n || it == s.pattern.end() || *it != keys[k]) {
-        missing = 1;
-        break;
-      }
-      s.position[k] = std::size_t(it - s.pattern.begin());
-    }
-  }
+  if (!(s.analysed && s.n == n && keys == s.last_keys))
+    missing = int(!(s.analysed && s.n == n && locate(s.pattern, keys, keys_sorted, s.position)));
   MPI_Allreduce(MPI_IN_PLACE, &missing, 1, MPI_INT, MPI_MAX, mpi_comm);
   if (missing) {
     std::vector<long long> sorted = keys;
-    std::sort(sorted.begin(), sorted.end());
+    if (!keys_sorted) std::sort(sorted.begin(), sorted.end());
     sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
     std::vector<long long> merged;
     if (s.analysed && s.n == n) {
@@ -346,10 +398,7 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
       s.irn[e] = MUMPS_INT(s.pattern[e] / n) + 1;
       s.jcn[e] = MUMPS_INT(s.pattern[e] % n) + 1;
     }
-    s.position.resize(keys.size());
-    for (std::size_t k = 0; k < keys.size(); ++k)
-      s.position[k] = std::size_t(std::lower_bound(s.pattern.begin(), s.pattern.end(), keys[k]) -
-                                  s.pattern.begin());
+    locate(s.pattern, keys, keys_sorted, s.position);
   }
   s.last_keys.swap(keys);
 
@@ -367,7 +416,7 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
     s.m.n = MUMPS_INT(n);
     s.m.nz_loc = MUMPS_INT(s.irn.size());
     s.m.nnz_loc = MUMPS_INT8(s.irn.size());
-    make_scotch_ordering_reproducible();
+    make_scotch_deterministic();
     s.run(1, "analysis");
     ++s.stats.analyses;
     s.analysed = true;

@@ -28,6 +28,11 @@ struct MumpsOptions {
   /// true: the matrix is symmetric (MUMPS sym = 2, LDLᵀ of the lower triangle, about half
   /// the work). Only for a matrix known to be symmetric; false (sym = 0, LU) is always safe.
   bool symmetric = false;
+  /// true: the system is gathered to rank 0 and factorised there on one BLAS thread
+  /// (LinearSolver, `gather`): MUMPS then sees the same matrix and does the same operations in
+  /// the same order on any number of ranks, so the answer is the same bit for bit. false: each
+  /// rank hands MUMPS its rows (the fronts are factorised on all ranks; rounding differs).
+  bool gather = false;
 };
 
 /// Reads the `MUMPS` sublist; throws InputError naming `where` + key on a bad value.
@@ -60,19 +65,26 @@ class MumpsSolver {
   std::unique_ptr<Impl> impl_;
 };
 
-/// Debian's SCOTCH 7 orders with several threads, and their scheduling changes the ordering:
-/// the same matrix got a different ordering, so different pivots and round-off, in every run
-/// (3D Hertz, 1.3 k nodes, three runs: factorisation flops 3.5e8, 3.6e8 and 4.0e8,
-/// displacements 1e-17 apart; with AMD, or one SCOTCH thread, bitwise the same), and its
-/// random generator moves on from one analysis to the next. Called before every analysis:
-/// sets SCOTCH_PTHREAD_NUMBER=1 unless the user set it, and resets SCOTCH's generator to its
-/// seed. The ordering then depends on the matrix alone: the same on every run, for every
-/// solver in a process, and on any number of ranks (the analysis runs on rank 0).
-void make_scotch_ordering_reproducible();
-
 /// With more than one MPI rank and OpenBLAS as the BLAS: one OpenBLAS thread per rank, unless
 /// the user set OPENBLAS_NUM_THREADS (or OMP_NUM_THREADS). Ranks and BLAS threads would
 /// otherwise compete for the same cores.
 void limit_blas_threads_under_mpi(int num_ranks);
+
+/// For its lifetime: OpenBLAS on one thread, unless the user set OPENBLAS_NUM_THREADS (or
+/// GOTO_NUM_THREADS, OMP_NUM_THREADS), whose count is then kept; the previous count is
+/// restored at the end. OpenBLAS's rounding depends on its thread count (docs/performance.md,
+/// "MUMPS as the default direct solver in 3D"), and a 1-rank run has 2 threads where a 2-rank
+/// run has 1 (limit_blas_threads_under_mpi): a solve that must not depend on the rank count
+/// runs under this guard. No effect with another BLAS.
+class SingleBlasThread {
+ public:
+  SingleBlasThread();
+  ~SingleBlasThread();
+  SingleBlasThread(const SingleBlasThread&) = delete;
+  SingleBlasThread& operator=(const SingleBlasThread&) = delete;
+
+ private:
+  int restore_ = 0;  // thread count to restore; 0: nothing was changed
+};
 
 }  // namespace grout

@@ -1,10 +1,15 @@
 // Linear solves on 1 and 2 ranks (registered for both): |b − A x| must be small for the
 // direct path (Debian's KLU2 is silently wrong on a multi-rank communicator unless the
-// system is gathered to one rank, TOOLCHAIN.md) and for Belos + MueLu.
+// system is gathered to one rank, TOOLCHAIN.md) and for Belos + MueLu. MUMPS on the gathered
+// system (`MUMPS/gather`, type: auto in 2D) gives the same bits on 2 ranks as on rank 0's
+// own 1-rank communicator, and a singular system fails on every rank.
 
 #include <gtest/gtest.h>
 
 #include <Tpetra_Core.hpp>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
 
 #include "io/errors.hpp"
 #include "nonlinear/linear_solver.hpp"
@@ -29,6 +34,36 @@ Teuchos::RCP<Matrix> tridiagonal(GO n) {
   }
   A->fillComplete();
   return A;
+}
+
+// Nonsymmetric 5-point operator on a g × g grid (large enough for MUMPS's dense fronts to go
+// through the BLAS), rows distributed contiguously over `comm`; b_i = 1 + sin(i).
+// singular: the first row is zero.
+Teuchos::RCP<Matrix> grid(int g, const Teuchos::RCP<const Comm>& comm, bool singular = false) {
+  const GO n = GO(g) * g;
+  const auto map = Teuchos::rcp(new Map(n, 0, comm));
+  auto A = Teuchos::rcp(new Matrix(map, 5));
+  for (LO i = 0; i < LO(map->getNodeNumElements()); ++i) {
+    const GO r = map->getGlobalElement(i), x = r % g, y = r / g;
+    std::vector<GO> cols;
+    std::vector<double> vals;
+    const double s = singular && r == 0 ? 0.0 : 1.0;
+    if (y > 0) cols.push_back(r - g), vals.push_back(s * -1.1);
+    if (x > 0) cols.push_back(r - 1), vals.push_back(s * -0.7);
+    cols.push_back(r), vals.push_back(s * (4.0 + 1e-3 * double(r % 11)));
+    if (x + 1 < g) cols.push_back(r + 1), vals.push_back(s * -1.3);
+    if (y + 1 < g) cols.push_back(r + g), vals.push_back(s * -0.9);
+    A->insertGlobalValues(r, Teuchos::ArrayView<const GO>(cols),
+                          Teuchos::ArrayView<const double>(vals));
+  }
+  A->fillComplete();
+  return A;
+}
+
+void fill_rhs(Vector& b) {
+  auto v = b.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  for (LO i = 0; i < LO(b.getLocalLength()); ++i)
+    v(i, 0) = 1.0 + std::sin(double(b.getMap()->getGlobalElement(i)));
 }
 
 double relative_residual(const Matrix& A, const Vector& x, const Vector& b) {
@@ -80,7 +115,7 @@ TEST(LinearSolver, AutoPicksTheDirectSolverForSmallSystems) {
   }
   EXPECT_GT(auto_iterative_threshold(2), auto_iterative_threshold(3));
   EXPECT_EQ(default_direct_type(3), "mumps");
-  EXPECT_EQ(default_direct_type(2), "amesos2");
+  EXPECT_EQ(default_direct_type(2), "mumps_gathered");
   LinearSolver solver(Teuchos::ParameterList(), "test");
   const auto A = tridiagonal(200);
   Vector b(A->getRowMap()), x(A->getRowMap());
@@ -88,6 +123,59 @@ TEST(LinearSolver, AutoPicksTheDirectSolverForSmallSystems) {
   EXPECT_EQ(solver.solve(A, b, x), 1);
   EXPECT_EQ(solver.last_type(), default_direct_type(2));  // no coordinates given: 2D
   EXPECT_LT(relative_residual(*A, x, b), 1e-10);
+}
+
+TEST(LinearSolver, GatheredMumpsIsCorrectOnAnyRankCount) {
+  Teuchos::ParameterList params;
+  params.set("type", "mumps");
+  params.sublist("MUMPS").set("gather", true);
+  check_solver(params);
+}
+
+// The gathered solve on all ranks against the same system solved on rank 0's own 1-rank
+// communicator: the same bits (on 1 rank both are 1-rank solves).
+TEST(LinearSolver, GatheredMumpsIsTheSameBitForBitOnAnyRankCount) {
+  const int g = 70;
+  const auto comm = Tpetra::getDefaultComm();
+  const auto A = grid(g, comm);
+  Vector b(A->getRowMap()), x(A->getRowMap());
+  fill_rhs(b);
+  LinearSolver all(Teuchos::ParameterList(), "test");  // type: auto, 2D: gathered MUMPS
+  EXPECT_EQ(all.solve(A, b, x), 1);
+  EXPECT_EQ(all.last_type(), "mumps_gathered");
+  EXPECT_LT(relative_residual(*A, x, b), 1e-12);
+  // x gathered to rank 0.
+  const GO n = GO(g) * g;
+  const bool root = comm->getRank() == 0;
+  const auto root_map = Teuchos::rcp(new Map(n, root ? n : 0, 0, comm));
+  Vector x_root(root_map);
+  x_root.doExport(x, Export(A->getRowMap(), root_map), Tpetra::INSERT);
+  const auto self = comm->split(root ? 0 : 1, comm->getRank());
+  if (!root) return;
+  const auto A1 = grid(g, self);
+  Vector b1(A1->getRowMap()), x1(A1->getRowMap());
+  fill_rhs(b1);
+  LinearSolver one(Teuchos::ParameterList(), "test");
+  one.solve(A1, b1, x1);
+  auto a = x_root.getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto c = x1.getLocalViewHost(Tpetra::Access::ReadOnly);
+  GO differing = 0;
+  for (GO i = 0; i < n; ++i)
+    if (std::memcmp(&a(i, 0), &c(i, 0), sizeof(double)) != 0) ++differing;
+  EXPECT_EQ(differing, 0) << "of " << n << " entries";
+}
+
+// A singular system fails on rank 0 and throws on every rank (no rank left waiting).
+TEST(LinearSolver, GatheredSingularSystemThrowsOnEveryRank) {
+  for (const char* type : {"mumps_gathered", "amesos2"}) {
+    Teuchos::ParameterList params;
+    if (std::string(type) == "amesos2") params.set("type", "amesos2");
+    LinearSolver solver(params, "test");
+    const auto A = grid(20, Tpetra::getDefaultComm(), true);
+    Vector b(A->getRowMap()), x(A->getRowMap());
+    fill_rhs(b);
+    EXPECT_THROW(solver.solve(A, b, x), std::runtime_error) << type;
+  }
 }
 
 TEST(LinearSolver, UnknownTypeIsAnInputError) {

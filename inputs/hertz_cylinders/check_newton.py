@@ -6,7 +6,9 @@
    (C ~ |J^-1| |J'|, O(1) here) and F_floor = 1e-12 (round-off of |F| ~ 1e1),
    and the solution agrees with the analytic Hertz half-width and p_max within 5 %.
 2. hertz_cn_2 (c_n = 1e5, 50 x the default E/h) gives the solution of hertz_2 (default c_n)
-   to 1e-8 relative: the augmentation only steers the active-set search (DESIGN.md §2).
+   to 1e-8 relative: the augmentation only steers the active-set search (DESIGN.md §2). The
+   displacement is compared without the upper body's rigid rotation about the centre of its
+   flat face, a nearly singular mode set by round-off (below), which is bounded separately.
 3. hertz_condensed_2 (multipliers condensed, displacement-only system solved by GMRES +
    MueLu to 1e-10) gives the solution of the direct (u, lambda) solve of hertz_2: contact
    pressure to 1e-6, displacement to 1e-4 relative. The displacement difference sits in the
@@ -62,13 +64,50 @@ if abs(p_max / P_MAX - 1) > 0.05:
     failures.append("current geometry p_max %.4f more than 5 %% from %.4f" % (p_max, P_MAX))
 
 # 2. Independence of c_n.
+# The upper half-disc turned rigidly about the centre of its flat face (0, R) slides its
+# curved face along itself: the frictionless contact of two circles does not resist that to
+# first order and the flat face is held in x only, so the Jacobian is nearly singular in this
+# mode, and its amplitude in a converged solution is the round-off of the last linear solve
+# amplified (|F| ~ 1e-12 after it in both runs; between hertz_2 and hertz_cn_2 KLU2 left
+# 1.5e-10 rad, gathered MUMPS 6.3e-10 rad, every other node agreeing to 1e-12:
+# docs/performance.md, "2D speed and the demo on 2 ranks (demo9)"). The displacement is
+# compared without that rotation (least-squares fit over the upper body's nodes) to 1e-8
+# relative, and R θ to 1e-6 of the largest displacement.
+def upper_body_nodes(res):
+    y = res.coordinates()[1]
+    nodes = [np.unique(res.connectivity(b)) for b in range(1, res.num_blocks + 1)]
+    return max(nodes, key=lambda n: y[n].mean())
+
+
+def without_upper_rotation(res, ua, uc):
+    """(difference ua - uc with the upper body's best-fit rotation about (0, R) removed, θ)."""
+    x, y = res.coordinates()[:2]
+    n = len(x)
+    d = ua - uc
+    up = upper_body_nodes(res)
+    # rotation by θ about (0, R): u_x = -θ (y - R), u_y = θ x
+    mode = np.zeros(2 * n)
+    mode[up] = -(y[up] - R)
+    mode[n + up] = x[up]
+    theta = float(mode @ d / (mode @ mode))
+    return d - theta * mode, theta
+
+
 for np_ in (1, 2):
     a, c = Results("np%d/hertz_2.e" % np_), Results("np%d/hertz_cn_2.e" % np_)
     for name in ("contact_pressure", "displacement"):
         if name == "displacement":  # the vector field as a whole (u_x alone is tiny)
             ua = np.concatenate([a.nodal("displ_x"), a.nodal("displ_y")])
             uc = np.concatenate([c.nodal("displ_x"), c.nodal("displ_y")])
-            d = relative_difference(ua, uc)
+            rest, theta = without_upper_rotation(a, ua, uc)
+            scale = max(np.abs(ua).max(), np.abs(uc).max())
+            d = np.abs(rest).max() / scale
+            print("np%d upper body rotation about (0, R): default c_n vs c_n = 1e5: %.2e rad "
+                  "(R theta / max |u| = %.2e; displacement with it %.2e)"
+                  % (np_, theta, R * abs(theta) / scale, relative_difference(ua, uc)))
+            if not R * abs(theta) / scale < 1e-6:
+                failures.append("np%d rotation of the upper body depends on c_n (%.2e rad)"
+                                % (np_, theta))
         else:
             d = relative_difference(a.nodal(name), c.nodal(name))
         print("np%d %s: default c_n vs c_n = 1e5: %.2e" % (np_, name, d))
