@@ -34,9 +34,10 @@
 //      has pairs: the λ-rows left out are those the assignment below does not place; a row
 //      that is round-off next to the node's other λ-rows (the tie of prescribed dofs only,
 //      ĉ (D u_s − Σ M_jl u_l) / D with every u prescribed) is never placed. A full direct
-//      solve of J keeps the noise instead and divides by it (huge λ_t, a master dof pinned
-//      by a round-off row); the condensation matches a direct solve of J with those entries
-//      zeroed and λ_t = 0 imposed.
+//      solve of such a J keeps the noise and divides by it (huge λ_t, a master dof pinned by
+//      a round-off row); the condensation matches a direct solve of J with those entries
+//      zeroed and λ_t = 0 imposed. MechanicsProblem itself writes such a tie as the row
+//      λ_t = 0 (kind A); kind R is the condensation's own guard for any other J.
 // The reduced system lives on the displacement dofs of J's row map (every GID that is not a
 // paired multiplier). Within a node (the pairs whose slave dofs share s / dofs_per_node),
 // the λ-rows are assigned to the node's B/C/D slots by the permutation with the largest

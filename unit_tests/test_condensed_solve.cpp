@@ -3,7 +3,9 @@
 // and with Belos GMRES + MueLu, on a synthetic system with every kind of multiplier row
 // (identity, active frictionless, slip-like, tied, with prescribed slave dofs) and on the
 // Jacobians of MechanicsProblem for two-block contact meshes in 2D and 3D (frictionless,
-// frictional, tied).
+// frictional, tied), with ties whose dofs are all prescribed (round-off or exact zeros in
+// their multiplier's column), and on a tied patch test with symmetry planes across the
+// interface (exact linear field, every solver path).
 
 #include <gtest/gtest.h>
 
