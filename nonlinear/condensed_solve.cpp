@@ -15,7 +15,11 @@ namespace grout {
 
 namespace {
 
-enum Kind : int { kIdentity = 0, kEliminated = 1, kSwapped = 2, kMasterPivot = 3 };
+enum Kind : int { kIdentity = 0, kEliminated = 1, kSwapped = 2, kMasterPivot = 3, kRedundant = 4 };
+
+// A multiplier-column entry |J[r, t]| at most this times the largest one of the whole system
+// is round-off, never a pivot (kind R in the header).
+constexpr double relative_pivot_tolerance = 1e-12;
 
 struct Row {
   std::vector<GO> cols;
@@ -92,22 +96,49 @@ struct MultiplierCondensation::Impl {
     return it == by_slave.end() ? -1 : it->second;
   }
   GO group(int p) const { return slave[p] / dofs_per_node; }
-  /// A slave displacement whose value is known (prescribed: kinds C and D).
+  /// A slave displacement whose value is known (prescribed: kinds C, D and R).
   bool known_slave(int q) const {
-    return q >= 0 && (kind[q] == kSwapped || kind[q] == kMasterPivot);
+    return q >= 0 && (kind[q] == kSwapped || kind[q] == kMasterPivot || kind[q] == kRedundant);
   }
+  /// A multiplier whose value is known (kinds A and R).
+  bool known_lambda(int p) const { return kind[p] == kIdentity || kind[p] == kRedundant; }
   int pair_of_slot(GO g) const {
     const auto it = by_slot.find(g);
     return it == by_slot.end() ? -1 : it->second;
   }
 
+  // The largest |J[r, t]| over the displacement rows r and the paired multipliers t: the
+  // scale of D and M (global; collective).
+  double multiplier_column_scale(const Matrix& J) const {
+    const auto& row_map = *J.getRowMap();
+    const auto& col_map = *J.getColMap();
+    const auto local = J.getLocalMatrixHost();
+    GO first_lambda = std::numeric_limits<GO>::max();
+    for (GO t : lambda) first_lambda = std::min(first_lambda, t);
+    double scale = 0.0, scale_all = 0.0;
+    for (LO i = 0; i < LO(row_map.getNodeNumElements()); ++i) {
+      if (pair_of_lambda(row_map.getGlobalElement(i)) >= 0) continue;
+      for (auto e = local.graph.row_map(i); e < local.graph.row_map(i + 1); ++e) {
+        const GO c = col_map.getGlobalElement(local.graph.entries(e));
+        if (c >= first_lambda && pair_of_lambda(c) >= 0)
+          scale = std::max(scale, std::abs(local.values(e)));
+      }
+    }
+    Teuchos::reduceAll(*J.getRowMap()->getComm(), Teuchos::REDUCE_MAX, scale,
+                       Teuchos::outArg(scale_all));
+    return scale_all;
+  }
+
   // Kind D (see the header): the displacement row r that is no slave dof, not taken by
-  // another pair, with the largest |J[r, t]|; a pair without one stays kind C (collective).
+  // another pair, with the largest |J[r, t]| above round-off (relative_pivot_tolerance ×
+  // multiplier_column_scale); a pair without one is kind R, λ_t = 0 (collective).
   void select_master_pivots(const Matrix& J, std::vector<int> open) {
     const auto comm = J.getRowMap()->getComm();
     const auto& row_map = *J.getRowMap();
     const auto& col_map = *J.getColMap();
     const auto local = J.getLocalMatrixHost();
+    if (open.empty()) return;  // replicated: the same on every rank
+    const double round_off = relative_pivot_tolerance * multiplier_column_scale(J);
     std::unordered_map<GO, int> column_to_open;
     std::vector<GO> taken;
     std::unordered_map<GO, int> candidate_columns;  // every kind D candidate's λ
@@ -132,6 +163,7 @@ struct MultiplierCondensation::Impl {
           const auto it = column_to_open.find(col_map.getGlobalElement(local.graph.entries(e)));
           if (it == column_to_open.end()) continue;
           const int k = it->second;
+          if (std::abs(local.values(e)) <= round_off) continue;  // no coupling: never a pivot
           const double a = penalty * std::abs(local.values(e));
           if (a > best[k] || (a == best[k] && a > 0.0 && g > row[k]))
             best[k] = a, row[k] = g, value[k] = local.values(e);
@@ -148,7 +180,10 @@ struct MultiplierCondensation::Impl {
       std::vector<GO> chosen;
       for (std::size_t k = 0; k < n; ++k) {
         const int p = open[k];
-        if (row_all[k] < 0) continue;  // no candidate row: stays kind C
+        if (row_all[k] < 0) {  // no row holds λ_t above round-off: λ_t = 0 (kind R)
+          kind[p] = kRedundant, lambda_known[p] = 0.0;
+          continue;
+        }
         if (std::find(chosen.begin(), chosen.end(), GO(row_all[k])) != chosen.end()) {
           still_open.push_back(p);  // taken by an earlier pair this round: next round
           continue;
@@ -269,7 +304,7 @@ struct MultiplierCondensation::Impl {
           rhs_out -= v * slave_known[q];
         else
           out[c] += v;
-      } else if (kind[p] == kIdentity) {
+      } else if (known_lambda(p)) {
         rhs_out -= v * lambda_known[p];
       } else if (kind[p] == kSwapped) {
         out[slave[p]] += v;
@@ -408,16 +443,16 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
   m.invert_pivot_block(J);
   m.by_slot.clear();
   for (int p = 0; p < n_pairs; ++p)
-    if (m.kind[p] != kIdentity)
-      m.by_slot[m.kind[p] == kMasterPivot ? m.pivot_row[p] : m.slave[p]] = p;
+    if (!m.known_lambda(p)) m.by_slot[m.kind[p] == kMasterPivot ? m.pivot_row[p] : m.slave[p]] = p;
   {
-    int counts[4] = {0, 0, 0, 0};
-    for (int p = 0; p < n_pairs; ++p) ++counts[std::min(int(m.kind[p]), 3)];
+    int counts[5] = {0, 0, 0, 0, 0};
+    for (int p = 0; p < n_pairs; ++p) ++counts[m.kind[p]];
     m.stats = Statistics();
     m.stats.identity = counts[kIdentity];
     m.stats.eliminated = counts[kEliminated];
     m.stats.swapped = counts[kSwapped];
     m.stats.master_pivots = counts[kMasterPivot];
+    m.stats.redundant = counts[kRedundant];
   }
 
   // 2. The reduced map: the displacement dofs of J's row map.
@@ -431,7 +466,7 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
 
   // 3. Rows needed here: the λ-rows of the nodes of owned B/C slots, then the slave rows of
   //    every eliminated multiplier in the rows to reduce and of the owned multipliers.
-  std::map<GO, std::vector<int>> groups;  // node -> its B/C pairs, of owned B/C slots
+  std::map<GO, std::vector<int>> groups;  // node -> its B/C/D/R pairs, of owned B/C/D slots
   for (GO g : reduced)
     if (const int p = m.pair_of_slot(g); p >= 0) groups[m.group(p)];
   if (!groups.empty())
@@ -472,25 +507,35 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
   std::map<GO, double> assigned_rhs;
   int zero_diagonals = 0;
   for (const auto& [node, pairs] : groups) {
-    const int n = int(pairs.size());
+    // The node's λ-rows (one per pair) fill the slots of its pairs of kinds B, C and D; a
+    // kind R pair has none, so as many of its λ-rows are left out (header).
+    std::vector<int> slots;
+    for (int p : pairs)
+      if (!m.known_lambda(p)) slots.push_back(p);
+    const int n = int(pairs.size()), n_slots = int(slots.size());
     std::vector<std::map<GO, double>> R(n);
-    std::vector<double> r(n);
-    std::vector<std::vector<double>> w(n, std::vector<double>(n, 0.0));  // row i at slot k
+    std::vector<double> r(n), row_max(n, 0.0);
     for (int i = 0; i < n; ++i) {
       m.reduce(m.rows.at(m.lambda[pairs[i]]), R[i], r[i]);
-      double row_max = 0.0;
-      for (const auto& [c, v] : R[i]) row_max = std::max(row_max, std::abs(v));
-      for (int k = 0; k < n; ++k) {
-        const auto it = R[i].find(slot_of(pairs[k]));
-        if (it != R[i].end() && row_max > 0.0) w[i][k] = std::abs(it->second) / row_max;
+      for (const auto& [c, v] : R[i]) row_max[i] = std::max(row_max[i], std::abs(v));
+    }
+    // w[i][k]: row i at slot k. A row that is round-off next to the node's other rows (a
+    // tie whose dofs are all prescribed) fits no slot.
+    const double group_max = *std::max_element(row_max.begin(), row_max.end());
+    std::vector<std::vector<double>> w(n, std::vector<double>(n_slots, 0.0));
+    for (int i = 0; i < n; ++i) {
+      if (row_max[i] <= relative_pivot_tolerance * group_max) continue;
+      for (int k = 0; k < n_slots; ++k) {
+        const auto it = R[i].find(slot_of(slots[k]));
+        if (it != R[i].end()) w[i][k] = std::abs(it->second) / row_max[i];
       }
     }
-    // The permutation (row perm[k] at slot k) maximising Π w; greedy beyond 6 rows.
+    // The rows perm[k] at slots k < n_slots maximising Π w; greedy beyond 6 rows.
     std::vector<int> perm(n), best(n);
     for (int i = 0; i < n; ++i) perm[i] = best[i] = i;
     const auto score = [&](const std::vector<int>& q) {
       double s = 0.0;
-      for (int k = 0; k < n; ++k) s += w[q[k]][k] > 0.0 ? std::log(w[q[k]][k]) : -1e300;
+      for (int k = 0; k < n_slots; ++k) s += w[q[k]][k] > 0.0 ? std::log(w[q[k]][k]) : -1e300;
       return s;
     };
     if (n <= 6) {
@@ -499,15 +544,15 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
         if (const double s = score(perm); s > best_score) best_score = s, best = perm;
     } else {
       std::vector<char> used(n, 0);
-      for (int k = 0; k < n; ++k) {
+      for (int k = 0; k < n_slots; ++k) {
         int choice = -1;
         for (int i = 0; i < n; ++i)
           if (!used[i] && (choice < 0 || w[i][k] > w[choice][k])) choice = i;
         used[choice] = 1, best[k] = choice;
       }
     }
-    for (int k = 0; k < n; ++k) {
-      const GO slot = slot_of(pairs[k]);
+    for (int k = 0; k < n_slots; ++k) {
+      const GO slot = slot_of(slots[k]);
       if (!m.reduced_map->isNodeGlobalElement(slot)) continue;
       const int i = best[k];
       double diagonal = 0.0;
@@ -572,8 +617,10 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
       if (auto it = assigned.find(g); it != assigned.end()) {
         R = &it->second;
         bv(i, 0) = assigned_rhs.at(g);
-      } else if (const int q = m.pair_of_slave(g); q >= 0 && m.kind[q] == kMasterPivot) {
-        // prescribed slave dof whose multiplier a master row eliminates: x_s = b_s / J[s, s]
+      } else if (const int q = m.pair_of_slave(g);
+                 q >= 0 && (m.kind[q] == kMasterPivot || m.kind[q] == kRedundant)) {
+        // prescribed slave dof whose multiplier a master row eliminates or that is redundant:
+        // x_s = b_s / J[s, s]
         const Row& s_row = m.rows.at(g);
         out.clear();
         for (std::size_t e = 0; e < s_row.cols.size(); ++e) out[g] += s_row.vals[e];
@@ -634,7 +681,7 @@ void MultiplierCondensation::expand(const Vector& y, Vector& x) const {
         xv(i, 0) = m.known_slave(q) ? m.slave_known[q] : yv(m.reduced_map->getLocalElement(g), 0);
         continue;
       }
-      if (m.kind[p] == kIdentity) {
+      if (m.known_lambda(p)) {
         xv(i, 0) = m.lambda_known[p];
       } else if (m.kind[p] == kSwapped) {
         xv(i, 0) = y_at(m.slave[p]);

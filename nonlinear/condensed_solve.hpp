@@ -20,9 +20,27 @@
 //      multipliers of row r) into every other row with a λ_t column. Row s stays the
 //      prescribed row x_s = b_s / J[s, s], and a λ-row of the node (the tie, now on the
 //      master dofs) takes slot r. The reduced system keeps only displacement unknowns.
+//      A pivot must be a coupling, not round-off: |J[r, t]| > 1e-12 × the largest |J[r', t']|
+//      over all displacement rows r' and paired multipliers t' (the scale of D and M).
+//   R  as D, but no row other than the prescribed ones holds λ_t above that bound: the slave
+//      dof and every master dof it is tied to are prescribed (a tie on a Dirichlet boundary;
+//      e.g. the dual basis makes M_jl vanish analytically for a master node l whose shape
+//      function is linear over the slave node's support, and the integration leaves ~1e-17
+//      there). λ_t then acts on prescribed dofs only, whose reactions absorb it: it is not
+//      determined by the system (in exact arithmetic J has a zero column t and a λ-row that
+//      constrains prescribed dofs only), and is set to λ_t = 0, the minimum-norm choice: the
+//      Dirichlet reaction carries the load there. Its entries below the bound are dropped as
+//      round-off, row s stays the prescribed row, and the node keeps one λ-row fewer than it
+//      has pairs: the λ-rows left out are those the assignment below does not place; a row
+//      that is round-off next to the node's other λ-rows (the tie of prescribed dofs only,
+//      ĉ (D u_s − Σ M_jl u_l) / D with every u prescribed) is never placed. A full direct
+//      solve of such a J keeps the noise and divides by it (huge λ_t, a master dof pinned by
+//      a round-off row); the condensation matches a direct solve of J with those entries
+//      zeroed and λ_t = 0 imposed. MechanicsProblem itself writes such a tie as the row
+//      λ_t = 0 (kind A); kind R is the condensation's own guard for any other J.
 // The reduced system lives on the displacement dofs of J's row map (every GID that is not a
 // paired multiplier). Within a node (the pairs whose slave dofs share s / dofs_per_node),
-// the λ-rows are assigned to the node's B/C slots by the permutation with the largest
+// the λ-rows are assigned to the node's B/C/D slots by the permutation with the largest
 // product of |diagonal| / max|row|, then each such row is scaled so that its diagonal is
 // positive and as large as |J[s, s]|: the reduced matrix keeps a stiffness-like diagonal
 // (for relaxation smoothers and MueLu); it is not symmetric. The row assignment and scaling
@@ -65,6 +83,7 @@ class MultiplierCondensation {
     int swapped = 0;         ///< pairs of kind C
     int zero_diagonals = 0;  ///< reduced rows left with a zero diagonal (direct solver only)
     int master_pivots = 0;   ///< pairs of kind D
+    int redundant = 0;       ///< pairs of kind R (λ = 0: all its dofs prescribed)
   };
   /// Of the last condense(), global.
   const Statistics& statistics() const;

@@ -646,6 +646,20 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
         c.pressure[q] += m.frames[j].n[a] * c.lambda[q][a];
       for (int a = 0; a < dim; ++a) {
         const GO row = c.lambda_gid(q, a);
+        // A component whose slave dof and every master dof it is tied to (|M_jl| above the
+        // round-off 1e-12 D that the integration leaves where M_jl vanishes) are prescribed:
+        // the tie constrains prescribed values only, λ acts on prescribed rows only and is not
+        // determined; λ = 0 as for a node without master (else the round-off row pins a free
+        // master dof and λ ~ 1e17; condensed_solve.hpp, kind R).
+        bool all_prescribed = !std::isnan(prescribed_[node * dim + a]);
+        for (auto it = m_begin; all_prescribed && it != m_end; ++it)
+          if (std::abs(it->second.value) > 1e-12 * D)
+            all_prescribed = !std::isnan(prescribed_[it->first.second * dim + a]);
+        if (all_prescribed) {
+          add_F_(row, c.lambda[q][a]);
+          add_entry(row, row, 1.0);
+          continue;
+        }
         double v = D * c.u[pos(node)][a];
         add_entry(row, node * dim + a, c.c_hat);
         for (auto it = m_begin; it != m_end; ++it) {

@@ -3,7 +3,9 @@
 // and with Belos GMRES + MueLu, on a synthetic system with every kind of multiplier row
 // (identity, active frictionless, slip-like, tied, with prescribed slave dofs) and on the
 // Jacobians of MechanicsProblem for two-block contact meshes in 2D and 3D (frictionless,
-// frictional, tied).
+// frictional, tied), with ties whose dofs are all prescribed (round-off or exact zeros in
+// their multiplier's column), and on a tied patch test with symmetry planes across the
+// interface (exact linear field, every solver path).
 
 #include <gtest/gtest.h>
 
@@ -48,7 +50,12 @@ struct SlaveSpec {
   int prescribed = -1;  ///< a prescribed component of the slave node, or -1
 };
 
-System synthetic_system(bool zero_diagonal_case) {
+// round_off_tie ≥ 0 adds a tied slave node (node 2) whose x dof and whose masters' x dofs are
+// all prescribed: λ_x of node 2 then acts on prescribed rows only, plus entries of size
+// round_off_tie (0: exact zeros) in a free master row and in its tie row, as the integration
+// leaves where M_jl vanishes analytically; its tie row's right-hand side is 0 (the prescribed
+// values satisfy the tie).
+System synthetic_system(bool zero_diagonal_case, double round_off_tie = -1.0) {
   const auto comm = Tpetra::getDefaultComm();
   const int dim = 2, n_nodes = 16;
   const GO n_u = GO(n_nodes) * dim;
@@ -56,6 +63,10 @@ System synthetic_system(bool zero_diagonal_case) {
       {3, Kind::frictionless},     {9, Kind::inactive},     {10, Kind::tied},   {11, Kind::slip},
       {12, Kind::frictionless, 0}, {13, Kind::inactive, 1}, {14, Kind::slip, 1}};
   if (zero_diagonal_case) slaves.push_back({15, Kind::tied, 0});  // a master row pivots
+  const int redundant_slave = round_off_tie >= 0.0 ? int(slaves.size()) : -1;
+  if (redundant_slave >= 0) slaves.push_back({2, Kind::tied, 0});
+  std::set<GO> prescribed_masters;    // of the redundant tie
+  const int round_off_row = 5 * dim;  // a free master row (node 5, x)
   const std::vector<int> masters = {4, 5, 6, 7, 8};
   std::mt19937 rng(42);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -83,6 +94,11 @@ System synthetic_system(bool zero_diagonal_case) {
       A[{GO(sl.node) * dim + c, lambda(int(j), c)}] = D;
       A[{GO(m1) * dim + c, lambda(int(j), c)}] = -M1;
       A[{GO(m2) * dim + c, lambda(int(j), c)}] = -M2;
+    }
+    if (int(j) == redundant_slave) {
+      prescribed_masters = {GO(m1) * dim, GO(m2) * dim};
+      A[{round_off_row, lambda(int(j), 0)}] = -round_off_tie;
+      A[{lambda(int(j), 0), round_off_row}] = -10.0 * round_off_tie / D;
     }
     const double theta = 3.0 * r(), c_hat = 10.0 + r();
     const double n[2] = {std::cos(theta), std::sin(theta)}, t[2] = {-n[1], n[0]};
@@ -123,12 +139,14 @@ System synthetic_system(bool zero_diagonal_case) {
   std::set<GO> prescribed;
   for (const SlaveSpec& sl : slaves)
     if (sl.prescribed >= 0) prescribed.insert(GO(sl.node) * dim + sl.prescribed);
+  prescribed.insert(prescribed_masters.begin(), prescribed_masters.end());
   for (auto& [key, value] : A)
     if ((prescribed.count(key.first) || prescribed.count(key.second)) && key.first != key.second)
       value = 0.0;
   rhs.resize(n_u + n_lambda);
   for (auto& v : rhs) v = r();
   for (GO g : prescribed) rhs[g] = 0.0;
+  if (redundant_slave >= 0) rhs[lambda(redundant_slave, 0)] = 0.0;
 
   // Map: owned nodes' dofs, then the owned multipliers.
   const int rank = comm->getRank(), size = comm->getSize();
@@ -295,9 +313,75 @@ Teuchos::ParameterList belos_params(int dim, int coarse_max_size = 0) {
   return p;
 }
 
-/// Full direct solve vs condensed solves (amesos2 and, unless skipped, Belos + MueLu).
-void compare(const System& sys, double tolerance, bool with_belos, const std::string& label,
+/// The system the condensation solves, for a full direct solve: a multiplier t whose column
+/// holds nothing above 1e-12 × the largest multiplier-column entry of the displacement rows
+/// and whose λ-row has no diagonal (a tie whose dofs are all prescribed: in exact arithmetic
+/// column t is zero and λ-row t constrains prescribed dofs only) gets λ_t = 0: its column's
+/// round-off is zeroed and its row replaced by λ_t = 0 (condensed_solve.hpp, kind R). Every
+/// other entry is J's. redundant: the number of such multipliers.
+System without_undetermined_multipliers(const System& sys, int* redundant = nullptr) {
+  const auto& J = *sys.J;
+  const auto& row_map = *J.getRowMap();
+  const auto comm = row_map.getComm();
+  std::map<GO, int> pair_of;
+  for (std::size_t p = 0; p < sys.pairing.size(); ++p) pair_of[sys.pairing[p].first] = int(p);
+  const auto local = J.getLocalMatrixHost();
+  const auto column = [&](std::size_t e) {
+    return J.getColMap()->getGlobalElement(local.graph.entries(e));
+  };
+  const std::size_t n = sys.pairing.size();
+  std::vector<double> column_max(n, 0.0), column_max_all(n, 0.0);
+  std::vector<int> diagonal(n, 0), diagonal_all(n, 0);  // λ-row t holds λ_t
+  for (LO i = 0; i < LO(J.getNodeNumRows()); ++i) {
+    if (const auto row = pair_of.find(row_map.getGlobalElement(i)); row != pair_of.end()) {
+      for (auto e = local.graph.row_map(i); e < local.graph.row_map(i + 1); ++e)
+        if (column(e) == row->first && local.values(e) != 0.0) diagonal[row->second] = 1;
+      continue;
+    }
+    for (auto e = local.graph.row_map(i); e < local.graph.row_map(i + 1); ++e)
+      if (const auto it = pair_of.find(column(e)); it != pair_of.end())
+        column_max[it->second] = std::max(column_max[it->second], std::abs(local.values(e)));
+  }
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, int(n), column_max.data(), column_max_all.data());
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, int(n), diagonal.data(), diagonal_all.data());
+  const double scale = n ? *std::max_element(column_max_all.begin(), column_max_all.end()) : 0.0;
+  std::set<GO> undetermined;
+  for (const auto& [t, p] : pair_of)
+    if (column_max_all[p] <= 1e-12 * scale && !diagonal_all[p]) undetermined.insert(t);
+  if (redundant) *redundant = int(undetermined.size());
+
+  System out = sys;
+  out.b = Teuchos::rcp(new Vector(*sys.b, Teuchos::Copy));
+  auto bv = out.b->getLocalViewHost(Tpetra::Access::ReadWrite);
+  const LO n_rows = LO(J.getNodeNumRows());
+  std::vector<std::vector<GO>> cols(n_rows);
+  std::vector<std::vector<double>> vals(n_rows);
+  std::vector<std::size_t> counts(n_rows);
+  for (LO i = 0; i < n_rows; ++i) {
+    if (undetermined.count(row_map.getGlobalElement(i))) {
+      cols[i] = {row_map.getGlobalElement(i)}, vals[i] = {1.0}, bv(i, 0) = 0.0;
+    } else {
+      for (auto e = local.graph.row_map(i); e < local.graph.row_map(i + 1); ++e)
+        if (!undetermined.count(column(e)))
+          cols[i].push_back(column(e)), vals[i].push_back(local.values(e));
+    }
+    counts[i] = cols[i].size();
+  }
+  out.J = Teuchos::rcp(new Matrix(J.getRowMap(), Teuchos::ArrayView<const std::size_t>(counts)));
+  for (LO i = 0; i < n_rows; ++i)
+    out.J->insertGlobalValues(row_map.getGlobalElement(i), Teuchos::ArrayView<const GO>(cols[i]),
+                              Teuchos::ArrayView<const double>(vals[i]));
+  out.J->fillComplete(J.getDomainMap(), J.getRangeMap());
+  return out;
+}
+
+/// Full direct solve vs condensed solves (amesos2 and, unless skipped, Belos + MueLu). The
+/// full solve is of without_undetermined_multipliers(sys); the condensed solutions must also
+/// satisfy sys itself (up to the dropped rows of kind R multipliers: their right-hand side,
+/// the mismatch of prescribed values, which no update can change).
+void compare(const System& given, double tolerance, bool with_belos, const std::string& label,
              int coarse_max_size = 0) {
+  const System sys = without_undetermined_multipliers(given);
   const auto map = sys.J->getRowMap();
   Vector x_full(map), x_direct(map), x_belos(map);
   LinearSolver full(direct_params(false), "test");
@@ -308,7 +392,7 @@ void compare(const System& sys, double tolerance, bool with_belos, const std::st
   LinearSolver direct(direct_params(true), "test");
   direct.set_multiplier_pairing(sys.pairing, sys.dim);
   EXPECT_TRUE(direct.condenses_multipliers());
-  direct.solve(sys.J, *sys.b, x_direct);
+  direct.solve(given.J, *given.b, x_direct);
   EXPECT_LT(relative_difference(x_direct, x_full), tolerance) << label << " (amesos2)";
   EXPECT_LT(relative_residual(*sys.J, x_direct, *sys.b), tolerance) << label << " (amesos2)";
 
@@ -316,7 +400,7 @@ void compare(const System& sys, double tolerance, bool with_belos, const std::st
   LinearSolver belos(belos_params(sys.dim, coarse_max_size), "test");
   belos.set_multiplier_pairing(sys.pairing, sys.dim);
   if (!sys.coordinates.empty()) belos.set_coordinates(sys.coordinates, sys.dim);
-  const int iterations = belos.solve(sys.J, *sys.b, x_belos);
+  const int iterations = belos.solve(given.J, *given.b, x_belos);
   // Solved to a residual of 1e-10 on the multilevel cases: x to the condition number. The 3D
   // frictional one (current geometry: the objective slip's stick rows carry the x·dM terms of
   // weighted_slip.hpp) ends with GMRES's loss of accuracy at an explicit full-system residual
@@ -326,7 +410,7 @@ void compare(const System& sys, double tolerance, bool with_belos, const std::st
   EXPECT_LT(relative_difference(x_belos, x_full), belos_tolerance) << label << " (belos)";
   EXPECT_LT(relative_residual(*sys.J, x_belos, *sys.b), belos_tolerance) << label << " (belos)";
   MultiplierCondensation condensation(sys.pairing, sys.dim);
-  condensation.condense(*sys.J, *sys.b);
+  condensation.condense(*given.J, *given.b);
   const bool fallback = condensation.statistics().zero_diagonals > 0;
   EXPECT_FALSE(fallback) << label << ": the iterative path fell back to the direct solver";
   if (map->getComm()->getRank() == 0)
@@ -372,6 +456,48 @@ TEST(CondensedSolve, PrescribedTiedSlaveDofIsEliminatedWithAMasterRow) {
   compare(sys, 1e-10, true, "synthetic with a prescribed tied slave dof");
 }
 
+// A tied slave dof on a Dirichlet boundary whose masters are prescribed too: its multiplier
+// acts on prescribed rows only, and a free master row holds it as round-off (1e-18) or as an
+// exact zero. Neither is a pivot (kind R): λ = 0, no fallback to the direct solver, the
+// solution of the system with that round-off removed (which J with round-off satisfies to
+// round-off). Node 15's tie keeps its genuine master pivot.
+void check_round_off_tie(double round_off) {
+  char label_text[80];
+  std::snprintf(label_text, sizeof label_text, "synthetic, tie on prescribed dofs, round-off %g",
+                round_off);
+  const std::string label = label_text;
+  const System sys = synthetic_system(true, round_off);
+  MultiplierCondensation condensation(sys.pairing, sys.dim);
+  condensation.condense(*sys.J, *sys.b);
+  const auto& st = condensation.statistics();
+  EXPECT_EQ(st.zero_diagonals, 0) << label;
+  EXPECT_EQ(st.master_pivots, 1) << label;  // node 15
+  EXPECT_EQ(st.redundant, 1) << label;      // node 2, x
+  int redundant = 0;
+  without_undetermined_multipliers(sys, &redundant);
+  EXPECT_EQ(redundant, 1) << label;
+  compare(sys, 1e-10, true, label);
+  // λ_x of node 2 (the 9th slave: GID 32 + 2 × 8) is 0, and the solution satisfies J x = b
+  // as given.
+  Vector x(sys.J->getRowMap());
+  LinearSolver direct(direct_params(true), "test");
+  direct.set_multiplier_pairing(sys.pairing, sys.dim);
+  direct.solve(sys.J, *sys.b, x);
+  EXPECT_LT(relative_residual(*sys.J, x, *sys.b), 1e-12) << label;
+  const GO lambda_x = 32 + 2 * 8;
+  if (sys.J->getRowMap()->isNodeGlobalElement(lambda_x)) {
+    const auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+    EXPECT_EQ(xv(sys.J->getRowMap()->getLocalElement(lambda_x), 0), 0.0) << label;
+  }
+}
+
+TEST(CondensedSolve, TieOnPrescribedDofsWithExactZerosIsNoPivot) {
+  check_round_off_tie(0.0);
+}
+TEST(CondensedSolve, TieOnPrescribedDofsWithRoundOffIsNoPivot) {
+  check_round_off_tie(1e-18);
+}
+
 void check_mechanics(int dim, ContactKind type, double mu, const std::string& label, int refine = 1,
                      int coarse_max_size = 0) {
   MechanicsCase mc;
@@ -383,12 +509,20 @@ void check_mechanics(int dim, ContactKind type, double mu, const std::string& la
   if (mc.sys.J->getRowMap()->getComm()->getRank() == 0)
     std::printf(
         "[condensed] %s: active %d, pairs identity %d eliminated %d swapped %d "
-        "master pivots %d, zero diagonals %d\n",
+        "master pivots %d redundant %d, zero diagonals %d\n",
         label.c_str(), mc.active, st.identity, st.eliminated, st.swapped, st.master_pivots,
-        st.zero_diagonals);
+        st.redundant, st.zero_diagonals);
+  // The ties on the rollers (x of the slave nodes at x = 0, whose masters' x are on the rollers
+  // too; elsewhere M_jl vanishes analytically but for round-off) are λ = 0 rows (kind A) from
+  // the assembly (mechanics_problem.cpp), no master pivot: 1 slave node in 2D, 3 in 3D.
   if (type == ContactKind::tied) {
-    EXPECT_GT(st.master_pivots, 0) << label << ": a slave node on the rollers is tied";
+    EXPECT_EQ(st.identity, dim == 2 ? 1 : 3) << label;
+    EXPECT_EQ(st.master_pivots, 0) << label;
   }
+  // Kind R: the multipliers whose column is round-off only and whose λ-row is no λ = 0 row.
+  int redundant = 0;
+  without_undetermined_multipliers(mc.sys, &redundant);
+  EXPECT_EQ(st.redundant, redundant) << label;
   compare(mc.sys, 1e-8, true, label, coarse_max_size);
 }
 
@@ -409,6 +543,94 @@ TEST(CondensedSolve, MechanicsFrictional3D) {
 }
 TEST(CondensedSolve, MechanicsTied3D) {
   check_mechanics(3, ContactKind::tied, 0.0, "3D tied");
+}
+
+// Tied patch test with symmetry planes across the interface: both blocks of one material,
+// uniaxial compression (bottom u_z = 0, top u_z = −δ), rollers on x = 0 (and y = 0 in 3D) of
+// both blocks. The exact solution is linear: u_z = −ε z, ε = δ / H, and the lateral
+// expansion u_x = ν' ε x (u_y = ν' ε y), ν' = ν in 3D, ν / (1 − ν) in plane strain; the dual
+// mortar tie reproduces it on the non-matching interface. The slave nodes on the rollers are
+// tied to masters on the rollers only (elsewhere M_jl vanishes analytically but for
+// round-off): on main the full direct solve divided by that round-off (λ ~ 1e17, the master
+// dofs next to the plane pinned to u_x = 0). Every solver path (full direct, condensed
+// direct, condensed GMRES + MueLu) must give the exact field in one linear step.
+void check_tied_patch_with_symmetry_planes(int dim) {
+  const auto comm = Tpetra::getDefaultComm();
+  const Mesh mesh = dim == 2 ? two_block_mesh_2d(3, 2, 4, 2) : two_block_mesh_3d(2, 2, 1, 3, 2, 1);
+  Input input = two_block_input(dim, ContactKind::tied, 0.0);
+  for (auto& m : input.materials) m.youngs_modulus = 1000.0;
+  input.dirichlet.clear();
+  const auto fix = [&](const std::string& set, int component, const std::string& value) {
+    DirichletInput d;
+    d.name = set + "_" + std::to_string(component);
+    d.node_set = set;
+    d.component = component;
+    d.value = Expression(value, "test: " + d.name);
+    input.dirichlet.push_back(d);
+  };
+  const double delta = 0.01, nu = 0.3;
+  fix("lower_bottom", dim - 1, "0");
+  fix("upper_top", dim - 1, "-0.01*t");
+  for (const char* body : {"lower_", "upper_"}) {
+    fix(std::string(body) + (dim == 2 ? "left" : "xmin"), 0, "0");
+    if (dim == 3) fix(std::string(body) + "ymin", 1, "0");
+  }
+  SolidProblem solid(mesh, input, comm);
+  const std::vector<double>& X = mesh.coordinates;
+  double height = 0.0;
+  for (std::size_t i = dim - 1; i < X.size(); i += dim) height = std::max(height, X[i]);
+  const double strain = delta / height, lateral = dim == 3 ? nu : nu / (1.0 - nu);
+  const auto exact = [&](GO dof) {
+    const GO node = dof / dim;
+    const int c = int(dof % dim);
+    return c == dim - 1 ? -strain * X[node * dim + c] : lateral * strain * X[node * dim + c];
+  };
+  for (const char* path : {"full direct", "condensed direct", "condensed belos"}) {
+    MechanicsProblem problem(solid, mesh, input);
+    Vector x(problem.map()), F(problem.map()), dx(problem.map());
+    x.putScalar(0.0);
+    problem.begin_step(1.0, x);
+    ASSERT_TRUE(problem.residual(x, F));
+    Teuchos::RCP<Matrix> J;
+    ASSERT_TRUE(problem.jacobian(x, J));
+    Vector b(problem.map());
+    b.update(-1.0, F, 0.0);
+    const std::string p = path;
+    Teuchos::ParameterList params =
+        p == "condensed belos" ? belos_params(dim) : direct_params(p == "condensed direct");
+    LinearSolver solver(params, "test");
+    solver.set_multiplier_pairing(problem.multiplier_pairing(), dim);
+    if (p == "condensed belos") solver.set_coordinates(mesh.coordinates, dim);
+    solver.solve(J, b, dx);
+    x.update(1.0, dx, 1.0);
+    double error = 0.0, error_all = 0.0, lambda_max = 0.0, lambda_max_all = 0.0;
+    const GO n_u = GO(mesh.num_nodes()) * dim;
+    const auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (std::size_t i = 0; i < problem.map()->getNodeNumElements(); ++i) {
+      const GO g = problem.map()->getGlobalElement(LO(i));
+      if (g < n_u)
+        error = std::max(error, std::abs(xv(i, 0) - exact(g)));
+      else
+        lambda_max = std::max(lambda_max, std::abs(xv(i, 0)));
+    }
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, error, Teuchos::outArg(error_all));
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, lambda_max, Teuchos::outArg(lambda_max_all));
+    // |u| ≤ δ = 0.01; the multipliers are the interface stress E ε ~ 10 (areas ≤ 1).
+    EXPECT_LT(error_all, 1e-10 * delta) << dim << "D " << path;
+    EXPECT_LT(lambda_max_all, 100.0) << dim << "D " << path;
+    if (comm->getRank() == 0)
+      std::printf(
+          "[patch] %dD tied, symmetry planes across the interface, %s: max |u - u_exact| "
+          "%.2e, max |lambda| %.3g\n",
+          dim, path, error_all, lambda_max_all);
+  }
+}
+
+TEST(CondensedSolve, TiedPatchTestWithSymmetryPlanesAcrossTheInterface2D) {
+  check_tied_patch_with_symmetry_planes(2);
+}
+TEST(CondensedSolve, TiedPatchTestWithSymmetryPlanesAcrossTheInterface3D) {
+  check_tied_patch_with_symmetry_planes(3);
 }
 
 // Finer meshes and a small coarse grid, so that MueLu builds several levels.
