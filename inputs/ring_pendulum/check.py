@@ -55,7 +55,8 @@ Printed, to tell why a period is off: the pendulum's own energy (the centre of m
 vibration energy of the cylinder, and per half swing the amplitude reached and the period of
 a pendulum of that amplitude.
 Figures: STEM_energy.png (energy history), STEM_trajectory.png (centre angle against the
-pendulum, and the path of the centre).
+pendulum, and the path of the centre), 2D: STEM_rotation.png (rotation, lean of the contact
+force, angular momentum and the time integrals of the contact and elastic moments).
 """
 import argparse
 import csv
@@ -397,6 +398,25 @@ ax2.set_ylabel("y [m]")
 ax2.legend(loc="upper center", fontsize=7)
 fig.tight_layout()
 fig.savefig("%s_trajectory.png" % a.stem, dpi=120)
+
+if xyz.shape[0] == 2:
+    # The rotation and what drives it: the lean of the contact force and the two moments.
+    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(6.4, 5.6), sharex=True)
+    ax1.plot(times, rotation, label="rotation of the cylinder")
+    ax1.plot(times, rot["lean"], ".", ms=2, label="lean of the contact force")
+    for sign in (1, -1):
+        ax1.plot([0, min(T_exact / 2, times[-1])], [sign * 2 * alpha_star] * 2, "k--", lw=0.8,
+                 label="2 alpha* (first swing)" if sign > 0 else None)
+    ax1.set_ylabel("angle [rad]")
+    ax1.legend(loc="lower left", fontsize=7)
+    ax2.plot(times, rot["H"], "k", label="angular momentum H about the centre of mass")
+    ax2.plot(times, np.cumsum(rot["dH_contact"]), label="time integral of the contact moment")
+    ax2.plot(times, np.cumsum(rot["dH_elastic"]), label="... of the elastic moment")
+    ax2.set_xlabel("t [s]")
+    ax2.set_ylabel("[kg m^2/s] per m")
+    ax2.legend(loc="lower left", fontsize=7)
+    fig.tight_layout()
+    fig.savefig("%s_rotation.png" % a.stem, dpi=120)
 
 for msg in failures:
     print("FAIL:", msg)
