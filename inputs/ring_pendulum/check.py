@@ -48,7 +48,8 @@ that a lossy treatment gives: a 3 % energy loss shortens the period by 0.6 %):
   - 2D: the frictionless multipliers have no tangential part (|lam x n| / |lam| < 1e-6 at every
     active slave node, n the averaged slave normal), and the cylinder's angular momentum about
     its centre of mass changes per step by the moment of the contact forces D lam plus that of
-    the elastic forces, to 1e-6 of the largest step change (Newmark's identity, rotation.py):
+    the elastic forces, to 1e-6 of the largest step change (Newmark's identity, rotation.py;
+    it holds for the inputs' scheme: average acceleration, lumped mass, stabilised contact):
     nothing else turns it (not the velocity update);
   - 1 and 2 ranks give the same displacements, velocities and energies to 1e-8.
 Printed, to tell why a period is off: the pendulum's own energy (the centre of mass) and the
