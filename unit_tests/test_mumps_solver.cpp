@@ -95,20 +95,26 @@ TEST(MumpsSolver, SaddlePointSolveReachesRoundOff) {
 }
 
 // SCOTCH's nested dissection draws random numbers; MumpsSolver fixes their seed before each
-// analysis, so that the ordering, the pivots and the rounding depend on the matrix alone. Two
-// solvers (their analyses one after the other in this process, the generator's state moved
-// on) give the same solution to the last bit. The grid is large enough for SCOTCH's
+// analysis, so that the ordering and the pivots depend on the matrix alone. Two solvers
+// (their analyses one after the other in this process, the generator's state moved on) give
+// the same solution to the last bit on one rank. On two ranks MUMPS's dynamic scheduling of
+// the fronts over the ranks follows the timing, so the rounding may differ (4e-16 seen under
+// load): there the solutions agree to round-off. The grid is large enough for SCOTCH's
 // coarsening (a few hundred vertices or fewer are ordered without it).
-TEST(MumpsSolver, SameMatrixSameSolutionBitwise) {
+TEST(MumpsSolver, SameMatrixSameSolutionBitwiseOnOneRank) {
   const auto A = saddle_point(70, 40);
   Vector b(A->getRowMap()), x1(A->getRowMap()), x2(A->getRowMap());
   b.putScalar(1.0);
   MumpsSolver first, second;
   first.solve(A, b, x1);
   second.solve(A, b, x2);
-  Vector d(A->getRowMap());
-  d.update(1.0, x1, -1.0, x2, 0.0);
-  EXPECT_EQ(d.normInf(), 0.0);
+  if (A->getRowMap()->getComm()->getSize() == 1) {
+    Vector d(A->getRowMap());
+    d.update(1.0, x1, -1.0, x2, 0.0);
+    EXPECT_EQ(d.normInf(), 0.0);
+  } else {
+    EXPECT_LT(relative_difference(x1, x2), 1e-13);
+  }
 }
 
 TEST(MumpsSolver, AgreesWithKlu2) {
