@@ -30,6 +30,18 @@ bool is_local_element(const Partition& partition, int rank, GlobalIndex element,
                      [&](GlobalIndex n) { return partition.node_part[n] == rank; });
 }
 
+// The element's size: its largest node distance from node 0 (X: npe points of dim
+// coordinates).
+double element_size(int npe, int dim, const double* X) {
+  double size2 = 0.0;
+  for (int a = 1; a < npe; ++a) {
+    double d2 = 0.0;
+    for (int d = 0; d < dim; ++d) d2 += (X[a * dim + d] - X[d]) * (X[a * dim + d] - X[d]);
+    size2 = std::max(size2, d2);
+  }
+  return std::sqrt(size2);
+}
+
 }  // namespace
 
 SolidProblem::SolidProblem(const Mesh& mesh, const Input& input, Teuchos::RCP<const Comm> comm)
@@ -291,11 +303,18 @@ bool SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
             for (int d = 0; d < dim; ++d) Kokkos::atomic_add(&f_view(k * dim + d), fe[a * dim + d]);
             if (!with_tangent) continue;
             if (finite_strain) {
-              // Round-off of f_int under finite strain: F = I + grad u carries eps |u| |grad N|,
-              // so each row is known to eps sum_k |K_rk| |u_k| (residual_floor).
+              // Round-off of f_int under finite strain (residual_floor): F = I + grad u is
+              // known to eps |grad u| and, through its identity part, to eps absolutely, as is
+              // C = F^T F near I; a strain error eps is that of a displacement error eps h_e
+              // (h_e the element's size). So each row is known to
+              // eps sum_k |K_rk| (|u_k| + h_e). Without h_e a stiff body at rest (the steel
+              // ring of inputs/ring_pendulum, E = 2.069e11, under gravity) stalled at
+              // |F| = 2e-5 far above the estimate, and every step failed.
+              const double h_e = element_size(npe, dim, X);
               for (int d = 0; d < dim; ++d) {
                 double row = 0.0;
-                for (int m = 0; m < n; ++m) row += std::abs(Ke[(a * dim + d) * n + m] * ue[m]);
+                for (int m = 0; m < n; ++m)
+                  row += std::abs(Ke[(a * dim + d) * n + m]) * (std::abs(ue[m]) + h_e);
                 row *= std::numeric_limits<double>::epsilon();
                 Kokkos::atomic_add(&round_off2(), row * row);
               }
