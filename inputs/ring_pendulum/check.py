@@ -115,18 +115,7 @@ def nodal_weights(xy, conn):
         for a_ in range(3):
             np.add.at(w, conn[:, a_], area / 3)
         return w
-    gp = np.array([-1, 1]) / np.sqrt(3)
-    for xi in gp:
-        for eta in gp:
-            N = 0.25 * np.array([(1 - xi) * (1 - eta), (1 + xi) * (1 - eta),
-                                 (1 + xi) * (1 + eta), (1 - xi) * (1 + eta)])
-            dxi = 0.25 * np.array([-(1 - eta), 1 - eta, 1 + eta, -(1 + eta)])
-            deta = 0.25 * np.array([-(1 - xi), -(1 + xi), 1 + xi, 1 - xi])
-            x, y = xy[0][conn], xy[1][conn]
-            det = (x @ dxi) * (y @ deta) - (x @ deta) * (y @ dxi)
-            for a_ in range(4):
-                np.add.at(w, conn[:, a_], N[a_] * det)
-    return w
+    return cylinder_rotation.lumped_weights(xy, conn)  # QUAD4, 2 x 2 Gauss
 
 
 s = read_csv("np1/%s.csv" % a.stem)
