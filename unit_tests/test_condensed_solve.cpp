@@ -181,6 +181,16 @@ System synthetic_system(bool zero_diagonal_case, double round_off_tie = -1.0) {
   return sys;
 }
 
+// u_component = value (an expression in t) on a node set of the input.
+void add_dirichlet(Input& input, const std::string& set, int component, const std::string& value) {
+  DirichletInput d;
+  d.name = set + "_" + std::to_string(component);
+  d.node_set = set;
+  d.component = component;
+  d.value = Expression(value, "test: " + d.name);
+  input.dirichlet.push_back(d);
+}
+
 // ---------------------------------------------------------------------------------------
 // MechanicsProblem on two blocks: lower bottom fixed, upper top pressed down (and held
 // sideways), left sides on rollers (so one slave node has a prescribed dof).
@@ -198,12 +208,7 @@ Input two_block_input(int dim, ContactKind type, double mu) {
     input.materials.push_back(m);
   }
   const auto fix = [&](const std::string& set, int component, const std::string& value) {
-    DirichletInput d;
-    d.name = set + "_" + std::to_string(component);
-    d.node_set = set;
-    d.component = component;
-    d.value = Expression(value, "test: " + d.name);
-    input.dirichlet.push_back(d);
+    add_dirichlet(input, set, component, value);
   };
   for (int c = 0; c < dim; ++c) fix("lower_bottom", c, "0");
   for (int c = 0; c < dim - 1; ++c) fix("upper_top", c, "0");
@@ -561,12 +566,7 @@ void check_tied_patch_with_symmetry_planes(int dim) {
   for (auto& m : input.materials) m.youngs_modulus = 1000.0;
   input.dirichlet.clear();
   const auto fix = [&](const std::string& set, int component, const std::string& value) {
-    DirichletInput d;
-    d.name = set + "_" + std::to_string(component);
-    d.node_set = set;
-    d.component = component;
-    d.value = Expression(value, "test: " + d.name);
-    input.dirichlet.push_back(d);
+    add_dirichlet(input, set, component, value);
   };
   const double delta = 0.01, nu = 0.3;
   fix("lower_bottom", dim - 1, "0");
