@@ -297,6 +297,7 @@ bool SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
           // the node's first row is found once (binary search) and reused for its dim rows.
           // Each entry still receives one addition per element, in element order: the sums
           // are those of sumIntoValues, bit for bit.
+          const double h_e = finite_strain && with_tangent ? element_size(npe, dim, X) : 0.0;
           for (int a = 0; a < npe; ++a) {
             const int k = nodes(e, a);
             if (k >= n_owned) continue;
@@ -310,7 +311,6 @@ bool SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
               // eps sum_k |K_rk| (|u_k| + h_e). Without h_e a stiff body at rest (the steel
               // ring of inputs/ring_pendulum, E = 2.069e11, under gravity) stalled at
               // |F| = 2e-5 far above the estimate, and every step failed.
-              const double h_e = element_size(npe, dim, X);
               for (int d = 0; d < dim; ++d) {
                 double row = 0.0;
                 for (int m = 0; m < n; ++m)

@@ -12,16 +12,11 @@
 #include <string>
 #include <vector>
 
+#include "assembly/raw_mpi_comm.hpp"
 #include "assembly/tpetra_types.hpp"
 
 namespace grout {
 namespace gathered_solve_detail {
-
-inline MPI_Comm raw_mpi_comm(const Comm& comm) {
-  if (const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm))
-    return (*mpi->getRawMpiComm())();
-  return MPI_COMM_SELF;
-}
 
 // Direct solve on rank 0: gather K's rows and b to rank 0 (plain arrays, one gatherv each),
 // build there the whole matrix on rank 0's 1-rank communicator `self` (KLU2 is only trusted

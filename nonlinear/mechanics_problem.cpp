@@ -9,6 +9,7 @@
 
 #include "assembly/agree_on_errors.hpp"
 #include "assembly/contact_distribution.hpp"
+#include "assembly/raw_mpi_comm.hpp"
 #include "assembly/weighted_slip.hpp"
 #include "io/errors.hpp"
 #include "nonlinear/dirichlet.hpp"
@@ -64,11 +65,6 @@ struct MechanicsProblem::Interface {
 
 namespace {
 
-MPI_Comm raw_mpi_comm(const Teuchos::RCP<const Comm>& comm) {
-  const auto mpi = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm);
-  return mpi.is_null() ? MPI_COMM_SELF : (*mpi->getRawMpiComm())();
-}
-
 // Young's modulus of the material of the block of the side set's first face.
 double youngs_modulus_of(const Input& input, const Mesh& mesh, const std::string& set_name,
                          const ContactInput& contact) {
@@ -86,7 +82,7 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
   num_u_ = GO(mesh.num_nodes()) * dim_;
   const auto& owned_u = *solid.owned_map();
   const auto comm = solid.comm();
-  raw_comm_ = raw_mpi_comm(comm);
+  raw_comm_ = raw_mpi_comm(*comm);
   num_owned_u_ = int(owned_u.getNodeNumElements());
   std::vector<GO> owned;
   for (int i = 0; i < num_owned_u_; ++i) owned.push_back(owned_u.getGlobalElement(i));

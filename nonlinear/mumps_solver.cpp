@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "assembly/raw_mpi_comm.hpp"
 #include "io/errors.hpp"
 
 namespace grout {
@@ -126,12 +127,6 @@ bool locate(const std::vector<long long>& pattern, const std::vector<long long>&
     position[k] = std::size_t(it - pattern.begin());
   }
   return true;
-}
-
-MPI_Comm raw_comm(const Comm& comm) {
-  if (const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm))
-    return (*mpi->getRawMpiComm())();
-  return MPI_COMM_SELF;
 }
 
 std::string describe(int code) {
@@ -287,7 +282,7 @@ const MumpsStatistics& MumpsSolver::statistics() const {
 void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x) {
   Impl& s = *impl_;
   const auto& comm = *K->getRowMap()->getComm();
-  const MPI_Comm mpi_comm = raw_comm(comm);
+  const MPI_Comm mpi_comm = raw_mpi_comm(comm);
   if (!s.initialised || s.comm != mpi_comm) s.start(mpi_comm, comm.getSize());
 
   const auto row_map = K->getRowMap();
