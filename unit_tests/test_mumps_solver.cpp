@@ -223,10 +223,11 @@ TEST(MumpsSolver, SingularMatrixThrowsOnEveryRank) {
 
 TEST(MumpsSolver, BadOptionsAreInputErrors) {
   const std::string where = "case.yaml: grout/solver/Linear Solver/MUMPS";
-  Teuchos::ParameterList unknown_ordering, unknown_key;
+  Teuchos::ParameterList unknown_ordering, unknown_key, gather_not_bool;
   unknown_ordering.set("ordering", "metis");
   unknown_key.set("pivoting", 0.1);
-  for (const auto* params : {&unknown_ordering, &unknown_key}) {
+  gather_not_bool.set("gather", "yes");
+  for (const auto* params : {&unknown_ordering, &unknown_key, &gather_not_bool}) {
     try {
       mumps_options_from(*params, where);
       FAIL() << "expected InputError";
