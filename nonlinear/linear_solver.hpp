@@ -26,8 +26,9 @@
 //                            prolongators (MueLu `reuse: type: RP`; coarse operators and
 //                            smoothers recomputed); the hierarchy is kept between solves.
 // --- condensed multipliers (nonlinear/condensed_solve.hpp) ---
-//   condense_multipliers: true   (default: true on the iterative path, false on the direct
-//                            one) the paired multipliers (set_multiplier_pairing) are
+//   condense_multipliers: true   (default: true on the iterative path and the distributed
+//                            MUMPS path, 3D's default; false on the gathered direct solves
+//                            and amesos2) the paired multipliers (set_multiplier_pairing) are
 //                            condensed per slave node and the displacement-only system is
 //                            solved, then λ is recovered. A reduced system left with a zero
 //                            diagonal (not produced by Grout's contact rows) is solved
