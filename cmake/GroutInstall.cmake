@@ -20,6 +20,10 @@ install(TARGETS grout_kokkos_deps grout_trilinos_deps grout_kernels grout_io gro
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/grout)
+# The iterative path's module (nonlinear/iterative_module.hpp): found by the installed grout and
+# by find_package(Grout) consumers in <libdir>/grout (the path compiled into grout_nonlinear)
+# or, for a relocated install, beside the executable in ../lib/grout.
+install(TARGETS grout_iterative LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/grout)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/kernels ${PROJECT_SOURCE_DIR}/io
                   ${PROJECT_SOURCE_DIR}/assembly ${PROJECT_SOURCE_DIR}/nonlinear
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/grout FILES_MATCHING PATTERN "*.hpp")

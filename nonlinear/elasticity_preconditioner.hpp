@@ -1,6 +1,7 @@
 #pragma once
 // MueLu smoothed aggregation set up for small-strain elasticity (the displacement-only
 // system: no contact, or the condensed one of nonlinear/condensed_solve.hpp).
+// Compiled into the module grout_iterative (nonlinear/iterative_solver.hpp), not grout_nonlinear.
 //
 // - block size = dimension (`number of equations`): the dofs of a node, n*dim + c, are
 //   consecutive in every rank's row map, so MueLu aggregates nodes, not single dofs;

@@ -2,22 +2,15 @@
 
 #include <mpi.h>
 #include <Amesos2.hpp>
-#include <BelosSolverFactory.hpp>
-#include <BelosTpetraAdapter.hpp>
-#include <MueLu_CreateTpetraPreconditioner.hpp>
-#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <algorithm>
-#include <climits>
-#include <cstdint>
-#include <cstdio>
 #include <stdexcept>
 
 #include "io/errors.hpp"
 #include "nonlinear/condensed_solve.hpp"
-#include "nonlinear/elasticity_preconditioner.hpp"
 #include "nonlinear/gathered_solve.hpp"
+#include "nonlinear/iterative_module.hpp"
 #include "nonlinear/mumps_solver.hpp"
 
 namespace grout {
@@ -50,13 +43,14 @@ struct LinearSolver::Impl {
   // --- end condensed multipliers ---
   std::vector<double> coordinates;
   std::vector<int> bodies;  // body index per node; empty: one body
-  // The last MueLu hierarchy (type: belos), for reuse_preconditioner.
   bool reuse_preconditioner = false;
-  Teuchos::RCP<MueLu::TpetraOperator<double, LO, GO, Node>> hierarchy;
-  Teuchos::RCP<const Map> hierarchy_map;
-  std::uint64_t hierarchy_pattern = 0;  // local_pattern_fingerprint of its matrix
-  int fresh_iterations = 0;
-  int reused = 0;  // solves that reused the hierarchy
+  // The iterative path (type: belos), from the module grout_iterative loaded at the first
+  // iterative solve (iterative_module.hpp); it keeps the MueLu hierarchy between solves.
+  std::unique_ptr<IterativeSolver> iterative;
+  IterativeSolver& iterative_solver() {
+    if (!iterative) iterative = create_iterative_solver();
+    return *iterative;
+  }
   int dim = 0;
   std::string last_type;
 };
@@ -120,23 +114,24 @@ LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::stri
   impl_->belos_type = impl_->belos.get<std::string>("Solver Type", "CG");
   impl_->belos.remove("Solver Type", false);
   // Belos names its own solvers (case-insensitive): ask it, so that a misspelt name is an
-  // input error here and not an exception from inside Belos at the first solve.
-  Belos::SolverFactory<double, MultiVector, Operator> belos_factory;
-  if (!belos_factory.isSupported(impl_->belos_type)) {
-    std::string names;
-    for (const std::string& name : belos_factory.supportedSolverNames())
-      names += (names.empty() ? "" : ", ") + name;
-    throw InputError(where + "/Belos/Solver Type: unknown Belos solver '" + impl_->belos_type +
-                     "' (Belos has: " + names + ")");
-  }
-  // Belos checks the names and values of its parameters when it sets them.
-  if (impl_->type == "belos") {
-    try {
-      belos_factory.create(impl_->belos_type,
-                           Teuchos::rcp(new Teuchos::ParameterList(impl_->belos)));
-    } catch (const std::exception& e) {
-      throw InputError(where +
-                       "/Belos: Belos rejects these settings: " + without_source_paths(e.what()));
+  // input error here and not an exception from inside Belos at the first solve. Asking
+  // loads the iterative module: only done when the input has Belos settings to check.
+  const bool check_settings = impl_->type == "belos" && impl_->belos.numParams() > 0;
+  if (impl_->belos_type_given || check_settings) {
+    IterativeSolver& belos = impl_->iterative_solver();
+    if (!belos.is_belos_solver(impl_->belos_type)) {
+      std::string names;
+      for (const std::string& name : belos.belos_solver_names())
+        names += (names.empty() ? "" : ", ") + name;
+      throw InputError(where + "/Belos/Solver Type: unknown Belos solver '" + impl_->belos_type +
+                       "' (Belos has: " + names + ")");
+    }
+    // Belos checks the names and values of its parameters when it sets them.
+    if (impl_->type == "belos") {
+      const std::string rejected = belos.belos_rejects(impl_->belos_type, impl_->belos);
+      if (!rejected.empty())
+        throw InputError(where +
+                         "/Belos: Belos rejects these settings: " + without_source_paths(rejected));
     }
   }
   if (!impl_->belos.isParameter("Convergence Tolerance"))
@@ -145,29 +140,6 @@ LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::stri
 }
 
 LinearSolver::~LinearSolver() = default;
-
-namespace {
-
-// FNV-1a hash of this rank's rows of K's sparsity pattern (row and column global ids).
-std::uint64_t local_pattern_fingerprint(const Matrix& K) {
-  std::uint64_t h = 1469598103934665603ull;
-  const auto mix = [&](long long v) {
-    for (int byte = 0; byte < 8; ++byte, v >>= 8)
-      h = (h ^ std::uint64_t(v & 0xff)) * 1099511628211ull;
-  };
-  const auto& row_map = *K.getRowMap();
-  const auto& col_map = *K.getColMap();
-  const auto local = K.getLocalMatrixHost();
-  for (LO i = 0; i < LO(row_map.getNodeNumElements()); ++i) {
-    mix(row_map.getGlobalElement(i));
-    for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p)
-      mix(col_map.getGlobalElement(local.graph.entries(p)));
-    mix(-1);
-  }
-  return h;
-}
-
-}  // namespace
 
 // --- condensed multipliers ---
 void LinearSolver::set_multiplier_pairing(std::vector<std::pair<GO, GO>> lambda_to_slave_dof,
@@ -203,7 +175,7 @@ void LinearSolver::set_node_bodies(std::vector<int> body_of_node) {
 }
 
 int LinearSolver::reused_hierarchies() const {
-  return impl_->reused;
+  return impl_->iterative ? impl_->iterative->reused_hierarchies() : 0;
 }
 
 const std::string& LinearSolver::last_type() const {
@@ -218,8 +190,8 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
                                : auto_linear_solver_type((long long)K->getGlobalNumRows(), dim);
   impl_->last_type = type;
   // The iterative path works on the displacement-only (condensed) system by default.
-  const bool condense =
-      impl_->condense_given ? impl_->condense
+  const bool condense = impl_->condense_given
+                            ? impl_->condense
                             : condenses_by_default(type) && !impl_->mumps_options.gather;
   if (!condense || impl_->pairing.empty())
     return solve_system(K, b, x, type, impl_->belos_type_given ? impl_->belos_type : "CG");
@@ -275,103 +247,10 @@ int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector
     return 1;
   }
 
-  // Belos + MueLu.
-  Teuchos::ParameterList muelu = impl_->muelu;
-  const int num_ranks = K->getRowMap()->getComm()->getSize();
-  const long long num_nodes = impl_->dim > 0 ? impl_->coordinates.size() / impl_->dim : 0;
-  const bool bodies = impl_->bodies.size() == std::size_t(num_nodes) && num_nodes > 0;
-  if (num_nodes > 0 && is_nodal_displacement_map(*K->getRowMap(), impl_->dim, num_nodes))
-    set_elasticity_defaults(muelu, impl_->dim, num_ranks,
-                            rigid_body_modes(*K->getRowMap(), impl_->dim, impl_->coordinates),
-                            node_coordinates(*K->getRowMap(), impl_->dim, impl_->coordinates,
-                                             bodies ? impl_->bodies : std::vector<int>()),
-                            bodies);
-  if (num_ranks > 1 && !muelu.isParameter("coarse: type"))
-    muelu.set("coarse: type", "RELAXATION");  // never KLU2 on a multi-rank communicator
-  const auto K_crs = Teuchos::rcp_const_cast<Matrix>(K);
-  Teuchos::RCP<Operator> K_op = K_crs;
-  // Reuse (Newton iterations after the first): the last hierarchy's prolongators and
-  // restrictions, with the coarse operators and the smoothers recomputed from K (MueLu
-  // `reuse: type: RP`), when K has the same unknowns and the same sparsity pattern (RP keeps
-  // the coarse matrices' patterns; a changed active set changes K's). A reused hierarchy that does
-  // not converge is rebuilt and the system solved again; one that needs more than twice the
-  // iterations of its fresh build (+10) is rebuilt at the next solve.
-  const bool reuse_allowed = impl_->reuse_preconditioner;
-  if (reuse_allowed && !muelu.isParameter("reuse: type")) muelu.set("reuse: type", "RP");
-  const std::uint64_t pattern = reuse_allowed ? local_pattern_fingerprint(*K) : 0;
-  bool may_reuse = reuse_allowed && !impl_->hierarchy.is_null() &&
-                   impl_->hierarchy_map->isSameAs(*K->getRowMap());
-  if (may_reuse) {  // MueLu's RP reuse keeps the coarse patterns: K's must not change
-    int same = pattern == impl_->hierarchy_pattern ? 1 : 0, all_same = 0;
-    Teuchos::reduceAll(*K->getRowMap()->getComm(), Teuchos::REDUCE_MIN, same,
-                       Teuchos::outArg(all_same));
-    may_reuse = all_same == 1;
-  }
-  Belos::SolverFactory<double, MultiVector, Operator> factory;
-  auto params = Teuchos::rcp(new Teuchos::ParameterList(impl_->belos));
-  if (belos_type == "GMRES" && !params->isParameter("Num Blocks"))
-    params->set("Num Blocks", 200);  // Krylov vectors kept before a restart
-  for (int attempt = 0;; ++attempt) {
-    const bool reused = may_reuse && attempt == 0;
-    {
-      Teuchos::TimeMonitor setup_timer(
-          *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: MueLu set-up"));
-      if (reused) {
-        MueLu::ReuseTpetraPreconditioner(K_crs, *impl_->hierarchy);
-        ++impl_->reused;
-      } else {
-        impl_->hierarchy = MueLu::CreateTpetraPreconditioner(K_op, muelu);
-        impl_->hierarchy_map = K->getRowMap();
-        impl_->hierarchy_pattern = pattern;
-      }
-    }
-    auto x_rcp = Teuchos::rcpFromRef(x);
-    auto b_rcp = Teuchos::rcpFromRef(b);
-    x.putScalar(0.0);
-    auto problem = Teuchos::rcp(new Belos::LinearProblem<double, MultiVector, Operator>(
-        K_op, Teuchos::rcp_implicit_cast<MultiVector>(x_rcp),
-        Teuchos::rcp_implicit_cast<const MultiVector>(b_rcp)));
-    problem->setRightPrec(impl_->hierarchy);
-    problem->setProblem();
-    auto solver = factory.create(belos_type, params);
-    solver->setProblem(problem);
-    Belos::ReturnType converged;
-    {
-      Teuchos::TimeMonitor krylov_timer(
-          *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: Krylov iterations"));
-      converged = solver->solve();
-    }
-    const int iterations = solver->getNumIters();
-    bool accepted = converged == Belos::Converged;
-    double relative = 0.0;
-    if (!accepted) {
-      // GMRES may stop on a loss of accuracy (the implicit residual met the tolerance, the
-      // explicit one did not): accept an explicit residual within max(100 × the tolerance,
-      // 1e-6), an inexact Newton step; Newton's residual test decides convergence.
-      Vector r(b.getMap());
-      K->apply(x, r);
-      r.update(1.0, b, -1.0);
-      const double b_norm = b.norm2();
-      relative = b_norm > 0.0 ? r.norm2() / b_norm : r.norm2();
-      accepted = relative <= std::max(1e-6, 100.0 * params->get<double>("Convergence Tolerance"));
-    }
-    if (accepted) {
-      if (!reused)
-        impl_->fresh_iterations = iterations;
-      else if (iterations > 2 * impl_->fresh_iterations + 10)
-        impl_->hierarchy = Teuchos::null;  // rebuilt at the next solve
-      if (!reuse_allowed) impl_->hierarchy = Teuchos::null;
-      return iterations;
-    }
-    if (reused) continue;  // once more with a fresh hierarchy
-    impl_->hierarchy = Teuchos::null;
-    char message[160];
-    std::snprintf(message, sizeof message,
-                  "linear solver %s did not converge in %d iterations (|b - A x| / |b| = %.3e%s)",
-                  belos_type.c_str(), iterations, relative,
-                  solver->isLOADetected() ? ", loss of accuracy" : "");
-    throw std::runtime_error(message);
-  }
+  // Belos + MueLu, in the module grout_iterative (loaded here at the first iterative solve).
+  const IterativeSettings settings{impl_->belos, impl_->muelu,       impl_->reuse_preconditioner,
+                                   impl_->dim,   impl_->coordinates, impl_->bodies};
+  return impl_->iterative_solver().solve(K, b, x, belos_type, settings);
 }
 
 }  // namespace grout

@@ -21,6 +21,8 @@
 //                            aggregation for elasticity (elasticity_preconditioner.hpp) when
 //                            the coordinates are given (set_coordinates). The `MueLu` sublist
 //                            overrides any of these settings.
+//                            In the module grout_iterative, loaded at the first
+//                            iterative solve (nonlinear/iterative_module.hpp).
 //   reuse_preconditioner: true   (default false; type: belos) a system with the same unknowns
 //                            and sparsity pattern as the last one reuses its MueLu hierarchy's
 //                            prolongators (MueLu `reuse: type: RP`; coarse operators and

@@ -1,0 +1,179 @@
+// The module grout_iterative: LinearSolver's iterative path (Belos + MueLu), loaded on demand
+// (nonlinear/iterative_solver.hpp, nonlinear/iterative_module.hpp).
+
+#include <BelosSolverFactory.hpp>
+#include <BelosTpetraAdapter.hpp>
+#include <MueLu_CreateTpetraPreconditioner.hpp>
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_TimeMonitor.hpp>
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <stdexcept>
+
+#include "nonlinear/elasticity_preconditioner.hpp"
+#include "nonlinear/iterative_solver.hpp"
+
+namespace grout {
+namespace {
+
+// FNV-1a hash of this rank's rows of K's sparsity pattern (row and column global ids).
+std::uint64_t local_pattern_fingerprint(const Matrix& K) {
+  std::uint64_t h = 1469598103934665603ull;
+  const auto mix = [&](long long v) {
+    for (int byte = 0; byte < 8; ++byte, v >>= 8)
+      h = (h ^ std::uint64_t(v & 0xff)) * 1099511628211ull;
+  };
+  const auto& row_map = *K.getRowMap();
+  const auto& col_map = *K.getColMap();
+  const auto local = K.getLocalMatrixHost();
+  for (LO i = 0; i < LO(row_map.getNodeNumElements()); ++i) {
+    mix(row_map.getGlobalElement(i));
+    for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p)
+      mix(col_map.getGlobalElement(local.graph.entries(p)));
+    mix(-1);
+  }
+  return h;
+}
+
+class BelosMueLuSolver : public IterativeSolver {
+ public:
+  int solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
+            const std::string& belos_type, const IterativeSettings& settings) override;
+  int reused_hierarchies() const override { return reused_; }
+
+  bool is_belos_solver(const std::string& name) const override {
+    return Factory().isSupported(name);
+  }
+  std::vector<std::string> belos_solver_names() const override {
+    const auto names = Factory().supportedSolverNames();
+    return std::vector<std::string>(names.begin(), names.end());
+  }
+  std::string belos_rejects(const std::string& name,
+                            const Teuchos::ParameterList& belos) const override {
+    try {  // Belos checks the names and values of its parameters when it sets them
+      Factory().create(name, Teuchos::rcp(new Teuchos::ParameterList(belos)));
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+    return "";
+  }
+
+ private:
+  using Factory = Belos::SolverFactory<double, MultiVector, Operator>;
+  // The last MueLu hierarchy, for reuse_preconditioner.
+  Teuchos::RCP<MueLu::TpetraOperator<double, LO, GO, Node>> hierarchy_;
+  Teuchos::RCP<const Map> hierarchy_map_;
+  std::uint64_t hierarchy_pattern_ = 0;  // local_pattern_fingerprint of its matrix
+  int fresh_iterations_ = 0;
+  int reused_ = 0;  // solves that reused the hierarchy
+};
+
+int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
+                            const std::string& belos_type, const IterativeSettings& settings) {
+  Teuchos::ParameterList muelu = settings.muelu;
+  const int dim = settings.dim;
+  const int num_ranks = K->getRowMap()->getComm()->getSize();
+  const long long num_nodes = dim > 0 ? settings.coordinates.size() / dim : 0;
+  const bool bodies = settings.bodies.size() == std::size_t(num_nodes) && num_nodes > 0;
+  if (num_nodes > 0 && is_nodal_displacement_map(*K->getRowMap(), dim, num_nodes))
+    set_elasticity_defaults(muelu, dim, num_ranks,
+                            rigid_body_modes(*K->getRowMap(), dim, settings.coordinates),
+                            node_coordinates(*K->getRowMap(), dim, settings.coordinates,
+                                             bodies ? settings.bodies : std::vector<int>()),
+                            bodies);
+  if (num_ranks > 1 && !muelu.isParameter("coarse: type"))
+    muelu.set("coarse: type", "RELAXATION");  // never KLU2 on a multi-rank communicator
+  const auto K_crs = Teuchos::rcp_const_cast<Matrix>(K);
+  Teuchos::RCP<Operator> K_op = K_crs;
+  // Reuse (Newton iterations after the first): the last hierarchy's prolongators and
+  // restrictions, with the coarse operators and the smoothers recomputed from K (MueLu
+  // `reuse: type: RP`), when K has the same unknowns and the same sparsity pattern (RP keeps
+  // the coarse matrices' patterns; a changed active set changes K's). A reused hierarchy that
+  // does not converge is rebuilt and the system solved again; one that needs more than twice
+  // the iterations of its fresh build (+10) is rebuilt at the next solve.
+  const bool reuse_allowed = settings.reuse_preconditioner;
+  if (reuse_allowed && !muelu.isParameter("reuse: type")) muelu.set("reuse: type", "RP");
+  const std::uint64_t pattern = reuse_allowed ? local_pattern_fingerprint(*K) : 0;
+  bool may_reuse =
+      reuse_allowed && !hierarchy_.is_null() && hierarchy_map_->isSameAs(*K->getRowMap());
+  if (may_reuse) {  // MueLu's RP reuse keeps the coarse patterns: K's must not change
+    int same = pattern == hierarchy_pattern_ ? 1 : 0, all_same = 0;
+    Teuchos::reduceAll(*K->getRowMap()->getComm(), Teuchos::REDUCE_MIN, same,
+                       Teuchos::outArg(all_same));
+    may_reuse = all_same == 1;
+  }
+  Factory factory;
+  auto params = Teuchos::rcp(new Teuchos::ParameterList(settings.belos));
+  if (belos_type == "GMRES" && !params->isParameter("Num Blocks"))
+    params->set("Num Blocks", 200);  // Krylov vectors kept before a restart
+  for (int attempt = 0;; ++attempt) {
+    const bool reused = may_reuse && attempt == 0;
+    {
+      Teuchos::TimeMonitor setup_timer(
+          *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: MueLu set-up"));
+      if (reused) {
+        MueLu::ReuseTpetraPreconditioner(K_crs, *hierarchy_);
+        ++reused_;
+      } else {
+        hierarchy_ = MueLu::CreateTpetraPreconditioner(K_op, muelu);
+        hierarchy_map_ = K->getRowMap();
+        hierarchy_pattern_ = pattern;
+      }
+    }
+    auto x_rcp = Teuchos::rcpFromRef(x);
+    auto b_rcp = Teuchos::rcpFromRef(b);
+    x.putScalar(0.0);
+    auto problem = Teuchos::rcp(new Belos::LinearProblem<double, MultiVector, Operator>(
+        K_op, Teuchos::rcp_implicit_cast<MultiVector>(x_rcp),
+        Teuchos::rcp_implicit_cast<const MultiVector>(b_rcp)));
+    problem->setRightPrec(hierarchy_);
+    problem->setProblem();
+    auto solver = factory.create(belos_type, params);
+    solver->setProblem(problem);
+    Belos::ReturnType converged;
+    {
+      Teuchos::TimeMonitor krylov_timer(
+          *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: Krylov iterations"));
+      converged = solver->solve();
+    }
+    const int iterations = solver->getNumIters();
+    bool accepted = converged == Belos::Converged;
+    double relative = 0.0;
+    if (!accepted) {
+      // GMRES may stop on a loss of accuracy (the implicit residual met the tolerance, the
+      // explicit one did not): accept an explicit residual within max(100 × the tolerance,
+      // 1e-6), an inexact Newton step; Newton's residual test decides convergence.
+      Vector r(b.getMap());
+      K->apply(x, r);
+      r.update(1.0, b, -1.0);
+      const double b_norm = b.norm2();
+      relative = b_norm > 0.0 ? r.norm2() / b_norm : r.norm2();
+      accepted = relative <= std::max(1e-6, 100.0 * params->get<double>("Convergence Tolerance"));
+    }
+    if (accepted) {
+      if (!reused)
+        fresh_iterations_ = iterations;
+      else if (iterations > 2 * fresh_iterations_ + 10)
+        hierarchy_ = Teuchos::null;  // rebuilt at the next solve
+      if (!reuse_allowed) hierarchy_ = Teuchos::null;
+      return iterations;
+    }
+    if (reused) continue;  // once more with a fresh hierarchy
+    hierarchy_ = Teuchos::null;
+    char message[160];
+    std::snprintf(message, sizeof message,
+                  "linear solver %s did not converge in %d iterations (|b - A x| / |b| = %.3e%s)",
+                  belos_type.c_str(), iterations, relative,
+                  solver->isLOADetected() ? ", loss of accuracy" : "");
+    throw std::runtime_error(message);
+  }
+}
+
+}  // namespace
+}  // namespace grout
+
+extern "C" grout::IterativeSolver* grout_create_iterative_solver(int interface_version) {
+  if (interface_version != grout::iterative_solver_interface_version) return nullptr;
+  return new grout::BelosMueLuSolver();
+}

@@ -1,0 +1,63 @@
+#pragma once
+// The iterative path of LinearSolver (Belos Krylov solver + MueLu preconditioner) behind an
+// abstract interface: it is built as the module grout_iterative (nonlinear/iterative_plugin.cpp,
+// with elasticity_preconditioner.cpp), the one binary of Grout that links MueLu, Belos and
+// Xpetra, and is dlopen()ed at the first iterative solve (nonlinear/iterative_module.hpp).
+//
+// Why: Debian builds Trilinos with BIND_NOW, so the dynamic loader resolves every symbol of
+// every loaded library before main. MueLu, Belos, Xpetra and what they pull in (Teko, Thyra,
+// Stratimikos, Ifpack2, ML, ...) were 58 % of the 312 k start-up relocations of `grout`, more
+// than a small 2D run's own work (docs/performance.md, "Start-up: the iterative path loaded on
+// demand (lazy9)"). A process that solves directly never loads them.
+//
+// Only standard, Teuchos and Tpetra types cross the boundary: the module and the process share
+// one libstdc++, one Kokkos and one Tpetra (the same Debian shared libraries).
+
+#include <Teuchos_ParameterList.hpp>
+#include <string>
+#include <vector>
+
+#include "assembly/tpetra_types.hpp"
+
+namespace grout {
+
+/// What LinearSolver knows of the iterative path's settings (references into its own state).
+struct IterativeSettings {
+  const Teuchos::ParameterList& belos;     ///< Belos parameters, without `Solver Type`
+  const Teuchos::ParameterList& muelu;     ///< the user's `MueLu` sublist
+  bool reuse_preconditioner;               ///< keep the MueLu hierarchy between solves
+  int dim;                                 ///< 0: no coordinates
+  const std::vector<double>& coordinates;  ///< node-major, every node on every rank
+  const std::vector<int>& bodies;          ///< body per node; empty: one body
+};
+
+class IterativeSolver {
+ public:
+  virtual ~IterativeSolver() = default;
+
+  /// Solve K x = b with Belos `belos_type` right-preconditioned by MueLu (smoothed
+  /// aggregation for elasticity when the coordinates are given); returns the iterations.
+  /// Throws std::runtime_error if it does not converge. Keeps the MueLu hierarchy for the next
+  /// solve when `settings.reuse_preconditioner`.
+  virtual int solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
+                    const std::string& belos_type, const IterativeSettings& settings) = 0;
+  /// Solves that reused a MueLu hierarchy, since construction.
+  virtual int reused_hierarchies() const = 0;
+
+  /// Belos's solver names (case-insensitive), to check `Belos/Solver Type` against.
+  virtual bool is_belos_solver(const std::string& name) const = 0;
+  virtual std::vector<std::string> belos_solver_names() const = 0;
+  /// Empty if Belos accepts the parameters `belos` for solver `name`, otherwise its message.
+  virtual std::string belos_rejects(const std::string& name,
+                                    const Teuchos::ParameterList& belos) const = 0;
+};
+
+/// Bumped whenever IterativeSolver or IterativeSettings change: a module built from other
+/// sources refuses to create a solver (the loader then tries the next directory).
+constexpr int iterative_solver_interface_version = 1;
+
+}  // namespace grout
+
+/// The module's factory (C linkage, looked up by dlsym): a new solver, or nullptr when
+/// `interface_version` is not the module's iterative_solver_interface_version.
+extern "C" grout::IterativeSolver* grout_create_iterative_solver(int interface_version);
