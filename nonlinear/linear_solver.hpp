@@ -85,6 +85,9 @@ class LinearSolver {
   /// The type of the last solve (auto resolved): mumps, mumps_gathered, amesos2 or belos;
   /// empty before any solve.
   const std::string& last_type() const;
+  /// Whether the last solve went through the symmetric reduction and MUMPS's LDLᵀ
+  /// (symmetric_condensation.hpp; type mumps, distributed, multipliers condensed).
+  bool last_solve_symmetric() const;
 
  private:
   int solve_system(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,

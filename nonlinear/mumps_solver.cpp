@@ -264,6 +264,8 @@ struct MumpsSolver::Impl {
             ", INFOG(2) = " + std::to_string(infog(m, 2)) + describe(status));
       }
       factorised = true;
+      stats.flops = m.rinfog[2];
+      stats.factor_entries = infog(m, 29);
       return;
     }
   }
