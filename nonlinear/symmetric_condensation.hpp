@@ -39,8 +39,8 @@
 // The reduced system lives on J's displacement GIDs, renumbered 0 .. n − 1 in GID order (new
 // = old − the paired multipliers below old), so that a direct solver sees the same matrix on
 // any number of ranks. An eliminated dof keeps its row as ũ_e = 0 (K̃_ee = K_ee, b̃_e = 0,
-// and K's pattern of row and column e as explicit zeros): the size and, mostly, the pattern
-// do not depend on the active set, and MUMPS reuses its analysis across Newton iterations
+// and the pattern of (K T)'s row e and its transpose as explicit zeros): the size and, mostly, the
+// pattern do not depend on the active set, and MUMPS reuses its analysis across Newton iterations
 // while the pattern stays within the union of the earlier ones (mumps_solver.hpp).
 
 #include <memory>
