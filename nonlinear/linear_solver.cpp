@@ -239,7 +239,7 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   // LU of the condensed system (docs/performance.md, "Symmetric reduction on the direct path
   // (sym9)"). Anything else (friction, geometry: current) fails its checks and takes the
   // condensation below.
-  if (type == "mumps" && !impl_->mumps_options.gather && !impl_->mumps_options.symmetric) {
+  if (type == "mumps" && !impl_->mumps_options.gather) {
     SymmetricCondensation reduction(impl_->pairing, impl_->dofs_per_node);
     bool applies = false;
     {

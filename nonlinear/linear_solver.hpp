@@ -32,7 +32,11 @@
 //                            condensed per slave node and the displacement-only system is
 //                            solved, then λ is recovered. A reduced system left with a zero
 //                            diagonal (not produced by Grout's contact rows) is solved
-//                            directly even with type: belos.
+//                            directly even with type: belos. On the distributed MUMPS path
+//                            the symmetric reduction (symmetric_condensation.hpp) is tried
+//                            first: frictionless or tied contact on the reference geometry
+//                            gives a symmetric K̃, factorised as LDLᵀ by a MumpsSolver of its
+//                            own; any other system falls back to the condensation and LU.
 // --- end condensed multipliers ---
 
 #include <Teuchos_ParameterList.hpp>
