@@ -636,29 +636,39 @@ bool SymmetricCondensation::condense(const Matrix& J, const Vector& b) {
     Matrix product(m.reduced_map, 0);
     Tpetra::TripleMatrixMultiply::MultiplyRAP(*m.T, true, J, false, *m.T, false, product);
     // The eliminated rows and columns are empty in the product. They get K_ee on the
-    // diagonal and zeros where K T has entries in row e (and column e, in the rows owned
-    // here): the pattern K̃ would have with e kept. Then K̃'s pattern stays within the union
-    // of the Newton iterations' patterns when a dof is eliminated in some and kept in others,
-    // and MUMPS keeps its analysis (without them, 7 analyses in 7 Newton iterations on the 3D
-    // Hertz spheres instead of 3).
+    // diagonal and zeros where K T has entries in row e: the pattern K̃ would have with e
+    // kept (its column e too: MumpsSolver reads a zero above the diagonal as its mirror). Then K̃'s
+    // pattern stays within the union of the Newton iterations' patterns when a dof is eliminated in
+    // some and kept in others, and MUMPS keeps its analysis (without them, 7 analyses in 7 Newton
+    // iterations on the 3D Hertz spheres instead of 3).
     std::unordered_map<GO, std::map<GO, double>> extra;  // reduced row -> (column, value)
+    // T's rows of the eliminated dofs in K's rows e that another rank eliminates.
+    RowTable remote_t_rows;
+    {
+      std::vector<GO> remote;
+      for (const auto& [e, t_row] : t_row_of)
+        for (GO f : m.rows.at(e).cols)
+          if (!row_map.isNodeGlobalElement(f) &&
+              std::binary_search(eliminated.begin(), eliminated.end(), f))
+            remote.push_back(f);
+      Vector zero(J.getRowMap());
+      import_rows(*m.T, zero, remote, remote_t_rows);
+    }
     for (const auto& [e, t_row] : t_row_of) {
       const GO ne = new_gid(e);
       const Row& row = m.rows.at(e);
       auto& out = extra[ne];
-      const auto add = [&](GO c) {  // (e, c) and, if c is owned here, (c, e)
-        out.emplace(c, 0.0);
-        if (m.reduced_map->isNodeGlobalElement(c)) extra[c].emplace(ne, 0.0);
-      };
       for (std::size_t q = 0; q < row.cols.size(); ++q) {
         const GO f = row.cols[q];
         if (m.is_lambda(f)) continue;
         if (f == e) {
           out[ne] = row.vals[q] != 0.0 ? row.vals[q] : 1.0;
         } else if (const auto it = t_row_of.find(f); it != t_row_of.end()) {
-          for (const auto& [c, v] : *it->second) add(new_gid(c));  // (K T)'s row e
+          for (const auto& [c, v] : *it->second) out.emplace(new_gid(c), 0.0);  // (K T)'s row e
+        } else if (const auto r = remote_t_rows.find(f); r != remote_t_rows.end()) {
+          for (GO c : r->second.cols) out.emplace(c, 0.0);  // already reduced GIDs
         } else {
-          add(new_gid(f));
+          out.emplace(new_gid(f), 0.0);
         }
       }
       if (out.count(ne) == 0) out[ne] = 1.0;
