@@ -61,7 +61,9 @@ class SymmetricCondensation {
   /// domain map = b's map. Returns false, the same on every rank, if J is not of the form
   /// above (reason() says why); matrix(), rhs() and expand() are then not to be used.
   bool condense(const Matrix& J, const Vector& b);
-  /// K̃ (symmetric, exact zeros dropped) and b̃ on the reduced map.
+  /// K̃ and b̃ on the reduced map. K̃'s values are symmetric; the product's exact zeros (J's
+  /// prescribed rows and columns) are dropped, and the eliminated rows hold explicit zeros
+  /// (in their row only) for the pattern (above).
   Teuchos::RCP<const Matrix> matrix() const;
   const Vector& rhs() const;
   /// The solution x of J x = b (on J's row map) from the solution y of K̃ y = b̃ (collective).
