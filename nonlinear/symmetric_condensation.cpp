@@ -309,6 +309,27 @@ bool SymmetricCondensation::condense(const Matrix& J, const Vector& b) {
   }
   if (!(m.reason = agree(*comm, why)).empty()) return false;
   import_rows(J, b, needed, m.rows);
+  // The cheapest check first (friction and the current geometry fail it): every multiplier
+  // row holds either displacements only or this node's multipliers only.
+  for (const NodeData& nd : m.handled) {
+    for (int p : nd.pairs) {
+      bool has_u = false, has_lambda = false;
+      for (GO c : m.rows.at(m.lambda[p]).cols) {
+        const auto it = m.by_lambda.find(c);
+        if (it == m.by_lambda.end())
+          has_u = true;
+        else if (std::find(nd.pairs.begin(), nd.pairs.end(), it->second) != nd.pairs.end())
+          has_lambda = true;
+        else
+          has_u = has_lambda = true;  // another node's multiplier: fails below
+      }
+      if (has_u && has_lambda && why.empty())
+        why = "slave node " + std::to_string(m.slave[p] / m.dofs_per_node) +
+              ": a multiplier row mixes displacements and multipliers (friction or geometry: "
+              "current)";
+    }
+  }
+  if (!(m.reason = agree(*comm, why)).empty()) return false;
 
   // 2. Cᵀ: the multiplier columns of the displacement rows, by multiplier, on the handling
   //    rank (Tpetra's transpose of C, whose domain map is the handled multipliers).
