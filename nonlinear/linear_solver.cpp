@@ -237,7 +237,7 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   // frictionless or tied contact with a fixed pairing and a symmetric stiffness it gives a
   // symmetric positive (semi)definite K̃, factorised as LDLᵀ with about half the flops of the
   // LU of the condensed system (docs/performance.md, "Symmetric reduction on the direct path
-  // (sym9)"). Anything else (friction, geometry: current) fails its checks and takes the
+  // (sym9)"). Anything else (slip, geometry: current) fails its checks and takes the
   // condensation below.
   if (type == "mumps" && !impl_->mumps_options.gather) {
     SymmetricCondensation reduction(impl_->pairing, impl_->dofs_per_node);

@@ -34,9 +34,9 @@
 //                            diagonal (not produced by Grout's contact rows) is solved
 //                            directly even with type: belos. On the distributed MUMPS path
 //                            the symmetric reduction (symmetric_condensation.hpp) is tried
-//                            first: frictionless or tied contact on the reference geometry
-//                            gives a symmetric K̃, factorised as LDLᵀ by a MumpsSolver of its
-//                            own; any other system falls back to the condensation and LU.
+//                            first: frictionless, tied or sticking contact on the reference
+//                            geometry gives a symmetric K̃, factorised as LDLᵀ by a MumpsSolver of
+//                            its own; any other system falls back to the condensation and LU.
 // --- end condensed multipliers ---
 
 #include <Teuchos_ParameterList.hpp>

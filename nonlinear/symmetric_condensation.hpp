@@ -32,9 +32,10 @@
 // pure-λ or pure-u, P_j of full rank, a slave pivot per constraint row above 1e-8 of its
 // row, C N_j = G_jᵀ R_j to 1e-10 of C N_j's largest entry, no eliminated dof in another
 // node's constraint, slave force rows without other nodes' multipliers, λ_j recoverable.
-// Friction (slip rows mix u and λ) and `geometry: current` (normals, D and M depend on u: K
-// and the tangential rows carry λ terms) fail them: the caller then uses
-// MultiplierCondensation (not symmetric) instead.
+// Sticking frictional nodes on the reference geometry pass (their stick rows are
+// displacement constraints, like ties). Slip (its rows mix u and λ) and `geometry: current`
+// (normals, D and M depend on u: K and the tangential rows carry λ terms) fail them: the caller
+// then uses MultiplierCondensation (not symmetric) instead.
 //
 // The reduced system lives on J's displacement GIDs, renumbered 0 .. n − 1 in GID order (new
 // = old − the paired multipliers below old), so that a direct solver sees the same matrix on

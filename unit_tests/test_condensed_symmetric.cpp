@@ -3,7 +3,8 @@
 // for two-block contact meshes in 2D and 3D: for frictionless and tied contact on the
 // reference geometry it applies, K̃ is symmetric, MUMPS's LDLᵀ of K̃ takes about half the
 // flops of the LU, and the expanded solution (u and λ) equals the full direct solve of J x = b;
-// on frictional contact, on the current geometry and on a deliberately non-symmetric K it
+// on frictional (slipping) and frictionless contact on the current geometry, on a deliberately
+// non-symmetric K and on multiplier columns that are not the constraints' gradients it
 // declines, and LinearSolver then takes the (non-symmetric) condensation with the same answer.
 
 #include <gtest/gtest.h>
