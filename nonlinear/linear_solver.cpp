@@ -12,6 +12,7 @@
 #include "nonlinear/gathered_solve.hpp"
 #include "nonlinear/iterative_module.hpp"
 #include "nonlinear/mumps_solver.hpp"
+#include "nonlinear/symmetric_condensation.hpp"
 
 namespace grout {
 
@@ -21,6 +22,10 @@ struct LinearSolver::Impl {
   Teuchos::ParameterList muelu;
   std::string belos_type = "CG";
   std::unique_ptr<MumpsSolver> mumps;  // type: mumps
+  // LDLᵀ of the symmetric reductions (symmetric_condensation.hpp), kept apart from `mumps` so
+  // that each keeps its analysis while its pattern does not change.
+  std::unique_ptr<MumpsSolver> mumps_symmetric;
+  bool last_symmetric = false;
   MumpsOptions mumps_options;
   MumpsOptions gathered_options;  // mumps_options for the gathered solves (ordering: amd)
   // Rank 0's 1-rank communicator for the gathered direct solves (split from `parent` once:
@@ -182,6 +187,10 @@ const std::string& LinearSolver::last_type() const {
   return impl_->last_type;
 }
 
+bool LinearSolver::last_solve_symmetric() const {
+  return impl_->last_symmetric;
+}
+
 int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: linear solve"));
   const int dim = impl_->dim > 0 ? impl_->dim : 2;  // 2 when set_coordinates was never called
@@ -189,12 +198,42 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
                                ? impl_->type
                                : auto_linear_solver_type((long long)K->getGlobalNumRows(), dim);
   impl_->last_type = type;
+  impl_->last_symmetric = false;
   // The iterative path works on the displacement-only (condensed) system by default.
   const bool condense = impl_->condense_given
                             ? impl_->condense
                             : condenses_by_default(type) && !impl_->mumps_options.gather;
   if (!condense || impl_->pairing.empty())
     return solve_system(K, b, x, type, impl_->belos_type_given ? impl_->belos_type : "CG");
+  // The distributed MUMPS path first tries the symmetric (null-space) reduction: for
+  // frictionless or tied contact with a fixed pairing and a symmetric stiffness it gives a
+  // symmetric positive (semi)definite K̃, factorised as LDLᵀ with about half the flops of the
+  // LU of the condensed system (docs/performance.md, "Symmetric reduction on the direct path
+  // (sym9)"). Anything else (slip, geometry: current) fails its checks and takes the
+  // condensation below.
+  if (type == "mumps" && !impl_->mumps_options.gather) {
+    SymmetricCondensation reduction(impl_->pairing, impl_->dofs_per_node);
+    bool applies = false;
+    {
+      Teuchos::TimeMonitor reduce_timer(
+          *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: symmetric reduction"));
+      applies = reduction.condense(*K, b);
+    }
+    if (applies) {
+      Teuchos::TimeMonitor solve_timer(
+          *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: symmetric MUMPS"));
+      if (!impl_->mumps_symmetric) {
+        MumpsOptions options = impl_->mumps_options;
+        options.symmetric = true;
+        impl_->mumps_symmetric = std::make_unique<MumpsSolver>(options);
+      }
+      Vector y(reduction.matrix()->getRowMap());
+      impl_->mumps_symmetric->solve(reduction.matrix(), reduction.rhs(), y);
+      reduction.expand(y, x);
+      impl_->last_symmetric = true;
+      return 1;
+    }
+  }
   MultiplierCondensation condensation(impl_->pairing, impl_->dofs_per_node);
   {
     Teuchos::TimeMonitor condense_timer(

@@ -34,7 +34,11 @@
 //                            condensed per slave node and the displacement-only system is
 //                            solved, then λ is recovered. A reduced system left with a zero
 //                            diagonal (not produced by Grout's contact rows) is solved
-//                            directly even with type: belos.
+//                            directly even with type: belos. On the distributed MUMPS path
+//                            the symmetric reduction (symmetric_condensation.hpp) is tried
+//                            first: frictionless, tied or sticking contact on the reference
+//                            geometry gives a symmetric K̃, factorised as LDLᵀ by a MumpsSolver of
+//                            its own; any other system falls back to the condensation and LU.
 // --- end condensed multipliers ---
 
 #include <Teuchos_ParameterList.hpp>
@@ -87,6 +91,9 @@ class LinearSolver {
   /// The type of the last solve (auto resolved): mumps, mumps_gathered, amesos2 or belos;
   /// empty before any solve.
   const std::string& last_type() const;
+  /// Whether the last solve went through the symmetric reduction and MUMPS's LDLᵀ
+  /// (symmetric_condensation.hpp; type mumps, distributed, multipliers condensed).
+  bool last_solve_symmetric() const;
 
  private:
   int solve_system(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,

@@ -264,6 +264,8 @@ struct MumpsSolver::Impl {
             ", INFOG(2) = " + std::to_string(infog(m, 2)) + describe(status));
       }
       factorised = true;
+      stats.flops = m.rinfog[2];
+      stats.factor_entries = infog(m, 29);
       return;
     }
   }
@@ -356,7 +358,14 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
     const long long row = row_index[std::size_t(i)];
     for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p) {
       const long long col = column_index[local.graph.entries(p)];
-      if (s.options.symmetric && col > row) continue;
+      if (s.options.symmetric && col > row) {
+        // An explicit zero above the diagonal stands for its mirror's place in the pattern
+        // (symmetric_condensation.hpp keeps the pattern of rows it eliminates that way, on
+        // the rank owning the row only): it adds the lower key (col, row) and nothing to the
+        // values.
+        if (local.values(p) == 0.0) keys.push_back(col * n + row), entry_values.push_back(0.0);
+        continue;
+      }
       keys.push_back(row * n + col);
       entry_values.push_back(local.values(p));
     }

@@ -40,10 +40,12 @@ MumpsOptions mumps_options_from(const Teuchos::ParameterList& params, const std:
 
 /// Counters of what the solver did (for tests and benchmarks).
 struct MumpsStatistics {
-  int analyses = 0;           ///< symbolic analyses (job 1): once per sparsity pattern
-  int factorisations = 0;     ///< numeric factorisations (job 2), retries included
-  int solves = 0;             ///< forward/backward substitutions (job 3)
-  int workspace_retries = 0;  ///< factorisations repeated with more workspace (INFOG(1) -8/-9)
+  int analyses = 0;              ///< symbolic analyses (job 1): once per sparsity pattern
+  int factorisations = 0;        ///< numeric factorisations (job 2), retries included
+  int solves = 0;                ///< forward/backward substitutions (job 3)
+  int workspace_retries = 0;     ///< factorisations repeated with more workspace (INFOG(1) -8/-9)
+  double flops = 0.0;            ///< floating-point operations of the last factorisation, RINFOG(3)
+  long long factor_entries = 0;  ///< entries in the factors of the last one, INFOG(29)
 };
 
 class MumpsSolver {

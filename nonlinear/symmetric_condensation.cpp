@@ -1,0 +1,825 @@
+#include "nonlinear/symmetric_condensation.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <TpetraExt_TripleMatrixMultiply.hpp>
+#include <Tpetra_RowMatrixTransposer.hpp>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace grout {
+
+namespace {
+
+// |K_ij − K_ji| above this times row i's largest |entry|: K is not symmetric.
+constexpr double symmetry_tolerance = 1e-12;
+// Rank decisions on rows scaled to a largest |entry| of 1 (pure-λ rows, λ recovery).
+constexpr double rank_tolerance = 1e-10;
+// A slave pivot below this times its constraint row's largest |entry| is no pivot.
+constexpr double pivot_tolerance = 1e-8;
+// |C N − Gᵀ R| above this times max |C N| of the node: the multiplier does not act along the
+// constraint's gradient.
+constexpr double proportional_tolerance = 1e-10;
+
+struct Row {
+  std::vector<GO> cols;
+  std::vector<double> vals;
+  double rhs = 0.0;
+};
+using RowTable = std::unordered_map<GO, Row>;
+
+// Rows `gids` of J (exact zeros dropped) and b on this rank (collective).
+void import_rows(const Matrix& J, const Vector& b, std::vector<GO> gids, RowTable& table) {
+  std::sort(gids.begin(), gids.end());
+  gids.erase(std::unique(gids.begin(), gids.end()), gids.end());
+  const auto comm = J.getRowMap()->getComm();
+  const auto target = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                           gids.data(), gids.size(), 0, comm));
+  const Import importer(J.getRowMap(), target);
+  Matrix Jt(target, 0);
+  Jt.doImport(J, importer, Tpetra::INSERT);
+  Jt.fillComplete(J.getDomainMap(), J.getRangeMap());
+  Vector bt(target);
+  bt.doImport(b, importer, Tpetra::INSERT);
+  const auto local = Jt.getLocalMatrixHost();
+  const auto bv = bt.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (LO i = 0; i < LO(target->getNodeNumElements()); ++i) {
+    Row& r = table[target->getGlobalElement(i)];
+    r.cols.clear(), r.vals.clear();
+    for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p) {
+      if (local.values(p) == 0.0) continue;
+      r.cols.push_back(Jt.getColMap()->getGlobalElement(local.graph.entries(p)));
+      r.vals.push_back(local.values(p));
+    }
+    r.rhs = bv(i, 0);
+  }
+}
+
+// Gaussian elimination with complete pivoting on the dense m×n matrix a (row-major), each row
+// first scaled to a largest |entry| of 1, pivots only in the columns with allowed[c]: the
+// (row, column) pivots in order, at most max_pivots, while the largest remaining |entry|
+// exceeds tolerance.
+std::vector<std::pair<int, int>> complete_pivots(std::vector<double> a, int m, int n,
+                                                 const std::vector<char>& allowed, int max_pivots,
+                                                 double tolerance) {
+  for (int i = 0; i < m; ++i) {
+    double s = 0.0;
+    for (int c = 0; c < n; ++c) s = std::max(s, std::abs(a[i * n + c]));
+    if (s > 0.0)
+      for (int c = 0; c < n; ++c) a[i * n + c] /= s;
+  }
+  std::vector<char> row_used(m, 0), col_used(n, 0);
+  std::vector<std::pair<int, int>> out;
+  while (int(out.size()) < max_pivots) {
+    int pi = -1, pc = -1;
+    double best = tolerance;
+    for (int i = 0; i < m; ++i)
+      for (int c = 0; c < n; ++c)
+        if (!row_used[i] && !col_used[c] && allowed[c] && std::abs(a[i * n + c]) > best)
+          best = std::abs(a[i * n + c]), pi = i, pc = c;
+    if (pi < 0) break;
+    row_used[pi] = col_used[pc] = 1;
+    out.emplace_back(pi, pc);
+    for (int i = 0; i < m; ++i) {
+      if (row_used[i]) continue;
+      const double f = a[i * n + pc] / a[pi * n + pc];
+      for (int c = 0; c < n; ++c) a[i * n + c] -= f * a[pi * n + c];
+    }
+  }
+  return out;
+}
+
+// Inverse of the n×n matrix a (row-major), Gauss-Jordan with partial pivoting; false if
+// singular.
+bool invert(std::vector<double> a, int n, std::vector<double>& inverse) {
+  inverse.assign(std::size_t(n) * n, 0.0);
+  for (int i = 0; i < n; ++i) inverse[i * n + i] = 1.0;
+  for (int c = 0; c < n; ++c) {
+    int p = c;
+    for (int i = c + 1; i < n; ++i)
+      if (std::abs(a[i * n + c]) > std::abs(a[p * n + c])) p = i;
+    if (a[p * n + c] == 0.0) return false;
+    for (int k = 0; k < n; ++k) std::swap(a[c * n + k], a[p * n + k]);
+    for (int k = 0; k < n; ++k) std::swap(inverse[c * n + k], inverse[p * n + k]);
+    const double d = a[c * n + c];
+    for (int k = 0; k < n; ++k) a[c * n + k] /= d, inverse[c * n + k] /= d;
+    for (int i = 0; i < n; ++i) {
+      if (i == c || a[i * n + c] == 0.0) continue;
+      const double f = a[i * n + c];
+      for (int k = 0; k < n; ++k) a[i * n + k] -= f * a[c * n + k];
+      for (int k = 0; k < n; ++k) inverse[i * n + k] -= f * inverse[c * n + k];
+    }
+  }
+  return true;
+}
+
+// What condense() keeps of one slave node (handled by the rank owning its dofs).
+struct NodeData {
+  std::vector<int> pairs;  ///< d pairs: the node's multipliers and slave dofs
+  int k = 0;               ///< constraint rows = eliminated slave dofs
+  std::vector<GO> eliminated;
+  std::vector<double> c;                        ///< c_e = G_e⁻¹ g (k)
+  std::vector<std::map<GO, double>> t_rows;     ///< u_e = c_e + Σ_f A_ef u_f (old GIDs f)
+  std::vector<double> lambda0;                  ///< particular λ of P λ = p (d)
+  std::vector<double> N;                        ///< d × k, ker P
+  std::vector<GO> recovery_rows;                ///< k slave force rows giving μ
+  std::vector<std::vector<double>> recovery_c;  ///< their λ coefficients (d each)
+  std::vector<double> recovery_inverse;         ///< ((C_s N) of those rows)⁻¹, k × k
+};
+
+}  // namespace
+
+struct SymmetricCondensation::Impl {
+  int dofs_per_node = 1;
+  std::vector<GO> lambda, slave;
+  std::unordered_map<GO, int> by_lambda, by_slave;
+  std::map<GO, std::vector<int>> nodes;  ///< slave node -> its pairs (replicated)
+
+  std::string reason;
+  Statistics stats;
+  std::vector<NodeData> handled;
+  RowTable rows;
+  Teuchos::RCP<const Map> full_map, reduced_map, needed_map;
+  Teuchos::RCP<Import> needed_import;
+  Teuchos::RCP<Matrix> T, A;
+  Teuchos::RCP<Vector> rhs;
+
+  bool is_lambda(GO g) const { return by_lambda.count(g) != 0; }
+};
+
+SymmetricCondensation::SymmetricCondensation(const MultiplierPairing& lambda_to_slave,
+                                             int dofs_per_node)
+    : impl_(std::make_unique<Impl>()) {
+  if (dofs_per_node < 1) throw std::invalid_argument("SymmetricCondensation: dofs_per_node < 1");
+  Impl& m = *impl_;
+  m.dofs_per_node = dofs_per_node;
+  for (const auto& [t, s] : lambda_to_slave) {
+    const int p = int(m.lambda.size());
+    if (!m.by_lambda.emplace(t, p).second || !m.by_slave.emplace(s, p).second)
+      throw std::invalid_argument("SymmetricCondensation: multiplier " + std::to_string(t) +
+                                  " or slave dof " + std::to_string(s) + " paired twice");
+    m.lambda.push_back(t);
+    m.slave.push_back(s);
+    m.nodes[s / dofs_per_node].push_back(p);
+  }
+}
+
+SymmetricCondensation::~SymmetricCondensation() = default;
+
+Teuchos::RCP<const Matrix> SymmetricCondensation::matrix() const {
+  return impl_->A;
+}
+const Vector& SymmetricCondensation::rhs() const {
+  return *impl_->rhs;
+}
+const std::string& SymmetricCondensation::reason() const {
+  return impl_->reason;
+}
+const SymmetricCondensation::Statistics& SymmetricCondensation::statistics() const {
+  return impl_->stats;
+}
+
+namespace {
+
+// The first non-empty `why` of any rank (lowest rank first), on every rank; empty if none.
+std::string agree(const Comm& comm, const std::string& why) {
+  const int size = comm.getSize();
+  int mine = why.empty() ? size : comm.getRank(), first = size;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, mine, Teuchos::outArg(first));
+  if (first == size) return std::string();
+  int length = int(why.size());
+  Teuchos::broadcast(comm, first, Teuchos::outArg(length));
+  std::string out = comm.getRank() == first ? why : std::string(std::size_t(length), ' ');
+  if (length > 0) Teuchos::broadcast(comm, first, length, &out[0]);
+  return out;
+}
+
+// Checks that J's displacement block (rows and columns that are no paired multiplier) is
+// symmetric: |J_ij − J_ji| ≤ symmetry_tolerance × max_k |J_ik| (collective). Returns the
+// first offending entry, or an empty string.
+std::string check_symmetric(const Matrix& J, const Vector& b,
+                            const std::unordered_map<GO, int>& by_lambda) {
+  const auto& row_map = *J.getRowMap();
+  const auto& col_map = *J.getColMap();
+  const auto local = J.getLocalMatrixHost();
+  const LO n_rows = LO(row_map.getNodeNumElements());
+  const LO n_cols = LO(col_map.getNodeNumElements());
+  std::vector<char> lambda_col(n_cols, 0);
+  std::vector<LO> col_to_row(n_cols, -1), row_to_col(n_rows, -1);
+  std::vector<GO> ghosts;
+  for (LO c = 0; c < n_cols; ++c) {
+    const GO g = col_map.getGlobalElement(c);
+    lambda_col[c] = by_lambda.count(g) != 0;
+    col_to_row[c] = row_map.getLocalElement(g);
+    if (col_to_row[c] == Teuchos::OrdinalTraits<LO>::invalid()) {
+      col_to_row[c] = -1;
+      if (!lambda_col[c]) ghosts.push_back(g);
+    } else {
+      row_to_col[col_to_row[c]] = c;
+    }
+  }
+  RowTable ghost_rows;
+  import_rows(J, b, ghosts, ghost_rows);
+  const bool sorted = J.getCrsGraph()->isSorted();
+  std::string why;
+  for (LO i = 0; i < n_rows && why.empty(); ++i) {
+    const GO gi = row_map.getGlobalElement(i);
+    if (by_lambda.count(gi)) continue;
+    const auto begin = local.graph.row_map(i), end = local.graph.row_map(i + 1);
+    double scale = 0.0;
+    for (auto p = begin; p < end; ++p)
+      if (!lambda_col[local.graph.entries(p)]) scale = std::max(scale, std::abs(local.values(p)));
+    const double tolerance = symmetry_tolerance * scale;
+    for (auto p = begin; p < end; ++p) {
+      const LO c = local.graph.entries(p);
+      if (lambda_col[c]) continue;
+      const double v = local.values(p);
+      double w = 0.0;
+      if (col_to_row[c] >= 0) {
+        const LO j = col_to_row[c], ci = row_to_col[i];
+        if (ci >= 0) {
+          const auto jb = local.graph.row_map(j), je = local.graph.row_map(j + 1);
+          if (sorted) {
+            auto lo = jb, hi = je;
+            while (lo < hi) {
+              const auto mid = lo + (hi - lo) / 2;
+              if (local.graph.entries(mid) < ci)
+                lo = mid + 1;
+              else
+                hi = mid;
+            }
+            if (lo < je && local.graph.entries(lo) == ci) w = local.values(lo);
+          } else {
+            for (auto q = jb; q < je; ++q)
+              if (local.graph.entries(q) == ci) w += local.values(q);
+          }
+        }
+      } else {
+        const Row& r = ghost_rows.at(col_map.getGlobalElement(c));
+        for (std::size_t e = 0; e < r.cols.size(); ++e)
+          if (r.cols[e] == gi) w += r.vals[e];
+      }
+      if (std::abs(v - w) > tolerance) {
+        why = "the stiffness is not symmetric: K(" + std::to_string(gi) + ", " +
+              std::to_string(col_map.getGlobalElement(c)) + ") = " + std::to_string(v) + " but K(" +
+              std::to_string(col_map.getGlobalElement(c)) + ", " + std::to_string(gi) +
+              ") = " + std::to_string(w);
+        break;
+      }
+    }
+  }
+  return why;
+}
+
+}  // namespace
+
+bool SymmetricCondensation::condense(const Matrix& J, const Vector& b) {
+  Impl& m = *impl_;
+  const auto comm = J.getRowMap()->getComm();
+  const auto& row_map = *J.getRowMap();
+  const int n_pairs = int(m.lambda.size());
+  m.reason.clear();
+  m.stats = Statistics();
+  m.handled.clear();
+  m.rows.clear();
+  m.A = m.T = Teuchos::null;
+  m.rhs = Teuchos::null;
+  m.full_map = J.getRowMap();
+  std::string why;
+
+  // 1. The nodes this rank handles: those whose multipliers and slave dofs it owns.
+  std::vector<GO> needed;
+  for (const auto& [node, pairs] : m.nodes) {
+    if (!row_map.isNodeGlobalElement(m.lambda[pairs.front()])) continue;
+    for (int p : pairs) {
+      if (!row_map.isNodeGlobalElement(m.lambda[p]) || !row_map.isNodeGlobalElement(m.slave[p]))
+        why =
+            "slave node " + std::to_string(node) + ": its dofs and multipliers on different ranks";
+      needed.push_back(m.lambda[p]);
+      needed.push_back(m.slave[p]);
+    }
+    m.handled.emplace_back();
+    m.handled.back().pairs = pairs;
+  }
+  if (!(m.reason = agree(*comm, why)).empty()) return false;
+  import_rows(J, b, needed, m.rows);
+  // The cheapest check first (friction and the current geometry fail it): every multiplier
+  // row holds either displacements only or this node's multipliers only.
+  for (const NodeData& nd : m.handled) {
+    for (int p : nd.pairs) {
+      bool has_u = false, has_lambda = false;
+      for (GO c : m.rows.at(m.lambda[p]).cols) {
+        const auto it = m.by_lambda.find(c);
+        if (it == m.by_lambda.end())
+          has_u = true;
+        else if (std::find(nd.pairs.begin(), nd.pairs.end(), it->second) != nd.pairs.end())
+          has_lambda = true;
+        else
+          has_u = has_lambda = true;  // another node's multiplier: fails below
+      }
+      if (has_u && has_lambda && why.empty())
+        why = "slave node " + std::to_string(m.slave[p] / m.dofs_per_node) +
+              ": a multiplier row mixes displacements and multipliers (friction or geometry: "
+              "current)";
+    }
+  }
+  if (!(m.reason = agree(*comm, why)).empty()) return false;
+
+  // 2. Cᵀ: the multiplier columns of the displacement rows, by multiplier, on the handling
+  //    rank (Tpetra's transpose of C, whose domain map is the handled multipliers).
+  std::unordered_map<GO, std::vector<std::pair<GO, double>>> columns;  // λ -> (row, C[row, λ])
+  {
+    std::vector<GO> handled_lambda;
+    for (const NodeData& nd : m.handled)
+      for (int p : nd.pairs) handled_lambda.push_back(m.lambda[p]);
+    const auto lambda_map =
+        Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                             handled_lambda.data(), handled_lambda.size(), 0, comm));
+    const auto& col_map = *J.getColMap();
+    const auto local = J.getLocalMatrixHost();
+    const LO n_rows = LO(row_map.getNodeNumElements());
+    std::vector<std::size_t> counts(n_rows, 0);
+    std::vector<std::vector<GO>> cols(n_rows);
+    std::vector<std::vector<double>> vals(n_rows);
+    for (LO i = 0; i < n_rows; ++i) {
+      if (m.is_lambda(row_map.getGlobalElement(i))) continue;
+      for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p) {
+        const GO c = col_map.getGlobalElement(local.graph.entries(p));
+        if (local.values(p) != 0.0 && m.is_lambda(c))
+          cols[i].push_back(c), vals[i].push_back(local.values(p));
+      }
+      counts[i] = cols[i].size();
+    }
+    auto C = Teuchos::rcp(new Matrix(J.getRowMap(), Teuchos::ArrayView<const std::size_t>(counts)));
+    for (LO i = 0; i < n_rows; ++i)
+      if (!cols[i].empty())
+        C->insertGlobalValues(row_map.getGlobalElement(i), Teuchos::ArrayView<const GO>(cols[i]),
+                              Teuchos::ArrayView<const double>(vals[i]));
+    C->fillComplete(lambda_map, J.getRowMap());
+    const auto Ct = Tpetra::RowMatrixTransposer<double, LO, GO, Node>(C).createTranspose();
+    const auto ct = Ct->getLocalMatrixHost();
+    for (LO i = 0; i < LO(lambda_map->getNodeNumElements()); ++i) {
+      auto& column = columns[lambda_map->getGlobalElement(i)];
+      for (auto p = ct.graph.row_map(i); p < ct.graph.row_map(i + 1); ++p)
+        if (ct.values(p) != 0.0)
+          column.emplace_back(Ct->getColMap()->getGlobalElement(ct.graph.entries(p)), ct.values(p));
+    }
+  }
+
+  // 3. Per handled node: the λ-rows' structure, the eliminated slave dofs, T's rows, C N ∝ Gᵀ
+  //    and the recovery of λ (header).
+  for (NodeData& nd : m.handled) {
+    if (!why.empty()) break;
+    const int d = int(nd.pairs.size());
+    const std::vector<char> all_columns(std::size_t(d), 1);
+    const GO node = m.slave[nd.pairs.front()] / m.dofs_per_node;
+    const std::string at = "slave node " + std::to_string(node) + ": ";
+    std::unordered_map<GO, int> own;  // the node's multipliers -> 0 .. d-1
+    for (int i = 0; i < d; ++i) own[m.lambda[nd.pairs[i]]] = i;
+    std::vector<double> P, p_rhs;  // pure-λ rows (r × d)
+    std::vector<const Row*> G;     // constraint rows
+    for (int i = 0; i < d && why.empty(); ++i) {
+      const Row& row = m.rows.at(m.lambda[nd.pairs[i]]);
+      bool has_u = false, has_lambda = false;
+      std::vector<double> coefficients(d, 0.0);
+      for (std::size_t e = 0; e < row.cols.size(); ++e) {
+        const auto it = own.find(row.cols[e]);
+        if (it != own.end()) {
+          has_lambda = true, coefficients[it->second] += row.vals[e];
+        } else if (m.is_lambda(row.cols[e])) {
+          why = at + "a multiplier row holds another node's multiplier";
+        } else {
+          has_u = true;
+        }
+      }
+      if (has_u && has_lambda)
+        why = at +
+              "a multiplier row mixes displacements and multipliers (friction or "
+              "geometry: current)";
+      else if (!has_u && !has_lambda)
+        why = at + "an empty multiplier row";
+      else if (has_lambda)
+        P.insert(P.end(), coefficients.begin(), coefficients.end()), p_rhs.push_back(row.rhs);
+      else
+        G.push_back(&row);
+    }
+    if (!why.empty()) break;
+    const int r = int(p_rhs.size()), k = int(G.size());
+    nd.k = k;
+    // P λ = p: λ0 on P's pivot columns, N = ker P (d × k).
+    const auto p_pivots = complete_pivots(P, r, d, all_columns, r, rank_tolerance);
+    if (int(p_pivots.size()) < r) {
+      why = at + "its multiplier-only rows are dependent";
+      break;
+    }
+    std::vector<int> pivot_cols, free_cols;
+    {
+      std::vector<char> is_pivot(d, 0);
+      for (const auto& [i, c] : p_pivots) pivot_cols.push_back(c), is_pivot[c] = 1;
+      for (int c = 0; c < d; ++c)
+        if (!is_pivot[c]) free_cols.push_back(c);
+    }
+    nd.lambda0.assign(d, 0.0);
+    nd.N.assign(std::size_t(d) * k, 0.0);
+    if (r > 0) {
+      std::vector<double> Pp(std::size_t(r) * r), Pinv;
+      for (int i = 0; i < r; ++i)
+        for (int j = 0; j < r; ++j) Pp[i * r + j] = P[i * d + pivot_cols[j]];
+      invert(Pp, r, Pinv);
+      for (int j = 0; j < r; ++j)
+        for (int i = 0; i < r; ++i) nd.lambda0[pivot_cols[j]] += Pinv[j * r + i] * p_rhs[i];
+      for (int f = 0; f < k; ++f)
+        for (int j = 0; j < r; ++j)
+          for (int i = 0; i < r; ++i)
+            nd.N[pivot_cols[j] * k + f] -= Pinv[j * r + i] * P[i * d + free_cols[f]];
+    }
+    for (int f = 0; f < k; ++f) nd.N[free_cols[f] * k + f] = 1.0;
+    if (k == 0) continue;
+
+    // Slave pivots: complete pivoting on the node's slave block of G, rows scaled by their
+    // largest entry over all columns; prescribed slave dofs (rows holding their diagonal
+    // only) never pivot.
+    std::vector<double> Gs(std::size_t(k) * d, 0.0);
+    std::vector<char> allowed(d, 1);
+    for (int c = 0; c < d; ++c) {
+      const GO s = m.slave[nd.pairs[c]];
+      const Row& srow = m.rows.at(s);
+      bool diagonal_only = true;
+      for (GO col : srow.cols) diagonal_only = diagonal_only && col == s;
+      allowed[c] = !diagonal_only;
+    }
+    for (int i = 0; i < k; ++i) {
+      double scale = 0.0;
+      for (double v : G[i]->vals) scale = std::max(scale, std::abs(v));
+      for (std::size_t e = 0; e < G[i]->cols.size(); ++e) {
+        const auto it = m.by_slave.find(G[i]->cols[e]);
+        if (it == m.by_slave.end()) continue;
+        const auto pos = std::find(nd.pairs.begin(), nd.pairs.end(), it->second);
+        if (pos != nd.pairs.end()) Gs[i * d + int(pos - nd.pairs.begin())] += G[i]->vals[e] / scale;
+      }
+    }
+    // complete_pivots rescales rows by their slave block: compare with the whole row here.
+    std::vector<std::pair<int, int>> g_pivots;
+    {
+      std::vector<double> a = Gs;
+      std::vector<char> row_used(k, 0), col_used(d, 0);
+      while (int(g_pivots.size()) < k) {
+        int pi = -1, pc = -1;
+        double best = pivot_tolerance;
+        for (int i = 0; i < k; ++i)
+          for (int c = 0; c < d; ++c)
+            if (!row_used[i] && !col_used[c] && allowed[c] && std::abs(a[i * d + c]) > best)
+              best = std::abs(a[i * d + c]), pi = i, pc = c;
+        if (pi < 0) break;
+        row_used[pi] = col_used[pc] = 1;
+        g_pivots.emplace_back(pi, pc);
+        for (int i = 0; i < k; ++i) {
+          if (row_used[i]) continue;
+          const double f = a[i * d + pc] / a[pi * d + pc];
+          for (int c = 0; c < d; ++c) a[i * d + c] -= f * a[pi * d + c];
+        }
+      }
+    }
+    if (int(g_pivots.size()) < k) {
+      why = at + "no unprescribed slave dof pivots its constraint rows";
+      break;
+    }
+    std::vector<GO> e_gid(k);
+    for (int l = 0; l < k; ++l) e_gid[l] = m.slave[nd.pairs[g_pivots[l].second]];
+    nd.eliminated = e_gid;
+    // G_e (k × k, rows in G's order, columns the eliminated dofs), its inverse.
+    std::vector<std::map<GO, double>> g_rows(k);
+    for (int i = 0; i < k; ++i)
+      for (std::size_t e = 0; e < G[i]->cols.size(); ++e) g_rows[i][G[i]->cols[e]] += G[i]->vals[e];
+    std::vector<double> Ge(std::size_t(k) * k, 0.0), Ginv;
+    for (int i = 0; i < k; ++i)
+      for (int l = 0; l < k; ++l)
+        if (auto it = g_rows[i].find(e_gid[l]); it != g_rows[i].end()) Ge[i * k + l] = it->second;
+    if (!invert(Ge, k, Ginv)) {
+      why = at + "singular constraint block";
+      break;
+    }
+    // u_e = G_e⁻¹ (g − G_f u_f): row l of Ginv gives e_l.
+    nd.c.assign(k, 0.0);
+    nd.t_rows.assign(k, {});
+    for (int l = 0; l < k; ++l)
+      for (int i = 0; i < k; ++i) {
+        const double w = Ginv[l * k + i];
+        nd.c[l] += w * G[i]->rhs;
+        for (const auto& [col, v] : g_rows[i])
+          if (std::find(e_gid.begin(), e_gid.end(), col) == e_gid.end()) nd.t_rows[l][col] -= w * v;
+      }
+    // C N (rows r, k columns) and R = G_e⁻ᵀ (C N)[e, :]; C N = Gᵀ R on every row.
+    std::map<GO, std::vector<double>> CN;
+    double cn_max = 0.0;
+    for (int c = 0; c < d; ++c)
+      for (const auto& [row, v] : columns[m.lambda[nd.pairs[c]]]) {
+        auto& out = CN[row];
+        out.resize(k, 0.0);
+        for (int f = 0; f < k; ++f) out[f] += v * nd.N[c * k + f];
+      }
+    for (const auto& [row, v] : CN)
+      for (double x : v) cn_max = std::max(cn_max, std::abs(x));
+    std::vector<double> R(std::size_t(k) * k, 0.0);
+    for (int i = 0; i < k; ++i)
+      for (int f = 0; f < k; ++f)
+        for (int l = 0; l < k; ++l)
+          if (auto it = CN.find(e_gid[l]); it != CN.end())
+            R[i * k + f] += Ginv[l * k + i] * it->second[f];
+    std::set<GO> check_rows;
+    for (const auto& [row, v] : CN) check_rows.insert(row);
+    for (const auto& g : g_rows)
+      for (const auto& [col, v] : g) check_rows.insert(col);
+    for (GO row : check_rows) {
+      for (int f = 0; f < k && why.empty(); ++f) {
+        double gr = 0.0;
+        for (int i = 0; i < k; ++i)
+          if (auto it = g_rows[i].find(row); it != g_rows[i].end()) gr += it->second * R[i * k + f];
+        const auto it = CN.find(row);
+        const double cn = it != CN.end() ? it->second[f] : 0.0;
+        if (!(std::abs(cn - gr) <= proportional_tolerance * cn_max))
+          why = at + "its multiplier does not act along its constraint's gradient (row " +
+                std::to_string(row) + ")";
+      }
+    }
+    if (!why.empty()) break;
+    // Recovery: μ from k of the node's slave force rows, (C_s N) μ = b_s − K_s u − C_s λ0.
+    std::vector<double> CsN(std::size_t(d) * k, 0.0);
+    std::vector<std::vector<double>> cs(d, std::vector<double>(d, 0.0));
+    for (int s = 0; s < d; ++s) {
+      const Row& srow = m.rows.at(m.slave[nd.pairs[s]]);
+      for (std::size_t e = 0; e < srow.cols.size(); ++e) {
+        if (const auto it = own.find(srow.cols[e]); it != own.end())
+          cs[s][it->second] += srow.vals[e];
+        else if (m.is_lambda(srow.cols[e]))
+          why = at + "its slave force row holds another node's multiplier";
+      }
+      for (int f = 0; f < k; ++f)
+        for (int c = 0; c < d; ++c) CsN[s * k + f] += cs[s][c] * nd.N[c * k + f];
+    }
+    if (!why.empty()) break;
+    const auto r_pivots = complete_pivots(CsN, d, k, all_columns, k, rank_tolerance);
+    if (int(r_pivots.size()) < k) {
+      why = at + "its multipliers cannot be recovered from its slave force rows";
+      break;
+    }
+    std::vector<double> Ms(std::size_t(k) * k);
+    for (int i = 0; i < k; ++i) {
+      const int s = r_pivots[i].first;
+      nd.recovery_rows.push_back(m.slave[nd.pairs[s]]);
+      nd.recovery_c.push_back(cs[s]);
+      for (int f = 0; f < k; ++f) Ms[i * k + f] = CsN[s * k + f];
+    }
+    if (!invert(Ms, k, nd.recovery_inverse)) why = at + "singular recovery block";
+  }
+  if (!(m.reason = agree(*comm, why)).empty()) return false;
+
+  // 4. The eliminated dofs (replicated); none may occur in another node's constraint.
+  std::vector<GO> eliminated;
+  {
+    std::vector<long long> local(std::size_t(n_pairs), -1), global(local.size(), -1);
+    for (const NodeData& nd : m.handled)
+      for (GO e : nd.eliminated) local[m.by_slave.at(e)] = e;
+    if (n_pairs > 0)
+      Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, n_pairs, local.data(), global.data());
+    for (long long e : global)
+      if (e >= 0) eliminated.push_back(e);
+    std::sort(eliminated.begin(), eliminated.end());
+    for (const NodeData& nd : m.handled)
+      for (const auto& t_row : nd.t_rows)
+        for (const auto& [col, v] : t_row)
+          if (std::binary_search(eliminated.begin(), eliminated.end(), col) && why.empty())
+            why = "dof " + std::to_string(col) +
+                  " is eliminated by one slave node and constrained by another";
+  }
+  if (!(m.reason = agree(*comm, why)).empty()) return false;
+
+  // 5. K symmetric.
+  if (!(m.reason = agree(*comm, check_symmetric(J, b, m.by_lambda))).empty()) return false;
+
+  // 6. The reduced map: J's GIDs that are no paired multiplier, renumbered new = old − (the
+  //    multipliers below old). An eliminated dof keeps its row, as ũ_e = 0 (K̃_ee = K_ee, b̃_e
+  //    = 0): the reduced system has the same size and mostly the same pattern whatever the
+  //    active set, so that MUMPS keeps its analysis from one Newton iteration to the next.
+  std::vector<GO> skipped = m.lambda;
+  std::sort(skipped.begin(), skipped.end());
+  const auto new_gid = [&](GO g) {
+    return g - GO(std::lower_bound(skipped.begin(), skipped.end(), g) - skipped.begin());
+  };
+  std::vector<GO> reduced;
+  for (LO i = 0; i < LO(row_map.getNodeNumElements()); ++i) {
+    const GO g = row_map.getGlobalElement(i);
+    if (!std::binary_search(skipped.begin(), skipped.end(), g)) reduced.push_back(new_gid(g));
+  }
+  m.reduced_map = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                       reduced.data(), reduced.size(), 0, comm));
+
+  // 7. T (J's row map × reduced map): 1 on the kept dofs, A_ef on the eliminated ones; zero
+  //    multiplier rows and eliminated columns. K̃ = Tᵀ J T = Tᵀ K T, plus K_ee on the
+  //    eliminated rows, and the pattern they would have if kept as zeros (below).
+  std::unordered_map<GO, const std::map<GO, double>*> t_row_of;
+  for (const NodeData& nd : m.handled)
+    for (int l = 0; l < nd.k; ++l) t_row_of[nd.eliminated[l]] = &nd.t_rows[l];
+  {
+    const LO n_rows = LO(row_map.getNodeNumElements());
+    std::vector<std::size_t> counts(n_rows, 0);
+    for (LO i = 0; i < n_rows; ++i) {
+      const GO g = row_map.getGlobalElement(i);
+      if (const auto it = t_row_of.find(g); it != t_row_of.end())
+        counts[i] = it->second->size();
+      else if (!m.is_lambda(g))
+        counts[i] = 1;
+    }
+    m.T = Teuchos::rcp(new Matrix(J.getRowMap(), Teuchos::ArrayView<const std::size_t>(counts)));
+    std::vector<GO> cols;
+    std::vector<double> vals;
+    for (LO i = 0; i < n_rows; ++i) {
+      const GO g = row_map.getGlobalElement(i);
+      cols.clear(), vals.clear();
+      if (const auto it = t_row_of.find(g); it != t_row_of.end()) {
+        for (const auto& [f, v] : *it->second) cols.push_back(new_gid(f)), vals.push_back(v);
+      } else if (!m.is_lambda(g)) {
+        cols.push_back(new_gid(g)), vals.push_back(1.0);
+      }
+      if (!cols.empty())
+        m.T->insertGlobalValues(g, Teuchos::ArrayView<const GO>(cols),
+                                Teuchos::ArrayView<const double>(vals));
+    }
+    m.T->fillComplete(m.reduced_map, J.getRowMap());
+  }
+  {
+    Matrix product(m.reduced_map, 0);
+    Tpetra::TripleMatrixMultiply::MultiplyRAP(*m.T, true, J, false, *m.T, false, product);
+    // The eliminated rows and columns are empty in the product. They get K_ee on the
+    // diagonal and zeros where K T has entries in row e: the pattern K̃ would have with e
+    // kept (its column e too: MumpsSolver reads a zero above the diagonal as its mirror). Then K̃'s
+    // pattern stays within the union of the Newton iterations' patterns when a dof is eliminated in
+    // some and kept in others, and MUMPS keeps its analysis (without them, 7 analyses in 7 Newton
+    // iterations on the 3D Hertz spheres instead of 3).
+    std::unordered_map<GO, std::map<GO, double>> extra;  // reduced row -> (column, value)
+    // T's rows of the eliminated dofs in K's rows e that another rank eliminates.
+    RowTable remote_t_rows;
+    {
+      std::vector<GO> remote;
+      for (const auto& [e, t_row] : t_row_of)
+        for (GO f : m.rows.at(e).cols)
+          if (!row_map.isNodeGlobalElement(f) &&
+              std::binary_search(eliminated.begin(), eliminated.end(), f))
+            remote.push_back(f);
+      Vector zero(J.getRowMap());
+      import_rows(*m.T, zero, remote, remote_t_rows);
+    }
+    for (const auto& [e, t_row] : t_row_of) {
+      const GO ne = new_gid(e);
+      const Row& row = m.rows.at(e);
+      auto& out = extra[ne];
+      for (std::size_t q = 0; q < row.cols.size(); ++q) {
+        const GO f = row.cols[q];
+        if (m.is_lambda(f)) continue;
+        if (f == e) {
+          out[ne] = row.vals[q] != 0.0 ? row.vals[q] : 1.0;
+        } else if (const auto it = t_row_of.find(f); it != t_row_of.end()) {
+          for (const auto& [c, v] : *it->second) out.emplace(new_gid(c), 0.0);  // (K T)'s row e
+        } else if (const auto r = remote_t_rows.find(f); r != remote_t_rows.end()) {
+          for (GO c : r->second.cols) out.emplace(c, 0.0);  // already reduced GIDs
+        } else {
+          out.emplace(new_gid(f), 0.0);
+        }
+      }
+      if (out.count(ne) == 0) out[ne] = 1.0;
+    }
+    const auto& product_cols = *product.getColMap();
+    std::vector<GO> col_gids(product_cols.getNodeNumElements());
+    for (std::size_t c = 0; c < col_gids.size(); ++c)
+      col_gids[c] = product_cols.getGlobalElement(LO(c));
+    std::unordered_map<GO, LO> appended;
+    for (const auto& [row, entries] : extra)
+      for (const auto& [c, v] : entries)
+        if (product_cols.getLocalElement(c) == Teuchos::OrdinalTraits<LO>::invalid() &&
+            appended.emplace(c, LO(col_gids.size())).second)
+          col_gids.push_back(c);
+    const auto col_lid = [&](GO c) {
+      const LO l = product_cols.getLocalElement(c);
+      return l != Teuchos::OrdinalTraits<LO>::invalid() ? l : appended.at(c);
+    };
+    const auto col_map =
+        Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                             col_gids.data(), col_gids.size(), 0, comm));
+    // Without the exact zeros of the product (J's prescribed rows and columns): MUMPS's
+    // pattern is the coupling's, as in the condensed system.
+    const auto local = product.getLocalMatrixHost();
+    const LO n = LO(m.reduced_map->getNodeNumElements());
+    Teuchos::ArrayRCP<std::size_t> ptr(n + 1, 0);
+    std::size_t nnz = 0;
+    for (LO i = 0; i < n; ++i) {
+      for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p)
+        nnz += local.values(p) != 0.0;
+      if (const auto it = extra.find(m.reduced_map->getGlobalElement(i)); it != extra.end())
+        nnz += it->second.size();
+    }
+    Teuchos::ArrayRCP<LO> ind(nnz);
+    Teuchos::ArrayRCP<double> val(nnz);
+    nnz = 0;
+    std::vector<std::pair<LO, double>> row_entries;
+    for (LO i = 0; i < n; ++i) {
+      row_entries.clear();
+      for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p)
+        if (local.values(p) != 0.0)
+          row_entries.emplace_back(local.graph.entries(p), local.values(p));
+      if (const auto it = extra.find(m.reduced_map->getGlobalElement(i)); it != extra.end()) {
+        for (const auto& [c, v] : it->second) row_entries.emplace_back(col_lid(c), v);
+        std::sort(row_entries.begin(), row_entries.end());
+      }
+      for (const auto& [c, v] : row_entries) ind[nnz] = c, val[nnz++] = v;
+      ptr[i + 1] = nnz;
+    }
+    m.A = Teuchos::rcp(new Matrix(m.reduced_map, col_map, ptr, ind, val));
+    m.A->fillComplete(m.reduced_map, m.reduced_map);
+  }
+
+  // 8. b̃ = Tᵀ (b − J w), w = c on the eliminated dofs and λ0 on the multipliers.
+  {
+    Vector w(J.getRowMap()), r(J.getRowMap());
+    {
+      auto wv = w.getLocalViewHost(Tpetra::Access::OverwriteAll);
+      for (LO i = 0; i < LO(row_map.getNodeNumElements()); ++i) wv(i, 0) = 0.0;
+      for (const NodeData& nd : m.handled) {
+        for (int c = 0; c < int(nd.pairs.size()); ++c)
+          wv(row_map.getLocalElement(m.lambda[nd.pairs[c]]), 0) = nd.lambda0[c];
+        for (int l = 0; l < nd.k; ++l) wv(row_map.getLocalElement(nd.eliminated[l]), 0) = nd.c[l];
+      }
+    }
+    J.apply(w, r);
+    r.update(1.0, b, -1.0);
+    m.rhs = Teuchos::rcp(new Vector(m.reduced_map));
+    m.T->apply(r, *m.rhs, Teuchos::TRANS);
+  }
+
+  // 9. For expand(): the displacement columns of the recovery rows.
+  {
+    std::vector<GO> cols;
+    for (const NodeData& nd : m.handled)
+      for (GO s : nd.recovery_rows)
+        for (GO c : m.rows.at(s).cols)
+          if (!m.is_lambda(c)) cols.push_back(c);
+    std::sort(cols.begin(), cols.end());
+    cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
+    m.needed_map = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                        cols.data(), cols.size(), 0, comm));
+    m.needed_import = Teuchos::rcp(new Import(J.getRowMap(), m.needed_map));
+  }
+  int counts[2] = {0, 0}, counts_all[2] = {0, 0};
+  counts[0] = int(m.handled.size());
+  for (const NodeData& nd : m.handled) counts[1] += nd.k;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 2, counts, counts_all);
+  m.stats.nodes = counts_all[0];
+  m.stats.eliminated = counts_all[1];
+  return true;
+}
+
+void SymmetricCondensation::expand(const Vector& y, Vector& x) const {
+  const Impl& m = *impl_;
+  const auto& row_map = *m.full_map;
+  // u = T y + c; the multiplier entries are 0 until recovered below.
+  m.T->apply(y, x);
+  {
+    auto xv = x.getLocalViewHost(Tpetra::Access::ReadWrite);
+    for (const NodeData& nd : m.handled)
+      for (int l = 0; l < nd.k; ++l) xv(row_map.getLocalElement(nd.eliminated[l]), 0) += nd.c[l];
+  }
+  Vector u_needed(m.needed_map);
+  u_needed.doImport(x, *m.needed_import, Tpetra::INSERT);
+  const auto un = u_needed.getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto xv = x.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (const NodeData& nd : m.handled) {
+    const int d = int(nd.pairs.size()), k = nd.k;
+    std::vector<double> lambda = nd.lambda0;
+    if (k > 0) {
+      // (C_s N) μ = b_s − K_s u − C_s λ0 on the recovery rows.
+      std::vector<double> rhs(k, 0.0);
+      for (int i = 0; i < k; ++i) {
+        const Row& srow = m.rows.at(nd.recovery_rows[i]);
+        double v = srow.rhs;
+        for (std::size_t e = 0; e < srow.cols.size(); ++e)
+          if (!m.is_lambda(srow.cols[e]))
+            v -= srow.vals[e] * un(m.needed_map->getLocalElement(srow.cols[e]), 0);
+        for (int c = 0; c < d; ++c) v -= nd.recovery_c[i][c] * nd.lambda0[c];
+        rhs[i] = v;
+      }
+      for (int f = 0; f < k; ++f) {
+        double mu = 0.0;
+        for (int i = 0; i < k; ++i) mu += nd.recovery_inverse[f * k + i] * rhs[i];
+        for (int c = 0; c < d; ++c) lambda[c] += nd.N[c * k + f] * mu;
+      }
+    }
+    for (int c = 0; c < d; ++c) xv(row_map.getLocalElement(m.lambda[nd.pairs[c]]), 0) = lambda[c];
+  }
+}
+
+}  // namespace grout

@@ -1,0 +1,295 @@
+// Symmetric (null-space) reduction of the dual-mortar (u, λ) system
+// (nonlinear/symmetric_condensation.hpp) on 1 and 2 ranks, on the Jacobians of MechanicsProblem
+// for two-block contact meshes in 2D and 3D: for frictionless and tied contact on the
+// reference geometry it applies, K̃ is symmetric, MUMPS's LDLᵀ of K̃ takes about half the
+// flops of the LU, and the expanded solution (u and λ) equals the full direct solve of J x = b;
+// on frictional (slipping) and frictionless contact on the current geometry, on a deliberately
+// non-symmetric K and on multiplier columns that are not the constraints' gradients it
+// declines, and LinearSolver then takes the (non-symmetric) condensation with the same answer.
+
+#include <gtest/gtest.h>
+
+#include <Tpetra_Core.hpp>
+#include <Tpetra_RowMatrixTransposer.hpp>
+#include <cmath>
+#include <random>
+#include <set>
+
+#include "assembly/solid_problem.hpp"
+#include "io/mesh_generators.hpp"
+#include "nonlinear/linear_solver.hpp"
+#include "nonlinear/mechanics_problem.hpp"
+#include "nonlinear/mumps_solver.hpp"
+#include "nonlinear/symmetric_condensation.hpp"
+
+namespace grout {
+namespace {
+
+void add_dirichlet(Input& input, const std::string& set, int component, const std::string& value) {
+  DirichletInput d;
+  d.name = set + "_" + std::to_string(component);
+  d.node_set = set;
+  d.component = component;
+  d.value = Expression(value, "test: " + d.name);
+  input.dirichlet.push_back(d);
+}
+
+// Two blocks: lower bottom fixed, upper top pressed down (and held sideways), x = 0 sides on
+// rollers (slave nodes with a prescribed dof), as in test_condensed_solve.cpp.
+Input two_block_input(int dim, ContactKind type, double mu, ContactGeometry geometry) {
+  Input input;
+  input.file = "test.yaml";
+  input.model.dimension = dim;
+  for (const char* block : {"lower", "upper"}) {
+    MaterialInput m;
+    m.name = block;
+    m.block = block;
+    m.youngs_modulus = std::string(block) == "lower" ? 1000.0 : 3000.0;
+    m.poissons_ratio = 0.3;
+    input.materials.push_back(m);
+  }
+  for (int c = 0; c < dim; ++c) add_dirichlet(input, "lower_bottom", c, "0");
+  for (int c = 0; c < dim - 1; ++c) add_dirichlet(input, "upper_top", c, "0");
+  add_dirichlet(input, "upper_top", dim - 1, "-0.01*t");
+  add_dirichlet(input, dim == 2 ? "lower_left" : "lower_xmin", 0, "0");
+  add_dirichlet(input, dim == 2 ? "upper_left" : "upper_xmin", 0, "0");
+  ContactInput c;
+  c.name = "interface";
+  c.slave = "upper_bottom";
+  c.master = "lower_top";
+  c.geometry = geometry;
+  c.type = type;
+  c.friction_coefficient = mu;
+  input.contact.push_back(c);
+  return input;
+}
+
+struct Case {
+  Mesh mesh;
+  Input input;
+  std::unique_ptr<SolidProblem> solid;
+  std::unique_ptr<MechanicsProblem> problem;
+  Teuchos::RCP<Matrix> J;
+  Teuchos::RCP<Vector> b;
+  MultiplierPairing pairing;
+  GO n_u = 0;
+  int active = 0;
+};
+
+// J and −F at a perturbed state with a mix of active and inactive slave nodes.
+void build(Case& mc, int dim, ContactKind type, double mu, ContactGeometry geometry, int k = 1) {
+  const auto comm = Tpetra::getDefaultComm();
+  mc.mesh = dim == 2 ? two_block_mesh_2d(3 * k, 2 * k, 4 * k, 2 * k)
+                     : two_block_mesh_3d(2 * k, 2 * k, k, 3 * k, 2 * k, k);
+  mc.input = two_block_input(dim, type, mu, geometry);
+  mc.solid = std::make_unique<SolidProblem>(mc.mesh, mc.input, comm);
+  mc.problem = std::make_unique<MechanicsProblem>(*mc.solid, mc.mesh, mc.input);
+  MechanicsProblem& problem = *mc.problem;
+  Vector x(problem.map()), F(problem.map());
+  mc.n_u = GO(mc.mesh.num_nodes()) * dim;
+  {
+    auto xv = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    std::uniform_real_distribution<double> r(-1.0, 1.0);
+    for (std::size_t i = 0; i < problem.map()->getNodeNumElements(); ++i) {
+      const GO g = problem.map()->getGlobalElement(LO(i));
+      std::mt19937 local(unsigned(g) * 7919u + 5u);  // same value on any rank count
+      const double v = r(local);
+      xv(i, 0) = g < mc.n_u ? 1e-3 * v : (g - mc.n_u) % dim == dim - 1 ? -2.0 * v - 0.5 : v;
+    }
+  }
+  problem.begin_step(1.0, x);
+  EXPECT_TRUE(problem.residual(x, F));
+  mc.active = problem.active_set_size();
+  EXPECT_TRUE(problem.jacobian(x, mc.J));
+  mc.b = Teuchos::rcp(new Vector(problem.map()));
+  mc.b->update(-1.0, F, 0.0);
+  mc.pairing = problem.multiplier_pairing();
+}
+
+// |a − b| / |b| over the displacements (lambda = false) or the multipliers.
+double relative_difference(const Vector& a, const Vector& b, GO n_u, bool lambda) {
+  const auto av = a.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto bv = b.getLocalViewHost(Tpetra::Access::ReadOnly);
+  double d[2] = {0.0, 0.0}, all[2] = {0.0, 0.0};
+  for (std::size_t i = 0; i < a.getLocalLength(); ++i) {
+    if ((a.getMap()->getGlobalElement(LO(i)) >= n_u) != lambda) continue;
+    d[0] += (av(i, 0) - bv(i, 0)) * (av(i, 0) - bv(i, 0));
+    d[1] += bv(i, 0) * bv(i, 0);
+  }
+  Teuchos::reduceAll(*a.getMap()->getComm(), Teuchos::REDUCE_SUM, 2, d, all);
+  return std::sqrt(all[0] / all[1]);
+}
+
+// max |A − Aᵀ| / max |A|.
+double asymmetry(const Teuchos::RCP<const Matrix>& A) {
+  const auto At =
+      Tpetra::RowMatrixTransposer<double, LO, GO, Node>(Teuchos::rcp_const_cast<Matrix>(A))
+          .createTranspose();
+  double local[2] = {0.0, 0.0}, all[2] = {0.0, 0.0};
+  const auto& rows = *A->getRowMap();
+  for (LO i = 0; i < LO(rows.getNodeNumElements()); ++i) {
+    const GO g = rows.getGlobalElement(i);
+    typename Matrix::nonconst_global_inds_host_view_type ca("c", A->getNumEntriesInGlobalRow(g)),
+        ct("c", At->getNumEntriesInGlobalRow(g));
+    typename Matrix::nonconst_values_host_view_type va("v", ca.extent(0)), vt("v", ct.extent(0));
+    std::size_t na = 0, nt = 0;
+    A->getGlobalRowCopy(g, ca, va, na);
+    At->getGlobalRowCopy(g, ct, vt, nt);
+    std::map<GO, double> diff;
+    for (std::size_t e = 0; e < na; ++e) {
+      diff[ca(e)] += va(e);
+      local[1] = std::max(local[1], std::abs(va(e)));
+    }
+    for (std::size_t e = 0; e < nt; ++e) diff[ct(e)] -= vt(e);
+    for (const auto& [c, v] : diff) local[0] = std::max(local[0], std::abs(v));
+  }
+  Teuchos::reduceAll(*A->getRowMap()->getComm(), Teuchos::REDUCE_MAX, 2, local, all);
+  return all[0] / all[1];
+}
+
+Teuchos::ParameterList params(const std::string& type, bool condense) {
+  Teuchos::ParameterList p;
+  p.set("type", type);
+  p.set("condense_multipliers", condense);
+  return p;
+}
+
+// The symmetric reduction applies; K̃ is symmetric; LDLᵀ of K̃ takes ≤ 0.6 of the LU's
+// flops; u and λ equal the full direct solve's; LinearSolver (mumps) takes this path.
+void check_applies(int dim, ContactKind type, const std::string& label, int k = 1) {
+  Case mc;
+  build(mc, dim, type, 0.0, ContactGeometry::reference, k);
+  EXPECT_GT(mc.active, 0) << label;
+  const auto map = mc.J->getRowMap();
+  Vector x_full(map), x(map), x_solver(map);
+  LinearSolver full(params("amesos2", false), "test");
+  full.solve(mc.J, *mc.b, x_full);
+
+  SymmetricCondensation reduction(mc.pairing, dim);
+  ASSERT_TRUE(reduction.condense(*mc.J, *mc.b)) << label << ": " << reduction.reason();
+  EXPECT_GT(reduction.statistics().eliminated, 0) << label;
+  EXPECT_LT(asymmetry(reduction.matrix()), 1e-13) << label;
+  MumpsOptions symmetric, general;
+  symmetric.symmetric = true;
+  MumpsSolver ldlt(symmetric), lu(general);
+  Vector y(reduction.matrix()->getRowMap()), y_lu(reduction.matrix()->getRowMap());
+  ldlt.solve(reduction.matrix(), reduction.rhs(), y);
+  lu.solve(reduction.matrix(), reduction.rhs(), y_lu);
+  EXPECT_LT(ldlt.statistics().flops, 0.6 * lu.statistics().flops) << label;
+  reduction.expand(y, x);
+  EXPECT_LT(relative_difference(x, x_full, mc.n_u, false), 1e-10) << label << " (u)";
+  EXPECT_LT(relative_difference(x, x_full, mc.n_u, true), 1e-10) << label << " (lambda)";
+
+  LinearSolver solver(params("mumps", true), "test");
+  solver.set_multiplier_pairing(mc.pairing, dim);
+  solver.solve(mc.J, *mc.b, x_solver);
+  EXPECT_TRUE(solver.last_solve_symmetric()) << label;
+  EXPECT_LT(relative_difference(x_solver, x_full, mc.n_u, false), 1e-10) << label << " (u)";
+  EXPECT_LT(relative_difference(x_solver, x_full, mc.n_u, true), 1e-10) << label << " (lambda)";
+  if (map->getComm()->getRank() == 0)
+    std::printf(
+        "[symmetric] %s: active %d, %d slave nodes, %d eliminated dofs, LDLt %.3g flops, LU "
+        "%.3g\n",
+        label.c_str(), mc.active, reduction.statistics().nodes, reduction.statistics().eliminated,
+        ldlt.statistics().flops, lu.statistics().flops);
+}
+
+// The reduction declines (on every rank alike); LinearSolver falls back to the condensation
+// and still gives the full direct solve's answer.
+void check_declines(Case& mc, int dim, const std::string& label) {
+  SymmetricCondensation reduction(mc.pairing, dim);
+  EXPECT_FALSE(reduction.condense(*mc.J, *mc.b)) << label;
+  EXPECT_FALSE(reduction.reason().empty()) << label;
+  const auto map = mc.J->getRowMap();
+  Vector x_full(map), x(map);
+  LinearSolver full(params("amesos2", false), "test");
+  full.solve(mc.J, *mc.b, x_full);
+  LinearSolver solver(params("mumps", true), "test");
+  solver.set_multiplier_pairing(mc.pairing, dim);
+  solver.solve(mc.J, *mc.b, x);
+  EXPECT_FALSE(solver.last_solve_symmetric()) << label;
+  EXPECT_LT(relative_difference(x, x_full, mc.n_u, false), 1e-8) << label;
+  if (map->getComm()->getRank() == 0)
+    std::printf("[symmetric] %s declines: %s\n", label.c_str(), reduction.reason().c_str());
+}
+
+TEST(SymmetricCondensation, Frictionless2D) {
+  check_applies(2, ContactKind::frictionless, "2D frictionless");
+}
+TEST(SymmetricCondensation, Frictionless3D) {
+  check_applies(3, ContactKind::frictionless, "3D frictionless");
+  check_applies(3, ContactKind::frictionless, "3D frictionless, refined x2", 2);
+}
+TEST(SymmetricCondensation, Tied2D) {
+  check_applies(2, ContactKind::tied, "2D tied");
+}
+TEST(SymmetricCondensation, Tied3D) {
+  check_applies(3, ContactKind::tied, "3D tied");
+}
+
+TEST(SymmetricCondensation, DeclinesOnFrictionAndCurrentGeometry) {
+  for (int dim : {2, 3}) {
+    Case frictional, current;
+    build(frictional, dim, ContactKind::frictional, 0.3, ContactGeometry::current);
+    check_declines(frictional, dim, std::to_string(dim) + "D frictional, current geometry");
+    build(current, dim, ContactKind::frictionless, 0.0, ContactGeometry::current);
+    check_declines(current, dim, std::to_string(dim) + "D frictionless, current geometry");
+  }
+}
+
+// One off-diagonal stiffness entry K(i, j) of a free dof scaled by 1 + 1e-6: not symmetric.
+TEST(SymmetricCondensation, DeclinesOnANonSymmetricStiffness) {
+  Case mc;
+  build(mc, 3, ContactKind::frictionless, 0.0, ContactGeometry::reference);
+  const GO row = mc.n_u / 2;  // a dof in the middle of the mesh
+  mc.J->resumeFill();
+  if (mc.J->getRowMap()->isNodeGlobalElement(row)) {
+    typename Matrix::nonconst_global_inds_host_view_type cols("c",
+                                                              mc.J->getNumEntriesInGlobalRow(row));
+    typename Matrix::nonconst_values_host_view_type vals("v", cols.extent(0));
+    std::size_t n = 0;
+    mc.J->getGlobalRowCopy(row, cols, vals, n);
+    for (std::size_t e = 0; e < n; ++e)
+      if (cols(e) != row && vals(e) != 0.0 && cols(e) < mc.n_u) {
+        const GO c = cols(e);
+        const double v = vals(e) * (1.0 + 1e-6);
+        mc.J->replaceGlobalValues(row, Teuchos::ArrayView<const GO>(&c, 1),
+                                  Teuchos::ArrayView<const double>(&v, 1));
+        break;
+      }
+  }
+  mc.J->fillComplete(mc.J->getDomainMap(), mc.J->getRangeMap());
+  check_declines(mc, 3, "3D frictionless with one K entry off by 1e-6");
+}
+
+// The multiplier columns of the master rows scaled by 1 + 1e-6: C N is no longer a multiple
+// of the constraint rows' Gᵀ (the multiplier would not act along the gap's gradient).
+TEST(SymmetricCondensation, DeclinesWhenTheMultiplierColumnsAreNotTheConstraintGradients) {
+  Case mc;
+  build(mc, 3, ContactKind::frictionless, 0.0, ContactGeometry::reference);
+  std::set<GO> slave_dofs;
+  for (const auto& [t, s] : mc.pairing) slave_dofs.insert(s);
+  mc.J->resumeFill();
+  const auto& rows = *mc.J->getRowMap();
+  for (LO i = 0; i < LO(rows.getNodeNumElements()); ++i) {
+    const GO row = rows.getGlobalElement(i);
+    if (row >= mc.n_u || slave_dofs.count(row)) continue;
+    typename Matrix::nonconst_global_inds_host_view_type cols("c",
+                                                              mc.J->getNumEntriesInGlobalRow(row));
+    typename Matrix::nonconst_values_host_view_type vals("v", cols.extent(0));
+    std::size_t n = 0;
+    mc.J->getGlobalRowCopy(row, cols, vals, n);
+    for (std::size_t e = 0; e < n; ++e)
+      if (cols(e) >= mc.n_u) {
+        const GO c = cols(e);
+        const double v = vals(e) * (1.0 + 1e-6);
+        mc.J->replaceGlobalValues(row, Teuchos::ArrayView<const GO>(&c, 1),
+                                  Teuchos::ArrayView<const double>(&v, 1));
+      }
+  }
+  mc.J->fillComplete(mc.J->getDomainMap(), mc.J->getRangeMap());
+  check_declines(mc, 3, "3D frictionless with the master multiplier columns off by 1e-6");
+}
+
+}  // namespace
+}  // namespace grout
