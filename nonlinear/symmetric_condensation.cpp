@@ -1,7 +1,6 @@
 #include "nonlinear/symmetric_condensation.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
-#include <TpetraExt_TripleMatrixMultiply.hpp>
 #include <Tpetra_RowMatrixTransposer.hpp>
 #include <algorithm>
 #include <cmath>
@@ -175,6 +174,9 @@ SymmetricCondensation::~SymmetricCondensation() = default;
 Teuchos::RCP<const Matrix> SymmetricCondensation::matrix() const {
   return impl_->A;
 }
+Teuchos::RCP<const Matrix> SymmetricCondensation::transformation() const {
+  return impl_->T;
+}
 const Vector& SymmetricCondensation::rhs() const {
   return *impl_->rhs;
 }
@@ -227,6 +229,17 @@ std::string check_symmetric(const Matrix& J, const Vector& b,
   RowTable ghost_rows;
   import_rows(J, b, ghosts, ghost_rows);
   const bool sorted = J.getCrsGraph()->isSorted();
+  // With sorted rows and the owned columns numbered in row order (Tpetra's usual column map),
+  // the mirror K(j, i) of row i's entries lies at or after a cursor in row j that only moves
+  // forward as i grows: one pass over K instead of a binary search per entry.
+  bool cursors = sorted;
+  for (LO i = 0, last = -1; i < n_rows && cursors; ++i)
+    if (row_to_col[i] >= 0) cursors = row_to_col[i] > last, last = row_to_col[i];
+  std::vector<std::size_t> cursor;
+  if (cursors) {
+    cursor.resize(n_rows);
+    for (LO i = 0; i < n_rows; ++i) cursor[i] = local.graph.row_map(i);
+  }
   std::string why;
   for (LO i = 0; i < n_rows && why.empty(); ++i) {
     const GO gi = row_map.getGlobalElement(i);
@@ -245,7 +258,11 @@ std::string check_symmetric(const Matrix& J, const Vector& b,
         const LO j = col_to_row[c], ci = row_to_col[i];
         if (ci >= 0) {
           const auto jb = local.graph.row_map(j), je = local.graph.row_map(j + 1);
-          if (sorted) {
+          if (cursors) {
+            auto& q = cursor[j];
+            while (q < je && local.graph.entries(q) < ci) ++q;
+            if (q < je && local.graph.entries(q) == ci) w = local.values(q);
+          } else if (sorted) {
             auto lo = jb, hi = je;
             while (lo < hi) {
               const auto mid = lo + (hi - lo) / 2;
@@ -654,27 +671,97 @@ bool SymmetricCondensation::condense(const Matrix& J, const Vector& b) {
     m.T->fillComplete(m.reduced_map, J.getRowMap());
   }
   {
-    Matrix product(m.reduced_map, 0);
-    Tpetra::TripleMatrixMultiply::MultiplyRAP(*m.T, true, J, false, *m.T, false, product);
-    // The eliminated rows and columns are empty in the product. They get K_ee on the
-    // diagonal and zeros where K T has entries in row e: the pattern K̃ would have with e
-    // kept (its column e too: MumpsSolver reads a zero above the diagonal as its mirror). Then K̃'s
-    // pattern stays within the union of the Newton iterations' patterns when a dof is eliminated in
-    // some and kept in others, and MUMPS keeps its analysis (without them, 7 analyses in 7 Newton
-    // iterations on the 3D Hertz spheres instead of 3).
-    std::unordered_map<GO, std::map<GO, double>> extra;  // reduced row -> (column, value)
-    // T's rows of the eliminated dofs in K's rows e that another rank eliminates.
-    RowTable remote_t_rows;
+    // K̃ = Tᵀ K T without a general triple product: T = I + (A on the eliminated rows), so
+    //   K̃_ij = K_ij + Σ_e K_ie A_ej + Σ_e A_ei (K T)_ej,   (K T)_ej = K_ej + Σ_e' K_ee' A_e'j,
+    // for kept i, j (e, e' eliminated): J's rows, plus K_ie A_e on the rows with an
+    // eliminated column (a), plus A_eᵀ (K T)_e on the rows of A_e's columns (b), sent to
+    // their owners. T's rows are touched only on ~the slave dofs: the rest of K̃ is K's.
+    // A's rows (reduced column GIDs) of the eliminated dofs among this rank's columns of J:
+    // handled here, or imported from the rank that handles them.
+    std::unordered_map<GO, std::vector<std::pair<GO, double>>> a_rows;
+    for (const auto& [e, t_row] : t_row_of) {
+      auto& out = a_rows[e];
+      for (const auto& [f, v] : *t_row) out.emplace_back(new_gid(f), v);
+    }
+    const auto& j_cols = *J.getColMap();
+    const LO n_j_cols = LO(j_cols.getNodeNumElements());
     {
       std::vector<GO> remote;
-      for (const auto& [e, t_row] : t_row_of)
-        for (GO f : m.rows.at(e).cols)
-          if (!row_map.isNodeGlobalElement(f) &&
-              std::binary_search(eliminated.begin(), eliminated.end(), f))
-            remote.push_back(f);
+      for (LO c = 0; c < n_j_cols; ++c) {
+        const GO g = j_cols.getGlobalElement(c);
+        if (!row_map.isNodeGlobalElement(g) &&
+            std::binary_search(eliminated.begin(), eliminated.end(), g))
+          remote.push_back(g);
+      }
+      RowTable remote_t_rows;
       Vector zero(J.getRowMap());
       import_rows(*m.T, zero, remote, remote_t_rows);
+      for (const auto& [e, r] : remote_t_rows) {
+        auto& out = a_rows[e];
+        for (std::size_t q = 0; q < r.cols.size(); ++q) out.emplace_back(r.cols[q], r.vals[q]);
+      }
     }
+    const auto is_eliminated = [&](GO g) {
+      return std::binary_search(eliminated.begin(), eliminated.end(), g);
+    };
+    // (b): A_eᵀ (K T)_e of the eliminated dofs handled here, by reduced row, exported to the
+    // rows' owners (summed there).
+    std::map<GO, std::map<GO, double>> spread;
+    for (const auto& [e, t_row] : t_row_of) {
+      std::map<GO, double> kt;  // (K T)_e
+      const Row& row = m.rows.at(e);
+      for (std::size_t q = 0; q < row.cols.size(); ++q) {
+        const GO f = row.cols[q];
+        if (m.is_lambda(f)) continue;
+        if (const auto it = a_rows.find(f); it != a_rows.end())
+          for (const auto& [c, a] : it->second) kt[c] += row.vals[q] * a;
+        else
+          kt[new_gid(f)] += row.vals[q];
+      }
+      for (const auto& [i, a] : a_rows.at(e)) {
+        auto& out = spread[i];
+        for (const auto& [c, v] : kt) out[c] += a * v;
+      }
+    }
+    std::unordered_map<GO, std::vector<std::pair<GO, double>>> received;  // owned reduced row ->
+    {
+      std::vector<GO> spread_rows;
+      std::vector<std::size_t> counts;
+      for (const auto& [i, entries] : spread)
+        spread_rows.push_back(i), counts.push_back(entries.size());
+      const auto spread_map =
+          Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                               spread_rows.data(), spread_rows.size(), 0, comm));
+      Matrix source(spread_map, Teuchos::ArrayView<const std::size_t>(counts));
+      std::vector<GO> cols;
+      std::vector<double> vals;
+      for (const auto& [i, entries] : spread) {
+        cols.clear(), vals.clear();
+        for (const auto& [c, v] : entries) cols.push_back(c), vals.push_back(v);
+        source.insertGlobalValues(i, Teuchos::ArrayView<const GO>(cols),
+                                  Teuchos::ArrayView<const double>(vals));
+      }
+      source.fillComplete(m.reduced_map, m.reduced_map);
+      const Export exporter(spread_map, m.reduced_map);
+      Matrix target(m.reduced_map, 0);
+      target.doExport(source, exporter, Tpetra::ADD);
+      target.fillComplete(m.reduced_map, m.reduced_map);
+      const auto local = target.getLocalMatrixHost();
+      for (LO i = 0; i < LO(m.reduced_map->getNodeNumElements()); ++i) {
+        if (local.graph.row_map(i) == local.graph.row_map(i + 1)) continue;
+        auto& out = received[m.reduced_map->getGlobalElement(i)];
+        for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p)
+          out.emplace_back(target.getColMap()->getGlobalElement(local.graph.entries(p)),
+                           local.values(p));
+      }
+    }
+    // The eliminated rows get K_ee on the diagonal and zeros where K T has entries in row e:
+    // the pattern K̃ would have with e kept (its column e too: MumpsSolver reads a zero above
+    // the diagonal as its mirror). Then K̃'s pattern stays within the union of the Newton
+    // iterations' patterns when a dof is eliminated in some and kept in others, and MUMPS
+    // keeps its analysis (without them, 7 analyses in 7 Newton iterations on the 3D Hertz
+    // spheres instead of 3).
+    std::unordered_map<GO, std::map<GO, double>> extra;  // reduced row -> (column, value)
     for (const auto& [e, t_row] : t_row_of) {
       const GO ne = new_gid(e);
       const Row& row = m.rows.at(e);
@@ -684,62 +771,98 @@ bool SymmetricCondensation::condense(const Matrix& J, const Vector& b) {
         if (m.is_lambda(f)) continue;
         if (f == e) {
           out[ne] = row.vals[q] != 0.0 ? row.vals[q] : 1.0;
-        } else if (const auto it = t_row_of.find(f); it != t_row_of.end()) {
-          for (const auto& [c, v] : *it->second) out.emplace(new_gid(c), 0.0);  // (K T)'s row e
-        } else if (const auto r = remote_t_rows.find(f); r != remote_t_rows.end()) {
-          for (GO c : r->second.cols) out.emplace(c, 0.0);  // already reduced GIDs
+        } else if (const auto it = a_rows.find(f); it != a_rows.end()) {
+          for (const auto& [c, v] : it->second) out.emplace(c, 0.0);  // (K T)'s row e
         } else {
           out.emplace(new_gid(f), 0.0);
         }
       }
       if (out.count(ne) == 0) out[ne] = 1.0;
     }
-    const auto& product_cols = *product.getColMap();
-    std::vector<GO> col_gids(product_cols.getNodeNumElements());
-    for (std::size_t c = 0; c < col_gids.size(); ++c)
-      col_gids[c] = product_cols.getGlobalElement(LO(c));
-    std::unordered_map<GO, LO> appended;
-    for (const auto& [row, entries] : extra)
-      for (const auto& [c, v] : entries)
-        if (product_cols.getLocalElement(c) == Teuchos::OrdinalTraits<LO>::invalid() &&
-            appended.emplace(c, LO(col_gids.size())).second)
-          col_gids.push_back(c);
-    const auto col_lid = [&](GO c) {
-      const LO l = product_cols.getLocalElement(c);
-      return l != Teuchos::OrdinalTraits<LO>::invalid() ? l : appended.at(c);
+    // The column map: J's displacement columns (renumbered, in J's order, so that a sorted
+    // row of J stays sorted), then the other columns of (a), (b) and the eliminated rows.
+    std::vector<GO> col_gids;
+    std::vector<LO> j_col_new(n_j_cols, -1);  // J's column -> K̃'s column (kept dofs only)
+    std::unordered_map<GO, LO> col_lid;
+    col_gids.reserve(n_j_cols);
+    col_lid.reserve(std::size_t(n_j_cols) * 2);
+    for (LO c = 0; c < n_j_cols; ++c) {
+      const GO g = j_cols.getGlobalElement(c);
+      if (m.is_lambda(g)) continue;
+      const LO l = LO(col_gids.size());
+      col_gids.push_back(new_gid(g));
+      col_lid.emplace(col_gids.back(), l);
+      if (!is_eliminated(g)) j_col_new[c] = l;
+    }
+    const auto lid_of = [&](GO c) {
+      const auto [it, added] = col_lid.emplace(c, LO(col_gids.size()));
+      if (added) col_gids.push_back(c);
+      return it->second;
     };
+    const auto local = J.getLocalMatrixHost();
+    const bool sorted = J.getCrsGraph()->isSorted();
+    const LO n = LO(m.reduced_map->getNodeNumElements());
+    std::vector<LO> j_row(n);  // K̃'s row -> J's row
+    for (LO i = 0, r = 0; i < LO(row_map.getNodeNumElements()); ++i)
+      if (!m.is_lambda(row_map.getGlobalElement(i))) j_row[r++] = i;
+    Teuchos::ArrayRCP<std::size_t> ptr(n + 1, 0);
+    std::vector<LO> ind;
+    std::vector<double> val;
+    ind.reserve(local.values.extent(0)), val.reserve(local.values.extent(0));
+    std::vector<std::pair<LO, double>> row_entries;
+    for (LO i = 0; i < n; ++i) {
+      const GO ng = m.reduced_map->getGlobalElement(i);
+      const LO ji = j_row[i];
+      const auto begin = local.graph.row_map(ji), end = local.graph.row_map(ji + 1);
+      row_entries.clear();
+      bool general = !sorted;
+      if (const auto it = extra.find(ng); it != extra.end()) {
+        for (const auto& [c, v] : it->second) row_entries.emplace_back(lid_of(c), v);
+        general = true;
+      } else {
+        for (auto p = begin; p < end; ++p) {
+          const LO c = local.graph.entries(p);
+          if (j_col_new[c] >= 0) {
+            row_entries.emplace_back(j_col_new[c], local.values(p));
+          } else if (local.values(p) != 0.0) {
+            const auto it = a_rows.find(j_cols.getGlobalElement(c));
+            if (it == a_rows.end()) continue;  // a multiplier column
+            for (const auto& [f, a] : it->second)
+              row_entries.emplace_back(lid_of(f), local.values(p) * a);
+            general = true;
+          }
+        }
+        if (const auto it = received.find(ng); it != received.end()) {
+          for (const auto& [c, v] : it->second) row_entries.emplace_back(lid_of(c), v);
+          general = true;
+        }
+      }
+      if (general) {
+        // Sum the repeated columns, then drop the exact zeros (below) as of the product's.
+        std::stable_sort(row_entries.begin(), row_entries.end(),
+                         [](const auto& a, const auto& b) { return a.first < b.first; });
+        std::size_t out = 0;
+        for (std::size_t q = 0; q < row_entries.size(); ++q) {
+          if (out > 0 && row_entries[out - 1].first == row_entries[q].first)
+            row_entries[out - 1].second += row_entries[q].second;
+          else
+            row_entries[out++] = row_entries[q];
+        }
+        row_entries.resize(out);
+      }
+      const bool keep_zeros = extra.count(ng) != 0;  // the eliminated rows' pattern
+      for (const auto& [c, v] : row_entries)
+        if (v != 0.0 || keep_zeros) ind.push_back(c), val.push_back(v);
+      ptr[i + 1] = ind.size();
+    }
     const auto col_map =
         Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
                              col_gids.data(), col_gids.size(), 0, comm));
-    // Without the exact zeros of the product (J's prescribed rows and columns): MUMPS's
-    // pattern is the coupling's, as in the condensed system.
-    const auto local = product.getLocalMatrixHost();
-    const LO n = LO(m.reduced_map->getNodeNumElements());
-    Teuchos::ArrayRCP<std::size_t> ptr(n + 1, 0);
-    std::size_t nnz = 0;
-    for (LO i = 0; i < n; ++i) {
-      for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p)
-        nnz += local.values(p) != 0.0;
-      if (const auto it = extra.find(m.reduced_map->getGlobalElement(i)); it != extra.end())
-        nnz += it->second.size();
-    }
-    Teuchos::ArrayRCP<LO> ind(nnz);
-    Teuchos::ArrayRCP<double> val(nnz);
-    nnz = 0;
-    std::vector<std::pair<LO, double>> row_entries;
-    for (LO i = 0; i < n; ++i) {
-      row_entries.clear();
-      for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p)
-        if (local.values(p) != 0.0)
-          row_entries.emplace_back(local.graph.entries(p), local.values(p));
-      if (const auto it = extra.find(m.reduced_map->getGlobalElement(i)); it != extra.end()) {
-        for (const auto& [c, v] : it->second) row_entries.emplace_back(col_lid(c), v);
-        std::sort(row_entries.begin(), row_entries.end());
-      }
-      for (const auto& [c, v] : row_entries) ind[nnz] = c, val[nnz++] = v;
-      ptr[i + 1] = nnz;
-    }
-    m.A = Teuchos::rcp(new Matrix(m.reduced_map, col_map, ptr, ind, val));
+    Teuchos::ArrayRCP<LO> ind_rcp(ind.size());
+    Teuchos::ArrayRCP<double> val_rcp(val.size());
+    std::copy(ind.begin(), ind.end(), ind_rcp.begin());
+    std::copy(val.begin(), val.end(), val_rcp.begin());
+    m.A = Teuchos::rcp(new Matrix(m.reduced_map, col_map, ptr, ind_rcp, val_rcp));
     m.A->fillComplete(m.reduced_map, m.reduced_map);
   }
 

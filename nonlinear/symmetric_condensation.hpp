@@ -22,6 +22,8 @@
 // slave block of G_j (each row scaled by its largest entry), u_e = G_e⁻¹ (g − G_f u_f).
 // With u = T ũ + c (T = I on the kept dofs, −G_e⁻¹ G_f on the eliminated ones, c_e = G_e⁻¹ g),
 //        K̃ ũ = b̃,   K̃ = Tᵀ K T,   b̃ = Tᵀ (b_u − C λ0 − K c),
+// (K̃ built as K plus the corrections of the rows and columns that T couples, no general
+// triple product: T is the identity but on the eliminated dofs),
 // since Tᵀ Gᵀ = (G T)ᵀ = 0 removes μ. K̃ is symmetric positive (semi)definite for an elastic K:
 // MUMPS factorises it as LDLᵀ. λ is then recovered per node from its pure-λ rows and its
 // unprescribed slave force rows, C_s λ_j = b_s − K_s u (the kind B recovery of
@@ -67,6 +69,9 @@ class SymmetricCondensation {
   /// (in their row only) for the pattern (above).
   Teuchos::RCP<const Matrix> matrix() const;
   const Vector& rhs() const;
+  /// T of u = T ũ + c (J's row map × K̃'s map), for tests: off the eliminated rows K̃ equals
+  /// the product Tᵀ J T without its exact zeros.
+  Teuchos::RCP<const Matrix> transformation() const;
   /// The solution x of J x = b (on J's row map) from the solution y of K̃ y = b̃ (collective).
   void expand(const Vector& y, Vector& x) const;
   /// Why the last condense() returned false (the first failed check found on any rank).

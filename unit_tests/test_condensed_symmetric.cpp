@@ -6,9 +6,11 @@
 // on frictional (slipping) and frictionless contact on the current geometry, on a deliberately
 // non-symmetric K and on multiplier columns that are not the constraints' gradients it
 // declines, and LinearSolver then takes the (non-symmetric) condensation with the same answer.
+// K̃, built without a general triple product, equals Tpetra's product Tᵀ J T entry by entry.
 
 #include <gtest/gtest.h>
 
+#include <TpetraExt_TripleMatrixMultiply.hpp>
 #include <Tpetra_Core.hpp>
 #include <Tpetra_RowMatrixTransposer.hpp>
 #include <cmath>
@@ -211,6 +213,78 @@ void check_declines(Case& mc, int dim, const std::string& label) {
   EXPECT_LT(relative_difference(x, x_full, mc.n_u, false), 1e-8) << label;
   if (map->getComm()->getRank() == 0)
     std::printf("[symmetric] %s declines: %s\n", label.c_str(), reduction.reason().c_str());
+}
+
+// The row `g` of A as (column GID, value), without exact zeros unless `zeros`.
+std::map<GO, double> global_row(const Matrix& A, GO g, bool zeros) {
+  typename Matrix::nonconst_global_inds_host_view_type c("c", A.getNumEntriesInGlobalRow(g));
+  typename Matrix::nonconst_values_host_view_type v("v", c.extent(0));
+  std::size_t n = 0;
+  A.getGlobalRowCopy(g, c, v, n);
+  std::map<GO, double> out;
+  for (std::size_t e = 0; e < n; ++e) out[c(e)] += v(e);
+  if (!zeros)
+    for (auto it = out.begin(); it != out.end();) it = it->second == 0.0 ? out.erase(it) : ++it;
+  return out;
+}
+
+// K̃ entry by entry against the reference product Tᵀ J T (Tpetra's MultiplyRAP, T from the
+// reduction): on the kept rows the same values to round-off (an entry missing in one of them
+// counts as 0: the two sums differ in order, and an entry that is 0 in exact arithmetic may
+// be an exact zero, dropped, in one and 1e-18 of the largest in the other); the product's
+// rows of the eliminated dofs are empty, K̃'s hold a nonzero diagonal and explicit zeros.
+void check_against_product(int dim, ContactKind type, const std::string& label) {
+  Case mc;
+  build(mc, dim, type, 0.0, ContactGeometry::reference);
+  SymmetricCondensation reduction(mc.pairing, dim);
+  ASSERT_TRUE(reduction.condense(*mc.J, *mc.b)) << label << ": " << reduction.reason();
+  const auto T = reduction.transformation();
+  const auto A = reduction.matrix();
+  Matrix product(A->getRowMap(), 0);
+  Tpetra::TripleMatrixMultiply::MultiplyRAP(*T, true, *mc.J, false, *T, false, product);
+  // difference, largest |product|; entries in one pattern only, eliminated rows, their bad
+  // entries
+  double local[2] = {0.0, 0.0}, all[2] = {0.0, 0.0};
+  int counts[3] = {0, 0, 0}, counts_all[3] = {0, 0, 0};
+  const auto& rows = *A->getRowMap();
+  for (LO i = 0; i < LO(rows.getNodeNumElements()); ++i) {
+    const GO g = rows.getGlobalElement(i);
+    const auto p = global_row(product, g, false);
+    const auto a = global_row(*A, g, true);
+    if (p.empty()) {
+      ++counts[1];
+      for (const auto& [c, v] : a) counts[2] += c == g ? v == 0.0 : v != 0.0;
+      counts[2] += a.count(g) == 0;
+      continue;
+    }
+    for (const auto& [c, v] : p) {
+      local[1] = std::max(local[1], std::abs(v));
+      const auto it = a.find(c);
+      counts[0] += it == a.end();
+      local[0] = std::max(local[0], std::abs((it == a.end() ? 0.0 : it->second) - v));
+    }
+    for (const auto& [c, v] : a)
+      if (p.count(c) == 0) ++counts[0], local[0] = std::max(local[0], std::abs(v));
+  }
+  const auto& comm = *rows.getComm();
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 2, local, all);
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 3, counts, counts_all);
+  EXPECT_GT(all[1], 0.0) << label;
+  EXPECT_LE(all[0], 1e-14 * all[1]) << label;
+  EXPECT_EQ(counts_all[1], reduction.statistics().eliminated) << label;
+  EXPECT_EQ(counts_all[2], 0) << label << ": eliminated rows";
+  if (rows.getComm()->getRank() == 0)
+    std::printf(
+        "[symmetric] %s: K~ vs T^T J T: max |difference| %.3g of max %.3g, %d entries in one "
+        "pattern only, %d eliminated\n",
+        label.c_str(), all[0], all[1], counts_all[0], counts_all[1]);
+}
+
+TEST(SymmetricCondensation, EqualsTheTripleProduct) {
+  for (int dim : {2, 3}) {
+    check_against_product(dim, ContactKind::frictionless, std::to_string(dim) + "D frictionless");
+    check_against_product(dim, ContactKind::tied, std::to_string(dim) + "D tied");
+  }
 }
 
 TEST(SymmetricCondensation, Frictionless2D) {
