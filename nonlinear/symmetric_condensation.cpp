@@ -364,12 +364,15 @@ bool SymmetricCondensation::condense(const Matrix& J, const Vector& b) {
     std::vector<std::size_t> counts(n_rows, 0);
     std::vector<std::vector<GO>> cols(n_rows);
     std::vector<std::vector<double>> vals(n_rows);
+    std::vector<char> lambda_col(col_map.getNodeNumElements());
+    for (LO c = 0; c < LO(lambda_col.size()); ++c)
+      lambda_col[c] = m.is_lambda(col_map.getGlobalElement(c));
     for (LO i = 0; i < n_rows; ++i) {
       if (m.is_lambda(row_map.getGlobalElement(i))) continue;
       for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p) {
-        const GO c = col_map.getGlobalElement(local.graph.entries(p));
-        if (local.values(p) != 0.0 && m.is_lambda(c))
-          cols[i].push_back(c), vals[i].push_back(local.values(p));
+        if (local.values(p) != 0.0 && lambda_col[local.graph.entries(p)])
+          cols[i].push_back(col_map.getGlobalElement(local.graph.entries(p))),
+              vals[i].push_back(local.values(p));
       }
       counts[i] = cols[i].size();
     }
@@ -704,41 +707,77 @@ bool SymmetricCondensation::condense(const Matrix& J, const Vector& b) {
     const auto is_eliminated = [&](GO g) {
       return std::binary_search(eliminated.begin(), eliminated.end(), g);
     };
-    // (b): A_eᵀ (K T)_e of the eliminated dofs handled here, by reduced row, exported to the
-    // rows' owners (summed there).
-    std::map<GO, std::map<GO, double>> spread;
+    // (b): A_eᵀ (K T)_e of the eliminated dofs handled here, row by row of Aᵀ (Gustavson's
+    // row-wise sparse product, with a dense accumulator over the columns met): the rows this
+    // rank owns go to `received` directly, the others are exported to their owners (summed
+    // there).
+    std::unordered_map<GO, int> slot_of;  // reduced GID -> slot (the columns and rows met)
+    std::vector<GO> slot_gid;
+    const auto slot = [&](GO c) {
+      const auto [it, added] = slot_of.emplace(c, int(slot_gid.size()));
+      if (added) slot_gid.push_back(c);
+      return it->second;
+    };
+    std::vector<double> sum;
+    std::vector<char> met;
+    std::vector<int> touched;
+    const auto add = [&](int s, double v) {
+      if (s >= int(sum.size())) sum.resize(slot_gid.size(), 0.0), met.resize(slot_gid.size(), 0);
+      if (!met[s]) met[s] = 1, touched.push_back(s);
+      sum[s] += v;
+    };
+    std::vector<std::vector<std::pair<int, double>>> kt_rows;  // (K T)_e per handled e
+    std::vector<std::vector<std::pair<int, double>>> at_rows;  // Aᵀ: slot i -> (e, A_ei)
     for (const auto& [e, t_row] : t_row_of) {
-      std::map<GO, double> kt;  // (K T)_e
       const Row& row = m.rows.at(e);
       for (std::size_t q = 0; q < row.cols.size(); ++q) {
         const GO f = row.cols[q];
         if (m.is_lambda(f)) continue;
         if (const auto it = a_rows.find(f); it != a_rows.end())
-          for (const auto& [c, a] : it->second) kt[c] += row.vals[q] * a;
+          for (const auto& [c, a] : it->second) add(slot(c), row.vals[q] * a);
         else
-          kt[new_gid(f)] += row.vals[q];
+          add(slot(new_gid(f)), row.vals[q]);
       }
+      kt_rows.emplace_back();
+      for (int s : touched) kt_rows.back().emplace_back(s, sum[s]), sum[s] = 0.0, met[s] = 0;
+      touched.clear();
       for (const auto& [i, a] : a_rows.at(e)) {
-        auto& out = spread[i];
-        for (const auto& [c, v] : kt) out[c] += a * v;
+        const int s = slot(i);
+        if (s >= int(at_rows.size())) at_rows.resize(slot_gid.size());
+        at_rows[s].emplace_back(int(kt_rows.size()) - 1, a);
       }
     }
     std::unordered_map<GO, std::vector<std::pair<GO, double>>> received;  // owned reduced row ->
+    std::vector<GO> spread_rows;  // rows for other ranks, and their entries
+    std::vector<std::vector<std::pair<GO, double>>> spread;
+    for (int s = 0; s < int(at_rows.size()); ++s) {
+      if (at_rows[s].empty()) continue;
+      for (const auto& [k, a] : at_rows[s])
+        for (const auto& [c, v] : kt_rows[k]) add(c, a * v);
+      std::vector<std::pair<GO, double>> out;
+      out.reserve(touched.size());
+      for (int c : touched) out.emplace_back(slot_gid[c], sum[c]), sum[c] = 0.0, met[c] = 0;
+      touched.clear();
+      if (m.reduced_map->isNodeGlobalElement(slot_gid[s])) {
+        auto& r = received[slot_gid[s]];
+        r.insert(r.end(), out.begin(), out.end());
+      } else {
+        spread_rows.push_back(slot_gid[s]), spread.push_back(std::move(out));
+      }
+    }
     {
-      std::vector<GO> spread_rows;
       std::vector<std::size_t> counts;
-      for (const auto& [i, entries] : spread)
-        spread_rows.push_back(i), counts.push_back(entries.size());
+      for (const auto& entries : spread) counts.push_back(entries.size());
       const auto spread_map =
           Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
                                spread_rows.data(), spread_rows.size(), 0, comm));
       Matrix source(spread_map, Teuchos::ArrayView<const std::size_t>(counts));
       std::vector<GO> cols;
       std::vector<double> vals;
-      for (const auto& [i, entries] : spread) {
+      for (std::size_t r = 0; r < spread.size(); ++r) {
         cols.clear(), vals.clear();
-        for (const auto& [c, v] : entries) cols.push_back(c), vals.push_back(v);
-        source.insertGlobalValues(i, Teuchos::ArrayView<const GO>(cols),
+        for (const auto& [c, v] : spread[r]) cols.push_back(c), vals.push_back(v);
+        source.insertGlobalValues(spread_rows[r], Teuchos::ArrayView<const GO>(cols),
                                   Teuchos::ArrayView<const double>(vals));
       }
       source.fillComplete(m.reduced_map, m.reduced_map);
