@@ -12,6 +12,8 @@
 #include <unordered_set>
 #include <vector>
 
+#include "nonlinear/row_table.hpp"
+
 namespace grout {
 
 namespace {
@@ -25,40 +27,6 @@ constexpr double pivot_tolerance = 1e-8;
 // |C N − Gᵀ R| above this times max |C N| of the node: the multiplier does not act along the
 // constraint's gradient.
 constexpr double proportional_tolerance = 1e-10;
-
-struct Row {
-  std::vector<GO> cols;
-  std::vector<double> vals;
-  double rhs = 0.0;
-};
-using RowTable = std::unordered_map<GO, Row>;
-
-// Rows `gids` of J (exact zeros dropped) and b on this rank (collective).
-void import_rows(const Matrix& J, const Vector& b, std::vector<GO> gids, RowTable& table) {
-  std::sort(gids.begin(), gids.end());
-  gids.erase(std::unique(gids.begin(), gids.end()), gids.end());
-  const auto comm = J.getRowMap()->getComm();
-  const auto target = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
-                                           gids.data(), gids.size(), 0, comm));
-  const Import importer(J.getRowMap(), target);
-  Matrix Jt(target, 0);
-  Jt.doImport(J, importer, Tpetra::INSERT);
-  Jt.fillComplete(J.getDomainMap(), J.getRangeMap());
-  Vector bt(target);
-  bt.doImport(b, importer, Tpetra::INSERT);
-  const auto local = Jt.getLocalMatrixHost();
-  const auto bv = bt.getLocalViewHost(Tpetra::Access::ReadOnly);
-  for (LO i = 0; i < LO(target->getNodeNumElements()); ++i) {
-    Row& r = table[target->getGlobalElement(i)];
-    r.cols.clear(), r.vals.clear();
-    for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p) {
-      if (local.values(p) == 0.0) continue;
-      r.cols.push_back(Jt.getColMap()->getGlobalElement(local.graph.entries(p)));
-      r.vals.push_back(local.values(p));
-    }
-    r.rhs = bv(i, 0);
-  }
-}
 
 // Gaussian elimination with complete pivoting on the dense m×n matrix a (row-major), each row
 // first scaled to a largest |entry| of 1, pivots only in the columns with allowed[c]: the
