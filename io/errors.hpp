@@ -14,7 +14,12 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// A failure that carries its own exit code (3: a step did not converge).
+/// Exit code of a run that cannot load a part of Grout's own installation (a module such as
+/// the iterative solvers' libgrout_iterative.so): neither the input nor the numerics.
+constexpr int exit_code_incomplete_installation = 4;
+
+/// A failure that carries its own exit code (3: a step did not converge; 4: an incomplete
+/// installation).
 class ExitCodeError : public std::runtime_error {
  public:
   ExitCodeError(const std::string& what, int exit_code)

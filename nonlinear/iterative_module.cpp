@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "io/errors.hpp"
+
 namespace grout {
 
 const char* const iterative_module_file = "libgrout_iterative.so";
@@ -66,10 +68,12 @@ void* open_iterative_module(const std::vector<std::string>& directories) {
     }
     tried += "\n  " + path + ": " + why;
   }
-  throw std::runtime_error(
+  throw ExitCodeError(
       "cannot load the iterative solver module (Belos + MueLu; set GROUT_PLUGIN_DIR to the "
       "directory holding " +
-      std::string(iterative_module_file) + "); tried:" + (tried.empty() ? " no directory" : tried));
+          std::string(iterative_module_file) +
+          "); tried:" + (tried.empty() ? " no directory" : tried),
+      exit_code_incomplete_installation);
 }
 
 std::unique_ptr<IterativeSolver> create_iterative_solver() {

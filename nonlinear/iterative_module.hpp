@@ -28,11 +28,12 @@ std::vector<std::string> iterative_module_directories();
 
 /// dlopen()s the module from the first of `directories` that holds a loadable module of this
 /// interface version and returns the handle (a leak on purpose: never dlclose()d). Throws
-/// std::runtime_error naming each path tried and why it failed.
+/// ExitCodeError (exit_code_incomplete_installation, io/errors.hpp) naming each path tried and
+/// why it failed: not a failed solve that a smaller step could cure.
 void* open_iterative_module(const std::vector<std::string>& directories);
 
 /// A new solver from the module, loaded from iterative_module_directories() on the first
-/// call. Throws std::runtime_error as open_iterative_module (the same on every rank: each
+/// call. Throws ExitCodeError as open_iterative_module (the same on every rank: each
 /// rank searches the same directories). Thread-unsafe, as the rest of the solve.
 std::unique_ptr<IterativeSolver> create_iterative_solver();
 

@@ -120,9 +120,9 @@ LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::stri
   impl_->belos.remove("Solver Type", false);
   // Belos names its own solvers (case-insensitive): ask it, so that a misspelt name is an
   // input error here and not an exception from inside Belos at the first solve. Asking
-  // loads the iterative module: only done when the input has Belos settings to check.
-  const bool check_settings = impl_->type == "belos" && impl_->belos.numParams() > 0;
-  if (impl_->belos_type_given || check_settings) {
+  // loads the iterative module: done when the input asks for the iterative path or has Belos
+  // settings to check, so that an installation without the module fails before any step.
+  if (impl_->belos_type_given || impl_->type == "belos") {
     IterativeSolver& belos = impl_->iterative_solver();
     if (!belos.is_belos_solver(impl_->belos_type)) {
       std::string names;

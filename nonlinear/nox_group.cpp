@@ -1,6 +1,7 @@
 #include "nonlinear/nox_group.hpp"
 
 #include "assembly/agree_on_errors.hpp"
+#include "io/errors.hpp"
 
 #include <cmath>
 #include <functional>
@@ -152,6 +153,8 @@ NOX::Abstract::Group::ReturnType NoxGroup::computeNewton(Teuchos::ParameterList&
   newton_->init(0.0);
   try {
     context_->last_linear_iterations = context_->linear.solve(jacobian_, rhs, newton_->tpetra());
+  } catch (const ExitCodeError&) {
+    throw;  // e.g. the iterative module cannot be loaded: no smaller step cures that
   } catch (const std::exception& e) {
     context_->failure = std::string("linear solve failed: ") + e.what();
     return Failed;

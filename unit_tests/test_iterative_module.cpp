@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "io/errors.hpp"
 #include "nonlinear/iterative_module.hpp"
 #include "nonlinear/linear_solver.hpp"
 
@@ -93,8 +94,9 @@ TEST(IterativeModule, UnloadableModuleIsAnErrorNamingThePaths) {
   std::ofstream(broken + "/" + iterative_module_file) << "not an ELF file\n";
   try {
     open_iterative_module({"/nonexistent/plugins", broken});
-    FAIL() << "expected std::runtime_error";
-  } catch (const std::runtime_error& e) {
+    FAIL() << "expected ExitCodeError";
+  } catch (const ExitCodeError& e) {
+    EXPECT_EQ(e.exit_code(), exit_code_incomplete_installation);
     const std::string what = e.what();
     EXPECT_NE(what.find("/nonexistent/plugins/libgrout_iterative.so: no such file"),
               std::string::npos)
