@@ -58,6 +58,16 @@ struct LinearSolver::Impl {
   }
   int dim = 0;
   std::string last_type;
+
+  // Whether a solve of `type` condenses the multipliers: as told, else on the iterative path
+  // (the point of the condensation) and on the distributed MUMPS path: on the 3D Hertz
+  // spheres (10 987 nodes) the condensed system's factorisation takes 30.7 GFlop against 47.1
+  // for the (u, λ) system, 0.68x of its time (docs/performance.md, "The condensed system on
+  // the direct path"). The gathered direct solves (2D) keep the (u, λ) system.
+  bool condenses(const std::string& type) const {
+    if (condense_given) return condense;
+    return type == "belos" || (type == "mumps" && !mumps_options.gather);
+  }
 };
 
 // 3D: MUMPS, distributed, 18-50x faster than KLU2 on 3D systems of 1e4-3e4 unknowns. 2D:
@@ -153,19 +163,8 @@ void LinearSolver::set_multiplier_pairing(std::vector<std::pair<GO, GO>> lambda_
   impl_->dofs_per_node = dofs_per_node;
 }
 
-// Condensed by default on the iterative path (the point of the condensation) and on the
-// distributed MUMPS path: on the 3D Hertz spheres (10 987 nodes) the condensed system's
-// factorisation takes 30.7 GFlop against 47.1 for the (u, λ) system, 0.68x of its time
-// (docs/performance.md, "The condensed system on the direct path"). The gathered direct
-// solves (2D) keep the (u, λ) system.
-namespace {
-bool condenses_by_default(const std::string& type) {
-  return type == "belos" || type == "mumps";
-}
-}  // namespace
-
 bool LinearSolver::condenses_multipliers() const {
-  return impl_->condense_given ? impl_->condense : condenses_by_default(impl_->type);
+  return impl_->condenses(impl_->type);
 }
 
 void LinearSolver::set_coordinates(std::vector<double> coordinates, int dim) {
@@ -199,11 +198,7 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
                                : auto_linear_solver_type((long long)K->getGlobalNumRows(), dim);
   impl_->last_type = type;
   impl_->last_symmetric = false;
-  // The iterative path works on the displacement-only (condensed) system by default.
-  const bool condense = impl_->condense_given
-                            ? impl_->condense
-                            : condenses_by_default(type) && !impl_->mumps_options.gather;
-  if (!condense || impl_->pairing.empty())
+  if (!impl_->condenses(type) || impl_->pairing.empty())
     return solve_system(K, b, x, type, impl_->belos_type_given ? impl_->belos_type : "CG");
   // The distributed MUMPS path first tries the symmetric (null-space) reduction: for
   // frictionless or tied contact with a fixed pairing and a symmetric stiffness it gives a

@@ -28,19 +28,12 @@ constexpr double pivot_tolerance = 1e-8;
 // constraint's gradient.
 constexpr double proportional_tolerance = 1e-10;
 
-// Gaussian elimination with complete pivoting on the dense m×n matrix a (row-major), each row
-// first scaled to a largest |entry| of 1, pivots only in the columns with allowed[c]: the
-// (row, column) pivots in order, at most max_pivots, while the largest remaining |entry|
-// exceeds tolerance.
-std::vector<std::pair<int, int>> complete_pivots(std::vector<double> a, int m, int n,
-                                                 const std::vector<char>& allowed, int max_pivots,
-                                                 double tolerance) {
-  for (int i = 0; i < m; ++i) {
-    double s = 0.0;
-    for (int c = 0; c < n; ++c) s = std::max(s, std::abs(a[i * n + c]));
-    if (s > 0.0)
-      for (int c = 0; c < n; ++c) a[i * n + c] /= s;
-  }
+// Gaussian elimination with complete pivoting on the dense m×n matrix a (row-major), pivots
+// only in the columns with allowed[c]: the (row, column) pivots in order, at most max_pivots,
+// while the largest remaining |entry| exceeds tolerance (a's rows scaled as the caller wants).
+std::vector<std::pair<int, int>> pivots_of(std::vector<double> a, int m, int n,
+                                           const std::vector<char>& allowed, int max_pivots,
+                                           double tolerance) {
   std::vector<char> row_used(m, 0), col_used(n, 0);
   std::vector<std::pair<int, int>> out;
   while (int(out.size()) < max_pivots) {
@@ -60,6 +53,19 @@ std::vector<std::pair<int, int>> complete_pivots(std::vector<double> a, int m, i
     }
   }
   return out;
+}
+
+// pivots_of with each row of a first scaled to a largest |entry| of 1.
+std::vector<std::pair<int, int>> complete_pivots(std::vector<double> a, int m, int n,
+                                                 const std::vector<char>& allowed, int max_pivots,
+                                                 double tolerance) {
+  for (int i = 0; i < m; ++i) {
+    double s = 0.0;
+    for (int c = 0; c < n; ++c) s = std::max(s, std::abs(a[i * n + c]));
+    if (s > 0.0)
+      for (int c = 0; c < n; ++c) a[i * n + c] /= s;
+  }
+  return pivots_of(std::move(a), m, n, allowed, max_pivots, tolerance);
 }
 
 // Inverse of the n×n matrix a (row-major), Gauss-Jordan with partial pivoting; false if
@@ -85,6 +91,9 @@ bool invert(std::vector<double> a, int n, std::vector<double>& inverse) {
   }
   return true;
 }
+
+// λ -> (displacement row, C[row, λ]): the multiplier columns of J's displacement rows.
+using MultiplierColumns = std::unordered_map<GO, std::vector<std::pair<GO, double>>>;
 
 // What condense() keeps of one slave node (handled by the rank owning its dofs).
 struct NodeData {
@@ -118,6 +127,10 @@ struct SymmetricCondensation::Impl {
   Teuchos::RCP<Vector> rhs;
 
   bool is_lambda(GO g) const { return by_lambda.count(g) != 0; }
+  std::string reduce_node(NodeData& nd, MultiplierColumns& columns);
+  void build_reduced_matrix(const Matrix& J, const std::vector<GO>& skipped,
+                            const std::vector<GO>& eliminated,
+                            const std::unordered_map<GO, const std::map<GO, double>*>& t_row_of);
 };
 
 SymmetricCondensation::SymmetricCondensation(const MultiplierPairing& lambda_to_slave,
@@ -264,6 +277,435 @@ std::string check_symmetric(const Matrix& J, const Vector& b,
 
 }  // namespace
 
+// Step 3 of condense() for one handled node: the λ-rows' structure, the eliminated slave
+// dofs, T's rows, C N ∝ Gᵀ and the recovery of λ (header). `columns`: the multiplier columns
+// of the displacement rows, by multiplier. Returns why the node fails a check, or "".
+std::string SymmetricCondensation::Impl::reduce_node(NodeData& nd, MultiplierColumns& columns) {
+  Impl& m = *this;
+  std::string why;
+  const int d = int(nd.pairs.size());
+  const std::vector<char> all_columns(std::size_t(d), 1);
+  const GO node = m.slave[nd.pairs.front()] / m.dofs_per_node;
+  const std::string at = "slave node " + std::to_string(node) + ": ";
+  std::unordered_map<GO, int> own;  // the node's multipliers -> 0 .. d-1
+  for (int i = 0; i < d; ++i) own[m.lambda[nd.pairs[i]]] = i;
+  std::vector<double> P, p_rhs;  // pure-λ rows (r × d)
+  std::vector<const Row*> G;     // constraint rows
+  for (int i = 0; i < d && why.empty(); ++i) {
+    const Row& row = m.rows.at(m.lambda[nd.pairs[i]]);
+    bool has_u = false, has_lambda = false;
+    std::vector<double> coefficients(d, 0.0);
+    for (std::size_t e = 0; e < row.cols.size(); ++e) {
+      const auto it = own.find(row.cols[e]);
+      if (it != own.end()) {
+        has_lambda = true, coefficients[it->second] += row.vals[e];
+      } else if (m.is_lambda(row.cols[e])) {
+        why = at + "a multiplier row holds another node's multiplier";
+      } else {
+        has_u = true;
+      }
+    }
+    if (has_u && has_lambda)
+      why = at +
+            "a multiplier row mixes displacements and multipliers (friction or "
+            "geometry: current)";
+    else if (!has_u && !has_lambda)
+      why = at + "an empty multiplier row";
+    else if (has_lambda)
+      P.insert(P.end(), coefficients.begin(), coefficients.end()), p_rhs.push_back(row.rhs);
+    else
+      G.push_back(&row);
+  }
+  if (!why.empty()) return why;
+  const int r = int(p_rhs.size()), k = int(G.size());
+  nd.k = k;
+  // P λ = p: λ0 on P's pivot columns, N = ker P (d × k).
+  const auto p_pivots = complete_pivots(P, r, d, all_columns, r, rank_tolerance);
+  if (int(p_pivots.size()) < r) {
+    return at + "its multiplier-only rows are dependent";
+  }
+  std::vector<int> pivot_cols, free_cols;
+  {
+    std::vector<char> is_pivot(d, 0);
+    for (const auto& [i, c] : p_pivots) pivot_cols.push_back(c), is_pivot[c] = 1;
+    for (int c = 0; c < d; ++c)
+      if (!is_pivot[c]) free_cols.push_back(c);
+  }
+  nd.lambda0.assign(d, 0.0);
+  nd.N.assign(std::size_t(d) * k, 0.0);
+  if (r > 0) {
+    std::vector<double> Pp(std::size_t(r) * r), Pinv;
+    for (int i = 0; i < r; ++i)
+      for (int j = 0; j < r; ++j) Pp[i * r + j] = P[i * d + pivot_cols[j]];
+    invert(Pp, r, Pinv);
+    for (int j = 0; j < r; ++j)
+      for (int i = 0; i < r; ++i) nd.lambda0[pivot_cols[j]] += Pinv[j * r + i] * p_rhs[i];
+    for (int f = 0; f < k; ++f)
+      for (int j = 0; j < r; ++j)
+        for (int i = 0; i < r; ++i)
+          nd.N[pivot_cols[j] * k + f] -= Pinv[j * r + i] * P[i * d + free_cols[f]];
+  }
+  for (int f = 0; f < k; ++f) nd.N[free_cols[f] * k + f] = 1.0;
+  if (k == 0) return "";
+
+  // Slave pivots: complete pivoting on the node's slave block of G, rows scaled by their
+  // largest entry over all columns; prescribed slave dofs (rows holding their diagonal
+  // only) never pivot.
+  std::vector<double> Gs(std::size_t(k) * d, 0.0);
+  std::vector<char> allowed(d, 1);
+  for (int c = 0; c < d; ++c) {
+    const GO s = m.slave[nd.pairs[c]];
+    const Row& srow = m.rows.at(s);
+    bool diagonal_only = true;
+    for (GO col : srow.cols) diagonal_only = diagonal_only && col == s;
+    allowed[c] = !diagonal_only;
+  }
+  for (int i = 0; i < k; ++i) {
+    double scale = 0.0;
+    for (double v : G[i]->vals) scale = std::max(scale, std::abs(v));
+    for (std::size_t e = 0; e < G[i]->cols.size(); ++e) {
+      const auto it = m.by_slave.find(G[i]->cols[e]);
+      if (it == m.by_slave.end()) continue;
+      const auto pos = std::find(nd.pairs.begin(), nd.pairs.end(), it->second);
+      if (pos != nd.pairs.end()) Gs[i * d + int(pos - nd.pairs.begin())] += G[i]->vals[e] / scale;
+    }
+  }
+  // Gs's rows are already scaled by their whole row's largest entry (not their slave block's).
+  const auto g_pivots = pivots_of(Gs, k, d, allowed, k, pivot_tolerance);
+  if (int(g_pivots.size()) < k) {
+    return at + "no unprescribed slave dof pivots its constraint rows";
+  }
+  std::vector<GO> e_gid(k);
+  for (int l = 0; l < k; ++l) e_gid[l] = m.slave[nd.pairs[g_pivots[l].second]];
+  nd.eliminated = e_gid;
+  // G_e (k × k, rows in G's order, columns the eliminated dofs), its inverse.
+  std::vector<std::map<GO, double>> g_rows(k);
+  for (int i = 0; i < k; ++i)
+    for (std::size_t e = 0; e < G[i]->cols.size(); ++e) g_rows[i][G[i]->cols[e]] += G[i]->vals[e];
+  std::vector<double> Ge(std::size_t(k) * k, 0.0), Ginv;
+  for (int i = 0; i < k; ++i)
+    for (int l = 0; l < k; ++l)
+      if (auto it = g_rows[i].find(e_gid[l]); it != g_rows[i].end()) Ge[i * k + l] = it->second;
+  if (!invert(Ge, k, Ginv)) {
+    return at + "singular constraint block";
+  }
+  // u_e = G_e⁻¹ (g − G_f u_f): row l of Ginv gives e_l.
+  nd.c.assign(k, 0.0);
+  nd.t_rows.assign(k, {});
+  for (int l = 0; l < k; ++l)
+    for (int i = 0; i < k; ++i) {
+      const double w = Ginv[l * k + i];
+      nd.c[l] += w * G[i]->rhs;
+      for (const auto& [col, v] : g_rows[i])
+        if (std::find(e_gid.begin(), e_gid.end(), col) == e_gid.end()) nd.t_rows[l][col] -= w * v;
+    }
+  // C N (rows r, k columns) and R = G_e⁻ᵀ (C N)[e, :]; C N = Gᵀ R on every row.
+  std::map<GO, std::vector<double>> CN;
+  double cn_max = 0.0;
+  for (int c = 0; c < d; ++c)
+    for (const auto& [row, v] : columns[m.lambda[nd.pairs[c]]]) {
+      auto& out = CN[row];
+      out.resize(k, 0.0);
+      for (int f = 0; f < k; ++f) out[f] += v * nd.N[c * k + f];
+    }
+  for (const auto& [row, v] : CN)
+    for (double x : v) cn_max = std::max(cn_max, std::abs(x));
+  std::vector<double> R(std::size_t(k) * k, 0.0);
+  for (int i = 0; i < k; ++i)
+    for (int f = 0; f < k; ++f)
+      for (int l = 0; l < k; ++l)
+        if (auto it = CN.find(e_gid[l]); it != CN.end())
+          R[i * k + f] += Ginv[l * k + i] * it->second[f];
+  std::set<GO> check_rows;
+  for (const auto& [row, v] : CN) check_rows.insert(row);
+  for (const auto& g : g_rows)
+    for (const auto& [col, v] : g) check_rows.insert(col);
+  for (GO row : check_rows) {
+    for (int f = 0; f < k && why.empty(); ++f) {
+      double gr = 0.0;
+      for (int i = 0; i < k; ++i)
+        if (auto it = g_rows[i].find(row); it != g_rows[i].end()) gr += it->second * R[i * k + f];
+      const auto it = CN.find(row);
+      const double cn = it != CN.end() ? it->second[f] : 0.0;
+      if (!(std::abs(cn - gr) <= proportional_tolerance * cn_max))
+        why = at + "its multiplier does not act along its constraint's gradient (row " +
+              std::to_string(row) + ")";
+    }
+  }
+  if (!why.empty()) return why;
+  // Recovery: μ from k of the node's slave force rows, (C_s N) μ = b_s − K_s u − C_s λ0.
+  std::vector<double> CsN(std::size_t(d) * k, 0.0);
+  std::vector<std::vector<double>> cs(d, std::vector<double>(d, 0.0));
+  for (int s = 0; s < d; ++s) {
+    const Row& srow = m.rows.at(m.slave[nd.pairs[s]]);
+    for (std::size_t e = 0; e < srow.cols.size(); ++e) {
+      if (const auto it = own.find(srow.cols[e]); it != own.end())
+        cs[s][it->second] += srow.vals[e];
+      else if (m.is_lambda(srow.cols[e]))
+        why = at + "its slave force row holds another node's multiplier";
+    }
+    for (int f = 0; f < k; ++f)
+      for (int c = 0; c < d; ++c) CsN[s * k + f] += cs[s][c] * nd.N[c * k + f];
+  }
+  if (!why.empty()) return why;
+  const auto r_pivots = complete_pivots(CsN, d, k, all_columns, k, rank_tolerance);
+  if (int(r_pivots.size()) < k) {
+    return at + "its multipliers cannot be recovered from its slave force rows";
+  }
+  std::vector<double> Ms(std::size_t(k) * k);
+  for (int i = 0; i < k; ++i) {
+    const int s = r_pivots[i].first;
+    nd.recovery_rows.push_back(m.slave[nd.pairs[s]]);
+    nd.recovery_c.push_back(cs[s]);
+    for (int f = 0; f < k; ++f) Ms[i * k + f] = CsN[s * k + f];
+  }
+  if (!invert(Ms, k, nd.recovery_inverse)) return at + "singular recovery block";
+  return "";
+}
+
+// Step 7 of condense(): K̃ = Tᵀ K T, with the eliminated rows' pattern (below), into A.
+// `skipped`: the paired multipliers, sorted; `eliminated`: the eliminated dofs, sorted;
+// `t_row_of`: T's rows of the eliminated dofs handled here.
+void SymmetricCondensation::Impl::build_reduced_matrix(
+    const Matrix& J, const std::vector<GO>& skipped, const std::vector<GO>& eliminated,
+    const std::unordered_map<GO, const std::map<GO, double>*>& t_row_of) {
+  Impl& m = *this;
+  const auto comm = J.getRowMap()->getComm();
+  const auto& row_map = *J.getRowMap();
+  const auto new_gid = [&](GO g) {
+    return g - GO(std::lower_bound(skipped.begin(), skipped.end(), g) - skipped.begin());
+  };
+  // K̃ = Tᵀ K T without a general triple product: T = I + (A on the eliminated rows), so
+  //   K̃_ij = K_ij + Σ_e K_ie A_ej + Σ_e A_ei (K T)_ej,   (K T)_ej = K_ej + Σ_e' K_ee' A_e'j,
+  // for kept i, j (e, e' eliminated): J's rows, plus K_ie A_e on the rows with an
+  // eliminated column (a), plus A_eᵀ (K T)_e on the rows of A_e's columns (b), sent to
+  // their owners. T's rows are touched only on ~the slave dofs: the rest of K̃ is K's.
+  // A's rows (reduced column GIDs) of the eliminated dofs among this rank's columns of J:
+  // handled here, or imported from the rank that handles them.
+  std::unordered_map<GO, std::vector<std::pair<GO, double>>> a_rows;
+  for (const auto& [e, t_row] : t_row_of) {
+    auto& out = a_rows[e];
+    for (const auto& [f, v] : *t_row) out.emplace_back(new_gid(f), v);
+  }
+  const auto& j_cols = *J.getColMap();
+  const LO n_j_cols = LO(j_cols.getNodeNumElements());
+  {
+    std::vector<GO> remote;
+    for (LO c = 0; c < n_j_cols; ++c) {
+      const GO g = j_cols.getGlobalElement(c);
+      if (!row_map.isNodeGlobalElement(g) &&
+          std::binary_search(eliminated.begin(), eliminated.end(), g))
+        remote.push_back(g);
+    }
+    RowTable remote_t_rows;
+    Vector zero(J.getRowMap());
+    import_rows(*m.T, zero, remote, remote_t_rows);
+    for (const auto& [e, r] : remote_t_rows) {
+      auto& out = a_rows[e];
+      for (std::size_t q = 0; q < r.cols.size(); ++q) out.emplace_back(r.cols[q], r.vals[q]);
+    }
+  }
+  const auto is_eliminated = [&](GO g) {
+    return std::binary_search(eliminated.begin(), eliminated.end(), g);
+  };
+  // (b): A_eᵀ (K T)_e of the eliminated dofs handled here, row by row of Aᵀ (Gustavson's
+  // row-wise sparse product, with a dense accumulator over the columns met): the rows this
+  // rank owns go to `received` directly, the others are exported to their owners (summed
+  // there).
+  std::unordered_map<GO, int> slot_of;  // reduced GID -> slot (the columns and rows met)
+  std::vector<GO> slot_gid;
+  const auto slot = [&](GO c) {
+    const auto [it, added] = slot_of.emplace(c, int(slot_gid.size()));
+    if (added) slot_gid.push_back(c);
+    return it->second;
+  };
+  std::vector<double> sum;
+  std::vector<char> met;
+  std::vector<int> touched;
+  const auto add = [&](int s, double v) {
+    if (s >= int(sum.size())) sum.resize(slot_gid.size(), 0.0), met.resize(slot_gid.size(), 0);
+    if (!met[s]) met[s] = 1, touched.push_back(s);
+    sum[s] += v;
+  };
+  std::vector<std::vector<std::pair<int, double>>> kt_rows;  // (K T)_e per handled e
+  std::vector<std::vector<std::pair<int, double>>> at_rows;  // Aᵀ: slot i -> (e, A_ei)
+  for (const auto& [e, t_row] : t_row_of) {
+    const Row& row = m.rows.at(e);
+    for (std::size_t q = 0; q < row.cols.size(); ++q) {
+      const GO f = row.cols[q];
+      if (m.is_lambda(f)) continue;
+      if (const auto it = a_rows.find(f); it != a_rows.end())
+        for (const auto& [c, a] : it->second) add(slot(c), row.vals[q] * a);
+      else
+        add(slot(new_gid(f)), row.vals[q]);
+    }
+    kt_rows.emplace_back();
+    for (int s : touched) kt_rows.back().emplace_back(s, sum[s]), sum[s] = 0.0, met[s] = 0;
+    touched.clear();
+    for (const auto& [i, a] : a_rows.at(e)) {
+      const int s = slot(i);
+      if (s >= int(at_rows.size())) at_rows.resize(slot_gid.size());
+      at_rows[s].emplace_back(int(kt_rows.size()) - 1, a);
+    }
+  }
+  std::unordered_map<GO, std::vector<std::pair<GO, double>>> received;  // owned reduced row ->
+  std::vector<GO> spread_rows;  // rows for other ranks, and their entries
+  std::vector<std::vector<std::pair<GO, double>>> spread;
+  for (int s = 0; s < int(at_rows.size()); ++s) {
+    if (at_rows[s].empty()) continue;
+    for (const auto& [k, a] : at_rows[s])
+      for (const auto& [c, v] : kt_rows[k]) add(c, a * v);
+    std::vector<std::pair<GO, double>> out;
+    out.reserve(touched.size());
+    for (int c : touched) out.emplace_back(slot_gid[c], sum[c]), sum[c] = 0.0, met[c] = 0;
+    touched.clear();
+    if (m.reduced_map->isNodeGlobalElement(slot_gid[s])) {
+      auto& r = received[slot_gid[s]];
+      r.insert(r.end(), out.begin(), out.end());
+    } else {
+      spread_rows.push_back(slot_gid[s]), spread.push_back(std::move(out));
+    }
+  }
+  {
+    std::vector<std::size_t> counts;
+    for (const auto& entries : spread) counts.push_back(entries.size());
+    const auto spread_map =
+        Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                             spread_rows.data(), spread_rows.size(), 0, comm));
+    Matrix source(spread_map, Teuchos::ArrayView<const std::size_t>(counts));
+    std::vector<GO> cols;
+    std::vector<double> vals;
+    for (std::size_t r = 0; r < spread.size(); ++r) {
+      cols.clear(), vals.clear();
+      for (const auto& [c, v] : spread[r]) cols.push_back(c), vals.push_back(v);
+      source.insertGlobalValues(spread_rows[r], Teuchos::ArrayView<const GO>(cols),
+                                Teuchos::ArrayView<const double>(vals));
+    }
+    source.fillComplete(m.reduced_map, m.reduced_map);
+    const Export exporter(spread_map, m.reduced_map);
+    Matrix target(m.reduced_map, 0);
+    target.doExport(source, exporter, Tpetra::ADD);
+    target.fillComplete(m.reduced_map, m.reduced_map);
+    const auto local = target.getLocalMatrixHost();
+    for (LO i = 0; i < LO(m.reduced_map->getNodeNumElements()); ++i) {
+      if (local.graph.row_map(i) == local.graph.row_map(i + 1)) continue;
+      auto& out = received[m.reduced_map->getGlobalElement(i)];
+      for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p)
+        out.emplace_back(target.getColMap()->getGlobalElement(local.graph.entries(p)),
+                         local.values(p));
+    }
+  }
+  // The eliminated rows get K_ee on the diagonal and zeros where K T has entries in row e:
+  // the pattern K̃ would have with e kept (its column e too: MumpsSolver reads a zero above
+  // the diagonal as its mirror). Then K̃'s pattern stays within the union of the Newton
+  // iterations' patterns when a dof is eliminated in some and kept in others, and MUMPS
+  // keeps its analysis (without them, 7 analyses in 7 Newton iterations on the 3D Hertz
+  // spheres instead of 3).
+  std::unordered_map<GO, std::map<GO, double>> extra;  // reduced row -> (column, value)
+  for (const auto& [e, t_row] : t_row_of) {
+    const GO ne = new_gid(e);
+    const Row& row = m.rows.at(e);
+    auto& out = extra[ne];
+    for (std::size_t q = 0; q < row.cols.size(); ++q) {
+      const GO f = row.cols[q];
+      if (m.is_lambda(f)) continue;
+      if (f == e) {
+        out[ne] = row.vals[q] != 0.0 ? row.vals[q] : 1.0;
+      } else if (const auto it = a_rows.find(f); it != a_rows.end()) {
+        for (const auto& [c, v] : it->second) out.emplace(c, 0.0);  // (K T)'s row e
+      } else {
+        out.emplace(new_gid(f), 0.0);
+      }
+    }
+    if (out.count(ne) == 0) out[ne] = 1.0;
+  }
+  // The column map: J's displacement columns (renumbered, in J's order, so that a sorted
+  // row of J stays sorted), then the other columns of (a), (b) and the eliminated rows.
+  std::vector<GO> col_gids;
+  std::vector<LO> j_col_new(n_j_cols, -1);  // J's column -> K̃'s column (kept dofs only)
+  std::unordered_map<GO, LO> col_lid;
+  col_gids.reserve(n_j_cols);
+  col_lid.reserve(std::size_t(n_j_cols) * 2);
+  for (LO c = 0; c < n_j_cols; ++c) {
+    const GO g = j_cols.getGlobalElement(c);
+    if (m.is_lambda(g)) continue;
+    const LO l = LO(col_gids.size());
+    col_gids.push_back(new_gid(g));
+    col_lid.emplace(col_gids.back(), l);
+    if (!is_eliminated(g)) j_col_new[c] = l;
+  }
+  const auto lid_of = [&](GO c) {
+    const auto [it, added] = col_lid.emplace(c, LO(col_gids.size()));
+    if (added) col_gids.push_back(c);
+    return it->second;
+  };
+  const auto local = J.getLocalMatrixHost();
+  const bool sorted = J.getCrsGraph()->isSorted();
+  const LO n = LO(m.reduced_map->getNodeNumElements());
+  std::vector<LO> j_row(n);  // K̃'s row -> J's row
+  for (LO i = 0, r = 0; i < LO(row_map.getNodeNumElements()); ++i)
+    if (!m.is_lambda(row_map.getGlobalElement(i))) j_row[r++] = i;
+  Teuchos::ArrayRCP<std::size_t> ptr(n + 1, 0);
+  std::vector<LO> ind;
+  std::vector<double> val;
+  ind.reserve(local.values.extent(0)), val.reserve(local.values.extent(0));
+  std::vector<std::pair<LO, double>> row_entries;
+  for (LO i = 0; i < n; ++i) {
+    const GO ng = m.reduced_map->getGlobalElement(i);
+    const LO ji = j_row[i];
+    const auto begin = local.graph.row_map(ji), end = local.graph.row_map(ji + 1);
+    row_entries.clear();
+    bool general = !sorted;
+    if (const auto it = extra.find(ng); it != extra.end()) {
+      for (const auto& [c, v] : it->second) row_entries.emplace_back(lid_of(c), v);
+      general = true;
+    } else {
+      for (auto p = begin; p < end; ++p) {
+        const LO c = local.graph.entries(p);
+        if (j_col_new[c] >= 0) {
+          row_entries.emplace_back(j_col_new[c], local.values(p));
+        } else if (local.values(p) != 0.0) {
+          const auto it = a_rows.find(j_cols.getGlobalElement(c));
+          if (it == a_rows.end()) continue;  // a multiplier column
+          for (const auto& [f, a] : it->second)
+            row_entries.emplace_back(lid_of(f), local.values(p) * a);
+          general = true;
+        }
+      }
+      if (const auto it = received.find(ng); it != received.end()) {
+        for (const auto& [c, v] : it->second) row_entries.emplace_back(lid_of(c), v);
+        general = true;
+      }
+    }
+    if (general) {
+      // Sum the repeated columns, then drop the exact zeros (below) as of the product's.
+      std::stable_sort(row_entries.begin(), row_entries.end(),
+                       [](const auto& a, const auto& b) { return a.first < b.first; });
+      std::size_t out = 0;
+      for (std::size_t q = 0; q < row_entries.size(); ++q) {
+        if (out > 0 && row_entries[out - 1].first == row_entries[q].first)
+          row_entries[out - 1].second += row_entries[q].second;
+        else
+          row_entries[out++] = row_entries[q];
+      }
+      row_entries.resize(out);
+    }
+    const bool keep_zeros = extra.count(ng) != 0;  // the eliminated rows' pattern
+    for (const auto& [c, v] : row_entries)
+      if (v != 0.0 || keep_zeros) ind.push_back(c), val.push_back(v);
+    ptr[i + 1] = ind.size();
+  }
+  const auto col_map =
+      Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                           col_gids.data(), col_gids.size(), 0, comm));
+  Teuchos::ArrayRCP<LO> ind_rcp(ind.size());
+  Teuchos::ArrayRCP<double> val_rcp(val.size());
+  std::copy(ind.begin(), ind.end(), ind_rcp.begin());
+  std::copy(val.begin(), val.end(), val_rcp.begin());
+  m.A = Teuchos::rcp(new Matrix(m.reduced_map, col_map, ptr, ind_rcp, val_rcp));
+  m.A->fillComplete(m.reduced_map, m.reduced_map);
+}
+
 bool SymmetricCondensation::condense(const Matrix& J, const Vector& b) {
   Impl& m = *impl_;
   const auto comm = J.getRowMap()->getComm();
@@ -318,7 +760,7 @@ bool SymmetricCondensation::condense(const Matrix& J, const Vector& b) {
 
   // 2. Cᵀ: the multiplier columns of the displacement rows, by multiplier, on the handling
   //    rank (Tpetra's transpose of C, whose domain map is the handled multipliers).
-  std::unordered_map<GO, std::vector<std::pair<GO, double>>> columns;  // λ -> (row, C[row, λ])
+  MultiplierColumns columns;
   {
     std::vector<GO> handled_lambda;
     for (const NodeData& nd : m.handled)
@@ -361,211 +803,9 @@ bool SymmetricCondensation::condense(const Matrix& J, const Vector& b) {
   }
 
   // 3. Per handled node: the λ-rows' structure, the eliminated slave dofs, T's rows, C N ∝ Gᵀ
-  //    and the recovery of λ (header).
-  for (NodeData& nd : m.handled) {
-    if (!why.empty()) break;
-    const int d = int(nd.pairs.size());
-    const std::vector<char> all_columns(std::size_t(d), 1);
-    const GO node = m.slave[nd.pairs.front()] / m.dofs_per_node;
-    const std::string at = "slave node " + std::to_string(node) + ": ";
-    std::unordered_map<GO, int> own;  // the node's multipliers -> 0 .. d-1
-    for (int i = 0; i < d; ++i) own[m.lambda[nd.pairs[i]]] = i;
-    std::vector<double> P, p_rhs;  // pure-λ rows (r × d)
-    std::vector<const Row*> G;     // constraint rows
-    for (int i = 0; i < d && why.empty(); ++i) {
-      const Row& row = m.rows.at(m.lambda[nd.pairs[i]]);
-      bool has_u = false, has_lambda = false;
-      std::vector<double> coefficients(d, 0.0);
-      for (std::size_t e = 0; e < row.cols.size(); ++e) {
-        const auto it = own.find(row.cols[e]);
-        if (it != own.end()) {
-          has_lambda = true, coefficients[it->second] += row.vals[e];
-        } else if (m.is_lambda(row.cols[e])) {
-          why = at + "a multiplier row holds another node's multiplier";
-        } else {
-          has_u = true;
-        }
-      }
-      if (has_u && has_lambda)
-        why = at +
-              "a multiplier row mixes displacements and multipliers (friction or "
-              "geometry: current)";
-      else if (!has_u && !has_lambda)
-        why = at + "an empty multiplier row";
-      else if (has_lambda)
-        P.insert(P.end(), coefficients.begin(), coefficients.end()), p_rhs.push_back(row.rhs);
-      else
-        G.push_back(&row);
-    }
-    if (!why.empty()) break;
-    const int r = int(p_rhs.size()), k = int(G.size());
-    nd.k = k;
-    // P λ = p: λ0 on P's pivot columns, N = ker P (d × k).
-    const auto p_pivots = complete_pivots(P, r, d, all_columns, r, rank_tolerance);
-    if (int(p_pivots.size()) < r) {
-      why = at + "its multiplier-only rows are dependent";
-      break;
-    }
-    std::vector<int> pivot_cols, free_cols;
-    {
-      std::vector<char> is_pivot(d, 0);
-      for (const auto& [i, c] : p_pivots) pivot_cols.push_back(c), is_pivot[c] = 1;
-      for (int c = 0; c < d; ++c)
-        if (!is_pivot[c]) free_cols.push_back(c);
-    }
-    nd.lambda0.assign(d, 0.0);
-    nd.N.assign(std::size_t(d) * k, 0.0);
-    if (r > 0) {
-      std::vector<double> Pp(std::size_t(r) * r), Pinv;
-      for (int i = 0; i < r; ++i)
-        for (int j = 0; j < r; ++j) Pp[i * r + j] = P[i * d + pivot_cols[j]];
-      invert(Pp, r, Pinv);
-      for (int j = 0; j < r; ++j)
-        for (int i = 0; i < r; ++i) nd.lambda0[pivot_cols[j]] += Pinv[j * r + i] * p_rhs[i];
-      for (int f = 0; f < k; ++f)
-        for (int j = 0; j < r; ++j)
-          for (int i = 0; i < r; ++i)
-            nd.N[pivot_cols[j] * k + f] -= Pinv[j * r + i] * P[i * d + free_cols[f]];
-    }
-    for (int f = 0; f < k; ++f) nd.N[free_cols[f] * k + f] = 1.0;
-    if (k == 0) continue;
-
-    // Slave pivots: complete pivoting on the node's slave block of G, rows scaled by their
-    // largest entry over all columns; prescribed slave dofs (rows holding their diagonal
-    // only) never pivot.
-    std::vector<double> Gs(std::size_t(k) * d, 0.0);
-    std::vector<char> allowed(d, 1);
-    for (int c = 0; c < d; ++c) {
-      const GO s = m.slave[nd.pairs[c]];
-      const Row& srow = m.rows.at(s);
-      bool diagonal_only = true;
-      for (GO col : srow.cols) diagonal_only = diagonal_only && col == s;
-      allowed[c] = !diagonal_only;
-    }
-    for (int i = 0; i < k; ++i) {
-      double scale = 0.0;
-      for (double v : G[i]->vals) scale = std::max(scale, std::abs(v));
-      for (std::size_t e = 0; e < G[i]->cols.size(); ++e) {
-        const auto it = m.by_slave.find(G[i]->cols[e]);
-        if (it == m.by_slave.end()) continue;
-        const auto pos = std::find(nd.pairs.begin(), nd.pairs.end(), it->second);
-        if (pos != nd.pairs.end()) Gs[i * d + int(pos - nd.pairs.begin())] += G[i]->vals[e] / scale;
-      }
-    }
-    // complete_pivots rescales rows by their slave block: compare with the whole row here.
-    std::vector<std::pair<int, int>> g_pivots;
-    {
-      std::vector<double> a = Gs;
-      std::vector<char> row_used(k, 0), col_used(d, 0);
-      while (int(g_pivots.size()) < k) {
-        int pi = -1, pc = -1;
-        double best = pivot_tolerance;
-        for (int i = 0; i < k; ++i)
-          for (int c = 0; c < d; ++c)
-            if (!row_used[i] && !col_used[c] && allowed[c] && std::abs(a[i * d + c]) > best)
-              best = std::abs(a[i * d + c]), pi = i, pc = c;
-        if (pi < 0) break;
-        row_used[pi] = col_used[pc] = 1;
-        g_pivots.emplace_back(pi, pc);
-        for (int i = 0; i < k; ++i) {
-          if (row_used[i]) continue;
-          const double f = a[i * d + pc] / a[pi * d + pc];
-          for (int c = 0; c < d; ++c) a[i * d + c] -= f * a[pi * d + c];
-        }
-      }
-    }
-    if (int(g_pivots.size()) < k) {
-      why = at + "no unprescribed slave dof pivots its constraint rows";
-      break;
-    }
-    std::vector<GO> e_gid(k);
-    for (int l = 0; l < k; ++l) e_gid[l] = m.slave[nd.pairs[g_pivots[l].second]];
-    nd.eliminated = e_gid;
-    // G_e (k × k, rows in G's order, columns the eliminated dofs), its inverse.
-    std::vector<std::map<GO, double>> g_rows(k);
-    for (int i = 0; i < k; ++i)
-      for (std::size_t e = 0; e < G[i]->cols.size(); ++e) g_rows[i][G[i]->cols[e]] += G[i]->vals[e];
-    std::vector<double> Ge(std::size_t(k) * k, 0.0), Ginv;
-    for (int i = 0; i < k; ++i)
-      for (int l = 0; l < k; ++l)
-        if (auto it = g_rows[i].find(e_gid[l]); it != g_rows[i].end()) Ge[i * k + l] = it->second;
-    if (!invert(Ge, k, Ginv)) {
-      why = at + "singular constraint block";
-      break;
-    }
-    // u_e = G_e⁻¹ (g − G_f u_f): row l of Ginv gives e_l.
-    nd.c.assign(k, 0.0);
-    nd.t_rows.assign(k, {});
-    for (int l = 0; l < k; ++l)
-      for (int i = 0; i < k; ++i) {
-        const double w = Ginv[l * k + i];
-        nd.c[l] += w * G[i]->rhs;
-        for (const auto& [col, v] : g_rows[i])
-          if (std::find(e_gid.begin(), e_gid.end(), col) == e_gid.end()) nd.t_rows[l][col] -= w * v;
-      }
-    // C N (rows r, k columns) and R = G_e⁻ᵀ (C N)[e, :]; C N = Gᵀ R on every row.
-    std::map<GO, std::vector<double>> CN;
-    double cn_max = 0.0;
-    for (int c = 0; c < d; ++c)
-      for (const auto& [row, v] : columns[m.lambda[nd.pairs[c]]]) {
-        auto& out = CN[row];
-        out.resize(k, 0.0);
-        for (int f = 0; f < k; ++f) out[f] += v * nd.N[c * k + f];
-      }
-    for (const auto& [row, v] : CN)
-      for (double x : v) cn_max = std::max(cn_max, std::abs(x));
-    std::vector<double> R(std::size_t(k) * k, 0.0);
-    for (int i = 0; i < k; ++i)
-      for (int f = 0; f < k; ++f)
-        for (int l = 0; l < k; ++l)
-          if (auto it = CN.find(e_gid[l]); it != CN.end())
-            R[i * k + f] += Ginv[l * k + i] * it->second[f];
-    std::set<GO> check_rows;
-    for (const auto& [row, v] : CN) check_rows.insert(row);
-    for (const auto& g : g_rows)
-      for (const auto& [col, v] : g) check_rows.insert(col);
-    for (GO row : check_rows) {
-      for (int f = 0; f < k && why.empty(); ++f) {
-        double gr = 0.0;
-        for (int i = 0; i < k; ++i)
-          if (auto it = g_rows[i].find(row); it != g_rows[i].end()) gr += it->second * R[i * k + f];
-        const auto it = CN.find(row);
-        const double cn = it != CN.end() ? it->second[f] : 0.0;
-        if (!(std::abs(cn - gr) <= proportional_tolerance * cn_max))
-          why = at + "its multiplier does not act along its constraint's gradient (row " +
-                std::to_string(row) + ")";
-      }
-    }
-    if (!why.empty()) break;
-    // Recovery: μ from k of the node's slave force rows, (C_s N) μ = b_s − K_s u − C_s λ0.
-    std::vector<double> CsN(std::size_t(d) * k, 0.0);
-    std::vector<std::vector<double>> cs(d, std::vector<double>(d, 0.0));
-    for (int s = 0; s < d; ++s) {
-      const Row& srow = m.rows.at(m.slave[nd.pairs[s]]);
-      for (std::size_t e = 0; e < srow.cols.size(); ++e) {
-        if (const auto it = own.find(srow.cols[e]); it != own.end())
-          cs[s][it->second] += srow.vals[e];
-        else if (m.is_lambda(srow.cols[e]))
-          why = at + "its slave force row holds another node's multiplier";
-      }
-      for (int f = 0; f < k; ++f)
-        for (int c = 0; c < d; ++c) CsN[s * k + f] += cs[s][c] * nd.N[c * k + f];
-    }
-    if (!why.empty()) break;
-    const auto r_pivots = complete_pivots(CsN, d, k, all_columns, k, rank_tolerance);
-    if (int(r_pivots.size()) < k) {
-      why = at + "its multipliers cannot be recovered from its slave force rows";
-      break;
-    }
-    std::vector<double> Ms(std::size_t(k) * k);
-    for (int i = 0; i < k; ++i) {
-      const int s = r_pivots[i].first;
-      nd.recovery_rows.push_back(m.slave[nd.pairs[s]]);
-      nd.recovery_c.push_back(cs[s]);
-      for (int f = 0; f < k; ++f) Ms[i * k + f] = CsN[s * k + f];
-    }
-    if (!invert(Ms, k, nd.recovery_inverse)) why = at + "singular recovery block";
-  }
+  //    and the recovery of λ (reduce_node).
+  for (NodeData& nd : m.handled)
+    if (!(why = m.reduce_node(nd, columns)).empty()) break;
   if (!(m.reason = agree(*comm, why)).empty()) return false;
 
   // 4. The eliminated dofs (replicated); none may occur in another node's constraint.
@@ -641,237 +881,7 @@ bool SymmetricCondensation::condense(const Matrix& J, const Vector& b) {
     }
     m.T->fillComplete(m.reduced_map, J.getRowMap());
   }
-  {
-    // K̃ = Tᵀ K T without a general triple product: T = I + (A on the eliminated rows), so
-    //   K̃_ij = K_ij + Σ_e K_ie A_ej + Σ_e A_ei (K T)_ej,   (K T)_ej = K_ej + Σ_e' K_ee' A_e'j,
-    // for kept i, j (e, e' eliminated): J's rows, plus K_ie A_e on the rows with an
-    // eliminated column (a), plus A_eᵀ (K T)_e on the rows of A_e's columns (b), sent to
-    // their owners. T's rows are touched only on ~the slave dofs: the rest of K̃ is K's.
-    // A's rows (reduced column GIDs) of the eliminated dofs among this rank's columns of J:
-    // handled here, or imported from the rank that handles them.
-    std::unordered_map<GO, std::vector<std::pair<GO, double>>> a_rows;
-    for (const auto& [e, t_row] : t_row_of) {
-      auto& out = a_rows[e];
-      for (const auto& [f, v] : *t_row) out.emplace_back(new_gid(f), v);
-    }
-    const auto& j_cols = *J.getColMap();
-    const LO n_j_cols = LO(j_cols.getNodeNumElements());
-    {
-      std::vector<GO> remote;
-      for (LO c = 0; c < n_j_cols; ++c) {
-        const GO g = j_cols.getGlobalElement(c);
-        if (!row_map.isNodeGlobalElement(g) &&
-            std::binary_search(eliminated.begin(), eliminated.end(), g))
-          remote.push_back(g);
-      }
-      RowTable remote_t_rows;
-      Vector zero(J.getRowMap());
-      import_rows(*m.T, zero, remote, remote_t_rows);
-      for (const auto& [e, r] : remote_t_rows) {
-        auto& out = a_rows[e];
-        for (std::size_t q = 0; q < r.cols.size(); ++q) out.emplace_back(r.cols[q], r.vals[q]);
-      }
-    }
-    const auto is_eliminated = [&](GO g) {
-      return std::binary_search(eliminated.begin(), eliminated.end(), g);
-    };
-    // (b): A_eᵀ (K T)_e of the eliminated dofs handled here, row by row of Aᵀ (Gustavson's
-    // row-wise sparse product, with a dense accumulator over the columns met): the rows this
-    // rank owns go to `received` directly, the others are exported to their owners (summed
-    // there).
-    std::unordered_map<GO, int> slot_of;  // reduced GID -> slot (the columns and rows met)
-    std::vector<GO> slot_gid;
-    const auto slot = [&](GO c) {
-      const auto [it, added] = slot_of.emplace(c, int(slot_gid.size()));
-      if (added) slot_gid.push_back(c);
-      return it->second;
-    };
-    std::vector<double> sum;
-    std::vector<char> met;
-    std::vector<int> touched;
-    const auto add = [&](int s, double v) {
-      if (s >= int(sum.size())) sum.resize(slot_gid.size(), 0.0), met.resize(slot_gid.size(), 0);
-      if (!met[s]) met[s] = 1, touched.push_back(s);
-      sum[s] += v;
-    };
-    std::vector<std::vector<std::pair<int, double>>> kt_rows;  // (K T)_e per handled e
-    std::vector<std::vector<std::pair<int, double>>> at_rows;  // Aᵀ: slot i -> (e, A_ei)
-    for (const auto& [e, t_row] : t_row_of) {
-      const Row& row = m.rows.at(e);
-      for (std::size_t q = 0; q < row.cols.size(); ++q) {
-        const GO f = row.cols[q];
-        if (m.is_lambda(f)) continue;
-        if (const auto it = a_rows.find(f); it != a_rows.end())
-          for (const auto& [c, a] : it->second) add(slot(c), row.vals[q] * a);
-        else
-          add(slot(new_gid(f)), row.vals[q]);
-      }
-      kt_rows.emplace_back();
-      for (int s : touched) kt_rows.back().emplace_back(s, sum[s]), sum[s] = 0.0, met[s] = 0;
-      touched.clear();
-      for (const auto& [i, a] : a_rows.at(e)) {
-        const int s = slot(i);
-        if (s >= int(at_rows.size())) at_rows.resize(slot_gid.size());
-        at_rows[s].emplace_back(int(kt_rows.size()) - 1, a);
-      }
-    }
-    std::unordered_map<GO, std::vector<std::pair<GO, double>>> received;  // owned reduced row ->
-    std::vector<GO> spread_rows;  // rows for other ranks, and their entries
-    std::vector<std::vector<std::pair<GO, double>>> spread;
-    for (int s = 0; s < int(at_rows.size()); ++s) {
-      if (at_rows[s].empty()) continue;
-      for (const auto& [k, a] : at_rows[s])
-        for (const auto& [c, v] : kt_rows[k]) add(c, a * v);
-      std::vector<std::pair<GO, double>> out;
-      out.reserve(touched.size());
-      for (int c : touched) out.emplace_back(slot_gid[c], sum[c]), sum[c] = 0.0, met[c] = 0;
-      touched.clear();
-      if (m.reduced_map->isNodeGlobalElement(slot_gid[s])) {
-        auto& r = received[slot_gid[s]];
-        r.insert(r.end(), out.begin(), out.end());
-      } else {
-        spread_rows.push_back(slot_gid[s]), spread.push_back(std::move(out));
-      }
-    }
-    {
-      std::vector<std::size_t> counts;
-      for (const auto& entries : spread) counts.push_back(entries.size());
-      const auto spread_map =
-          Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
-                               spread_rows.data(), spread_rows.size(), 0, comm));
-      Matrix source(spread_map, Teuchos::ArrayView<const std::size_t>(counts));
-      std::vector<GO> cols;
-      std::vector<double> vals;
-      for (std::size_t r = 0; r < spread.size(); ++r) {
-        cols.clear(), vals.clear();
-        for (const auto& [c, v] : spread[r]) cols.push_back(c), vals.push_back(v);
-        source.insertGlobalValues(spread_rows[r], Teuchos::ArrayView<const GO>(cols),
-                                  Teuchos::ArrayView<const double>(vals));
-      }
-      source.fillComplete(m.reduced_map, m.reduced_map);
-      const Export exporter(spread_map, m.reduced_map);
-      Matrix target(m.reduced_map, 0);
-      target.doExport(source, exporter, Tpetra::ADD);
-      target.fillComplete(m.reduced_map, m.reduced_map);
-      const auto local = target.getLocalMatrixHost();
-      for (LO i = 0; i < LO(m.reduced_map->getNodeNumElements()); ++i) {
-        if (local.graph.row_map(i) == local.graph.row_map(i + 1)) continue;
-        auto& out = received[m.reduced_map->getGlobalElement(i)];
-        for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p)
-          out.emplace_back(target.getColMap()->getGlobalElement(local.graph.entries(p)),
-                           local.values(p));
-      }
-    }
-    // The eliminated rows get K_ee on the diagonal and zeros where K T has entries in row e:
-    // the pattern K̃ would have with e kept (its column e too: MumpsSolver reads a zero above
-    // the diagonal as its mirror). Then K̃'s pattern stays within the union of the Newton
-    // iterations' patterns when a dof is eliminated in some and kept in others, and MUMPS
-    // keeps its analysis (without them, 7 analyses in 7 Newton iterations on the 3D Hertz
-    // spheres instead of 3).
-    std::unordered_map<GO, std::map<GO, double>> extra;  // reduced row -> (column, value)
-    for (const auto& [e, t_row] : t_row_of) {
-      const GO ne = new_gid(e);
-      const Row& row = m.rows.at(e);
-      auto& out = extra[ne];
-      for (std::size_t q = 0; q < row.cols.size(); ++q) {
-        const GO f = row.cols[q];
-        if (m.is_lambda(f)) continue;
-        if (f == e) {
-          out[ne] = row.vals[q] != 0.0 ? row.vals[q] : 1.0;
-        } else if (const auto it = a_rows.find(f); it != a_rows.end()) {
-          for (const auto& [c, v] : it->second) out.emplace(c, 0.0);  // (K T)'s row e
-        } else {
-          out.emplace(new_gid(f), 0.0);
-        }
-      }
-      if (out.count(ne) == 0) out[ne] = 1.0;
-    }
-    // The column map: J's displacement columns (renumbered, in J's order, so that a sorted
-    // row of J stays sorted), then the other columns of (a), (b) and the eliminated rows.
-    std::vector<GO> col_gids;
-    std::vector<LO> j_col_new(n_j_cols, -1);  // J's column -> K̃'s column (kept dofs only)
-    std::unordered_map<GO, LO> col_lid;
-    col_gids.reserve(n_j_cols);
-    col_lid.reserve(std::size_t(n_j_cols) * 2);
-    for (LO c = 0; c < n_j_cols; ++c) {
-      const GO g = j_cols.getGlobalElement(c);
-      if (m.is_lambda(g)) continue;
-      const LO l = LO(col_gids.size());
-      col_gids.push_back(new_gid(g));
-      col_lid.emplace(col_gids.back(), l);
-      if (!is_eliminated(g)) j_col_new[c] = l;
-    }
-    const auto lid_of = [&](GO c) {
-      const auto [it, added] = col_lid.emplace(c, LO(col_gids.size()));
-      if (added) col_gids.push_back(c);
-      return it->second;
-    };
-    const auto local = J.getLocalMatrixHost();
-    const bool sorted = J.getCrsGraph()->isSorted();
-    const LO n = LO(m.reduced_map->getNodeNumElements());
-    std::vector<LO> j_row(n);  // K̃'s row -> J's row
-    for (LO i = 0, r = 0; i < LO(row_map.getNodeNumElements()); ++i)
-      if (!m.is_lambda(row_map.getGlobalElement(i))) j_row[r++] = i;
-    Teuchos::ArrayRCP<std::size_t> ptr(n + 1, 0);
-    std::vector<LO> ind;
-    std::vector<double> val;
-    ind.reserve(local.values.extent(0)), val.reserve(local.values.extent(0));
-    std::vector<std::pair<LO, double>> row_entries;
-    for (LO i = 0; i < n; ++i) {
-      const GO ng = m.reduced_map->getGlobalElement(i);
-      const LO ji = j_row[i];
-      const auto begin = local.graph.row_map(ji), end = local.graph.row_map(ji + 1);
-      row_entries.clear();
-      bool general = !sorted;
-      if (const auto it = extra.find(ng); it != extra.end()) {
-        for (const auto& [c, v] : it->second) row_entries.emplace_back(lid_of(c), v);
-        general = true;
-      } else {
-        for (auto p = begin; p < end; ++p) {
-          const LO c = local.graph.entries(p);
-          if (j_col_new[c] >= 0) {
-            row_entries.emplace_back(j_col_new[c], local.values(p));
-          } else if (local.values(p) != 0.0) {
-            const auto it = a_rows.find(j_cols.getGlobalElement(c));
-            if (it == a_rows.end()) continue;  // a multiplier column
-            for (const auto& [f, a] : it->second)
-              row_entries.emplace_back(lid_of(f), local.values(p) * a);
-            general = true;
-          }
-        }
-        if (const auto it = received.find(ng); it != received.end()) {
-          for (const auto& [c, v] : it->second) row_entries.emplace_back(lid_of(c), v);
-          general = true;
-        }
-      }
-      if (general) {
-        // Sum the repeated columns, then drop the exact zeros (below) as of the product's.
-        std::stable_sort(row_entries.begin(), row_entries.end(),
-                         [](const auto& a, const auto& b) { return a.first < b.first; });
-        std::size_t out = 0;
-        for (std::size_t q = 0; q < row_entries.size(); ++q) {
-          if (out > 0 && row_entries[out - 1].first == row_entries[q].first)
-            row_entries[out - 1].second += row_entries[q].second;
-          else
-            row_entries[out++] = row_entries[q];
-        }
-        row_entries.resize(out);
-      }
-      const bool keep_zeros = extra.count(ng) != 0;  // the eliminated rows' pattern
-      for (const auto& [c, v] : row_entries)
-        if (v != 0.0 || keep_zeros) ind.push_back(c), val.push_back(v);
-      ptr[i + 1] = ind.size();
-    }
-    const auto col_map =
-        Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
-                             col_gids.data(), col_gids.size(), 0, comm));
-    Teuchos::ArrayRCP<LO> ind_rcp(ind.size());
-    Teuchos::ArrayRCP<double> val_rcp(val.size());
-    std::copy(ind.begin(), ind.end(), ind_rcp.begin());
-    std::copy(val.begin(), val.end(), val_rcp.begin());
-    m.A = Teuchos::rcp(new Matrix(m.reduced_map, col_map, ptr, ind_rcp, val_rcp));
-    m.A->fillComplete(m.reduced_map, m.reduced_map);
-  }
+  m.build_reduced_matrix(J, skipped, eliminated, t_row_of);
 
   // 8. b̃ = Tᵀ (b − J w), w = c on the eliminated dofs and λ0 on the multipliers.
   {
