@@ -25,6 +25,7 @@
 #include "nonlinear/condensed_solve.hpp"
 #include "nonlinear/linear_solver.hpp"
 #include "nonlinear/mechanics_problem.hpp"
+#include "unit_tests/two_block_contact_input.hpp"
 
 namespace grout {
 namespace {
@@ -181,50 +182,8 @@ System synthetic_system(bool zero_diagonal_case, double round_off_tie = -1.0) {
   return sys;
 }
 
-// u_component = value (an expression in t) on a node set of the input.
-void add_dirichlet(Input& input, const std::string& set, int component, const std::string& value) {
-  DirichletInput d;
-  d.name = set + "_" + std::to_string(component);
-  d.node_set = set;
-  d.component = component;
-  d.value = Expression(value, "test: " + d.name);
-  input.dirichlet.push_back(d);
-}
-
 // ---------------------------------------------------------------------------------------
-// MechanicsProblem on two blocks: lower bottom fixed, upper top pressed down (and held
-// sideways), left sides on rollers (so one slave node has a prescribed dof).
-
-Input two_block_input(int dim, ContactKind type, double mu) {
-  Input input;
-  input.file = "test.yaml";
-  input.model.dimension = dim;
-  for (const char* block : {"lower", "upper"}) {
-    MaterialInput m;
-    m.name = block;
-    m.block = block;
-    m.youngs_modulus = std::string(block) == "lower" ? 1000.0 : 3000.0;
-    m.poissons_ratio = 0.3;
-    input.materials.push_back(m);
-  }
-  const auto fix = [&](const std::string& set, int component, const std::string& value) {
-    add_dirichlet(input, set, component, value);
-  };
-  for (int c = 0; c < dim; ++c) fix("lower_bottom", c, "0");
-  for (int c = 0; c < dim - 1; ++c) fix("upper_top", c, "0");
-  fix("upper_top", dim - 1, "-0.01*t");
-  fix(dim == 2 ? "lower_left" : "lower_xmin", 0, "0");
-  fix(dim == 2 ? "upper_left" : "upper_xmin", 0, "0");
-  ContactInput c;
-  c.name = "interface";
-  c.slave = "upper_bottom";
-  c.master = "lower_top";
-  c.geometry = ContactGeometry::current;
-  c.type = type;
-  c.friction_coefficient = mu;
-  input.contact.push_back(c);
-  return input;
-}
+// MechanicsProblem on two blocks (two_block_contact_input.hpp).
 
 struct MechanicsCase {
   Mesh mesh;
@@ -242,7 +201,7 @@ void mechanics_system(MechanicsCase& mc, int dim, ContactKind type, double mu, i
   const int k = refine;
   mc.mesh = dim == 2 ? two_block_mesh_2d(3 * k, 2 * k, 4 * k, 2 * k)
                      : two_block_mesh_3d(2 * k, 2 * k, k, 3 * k, 2 * k, k);
-  mc.input = two_block_input(dim, type, mu);
+  mc.input = two_block_input(dim, type, mu, ContactGeometry::current);
   mc.solid = std::make_unique<SolidProblem>(mc.mesh, mc.input, comm);
   mc.problem = std::make_unique<MechanicsProblem>(*mc.solid, mc.mesh, mc.input);
   MechanicsProblem& problem = *mc.problem;
@@ -562,7 +521,7 @@ TEST(CondensedSolve, MechanicsTied3D) {
 void check_tied_patch_with_symmetry_planes(int dim) {
   const auto comm = Tpetra::getDefaultComm();
   const Mesh mesh = dim == 2 ? two_block_mesh_2d(3, 2, 4, 2) : two_block_mesh_3d(2, 2, 1, 3, 2, 1);
-  Input input = two_block_input(dim, ContactKind::tied, 0.0);
+  Input input = two_block_input(dim, ContactKind::tied, 0.0, ContactGeometry::current);
   for (auto& m : input.materials) m.youngs_modulus = 1000.0;
   input.dirichlet.clear();
   const auto fix = [&](const std::string& set, int component, const std::string& value) {

@@ -23,48 +23,10 @@
 #include "nonlinear/mechanics_problem.hpp"
 #include "nonlinear/mumps_solver.hpp"
 #include "nonlinear/symmetric_condensation.hpp"
+#include "unit_tests/two_block_contact_input.hpp"
 
 namespace grout {
 namespace {
-
-void add_dirichlet(Input& input, const std::string& set, int component, const std::string& value) {
-  DirichletInput d;
-  d.name = set + "_" + std::to_string(component);
-  d.node_set = set;
-  d.component = component;
-  d.value = Expression(value, "test: " + d.name);
-  input.dirichlet.push_back(d);
-}
-
-// Two blocks: lower bottom fixed, upper top pressed down (and held sideways), x = 0 sides on
-// rollers (slave nodes with a prescribed dof), as in test_condensed_solve.cpp.
-Input two_block_input(int dim, ContactKind type, double mu, ContactGeometry geometry) {
-  Input input;
-  input.file = "test.yaml";
-  input.model.dimension = dim;
-  for (const char* block : {"lower", "upper"}) {
-    MaterialInput m;
-    m.name = block;
-    m.block = block;
-    m.youngs_modulus = std::string(block) == "lower" ? 1000.0 : 3000.0;
-    m.poissons_ratio = 0.3;
-    input.materials.push_back(m);
-  }
-  for (int c = 0; c < dim; ++c) add_dirichlet(input, "lower_bottom", c, "0");
-  for (int c = 0; c < dim - 1; ++c) add_dirichlet(input, "upper_top", c, "0");
-  add_dirichlet(input, "upper_top", dim - 1, "-0.01*t");
-  add_dirichlet(input, dim == 2 ? "lower_left" : "lower_xmin", 0, "0");
-  add_dirichlet(input, dim == 2 ? "upper_left" : "upper_xmin", 0, "0");
-  ContactInput c;
-  c.name = "interface";
-  c.slave = "upper_bottom";
-  c.master = "lower_top";
-  c.geometry = geometry;
-  c.type = type;
-  c.friction_coefficient = mu;
-  input.contact.push_back(c);
-  return input;
-}
 
 struct Case {
   Mesh mesh;
