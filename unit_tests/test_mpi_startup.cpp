@@ -1,0 +1,105 @@
+// Open MPI start-up settings chosen before MPI_Init (drivers/mpi_startup.hpp): which environment
+// gets the shared-memory transports, and that a value the user set is never replaced. Each test
+// sets the launcher's variables itself and restores the whole environment it touched afterwards
+// (MPI is already initialised here, so the variables only feed the function under test).
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "drivers/mpi_startup.hpp"
+
+namespace grout {
+namespace {
+
+const char* const kVariables[] = {"OMPI_COMM_WORLD_SIZE",
+                                  "OMPI_COMM_WORLD_LOCAL_SIZE",
+                                  "PMIX_RANK",
+                                  "PMI_RANK",
+                                  "PMI_SIZE",
+                                  "OMPI_MCA_pml",
+                                  "OMPI_MCA_btl",
+                                  "OMPI_MCA_ess_singleton_isolated",
+                                  "OMPI_MCA_orte_create_session_dirs"};
+
+// Saves the variables above, clears them, and puts them back at the end of the test.
+class MpiStartup : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    for (const char* name : kVariables) {
+      const char* value = std::getenv(name);
+      saved_[name] = value ? std::optional<std::string>(value) : std::nullopt;
+      unsetenv(name);
+    }
+  }
+  void TearDown() override {
+    for (const auto& [name, value] : saved_) {
+      if (value)
+        setenv(name.c_str(), value->c_str(), 1);
+      else
+        unsetenv(name.c_str());
+    }
+  }
+  static std::string get(const char* name) {
+    const char* value = std::getenv(name);
+    return value ? value : "<unset>";
+  }
+
+ private:
+  std::map<std::string, std::optional<std::string>> saved_;
+};
+
+TEST_F(MpiStartup, SingletonGetsSharedMemoryAndNoDaemon) {
+  prefer_local_mpi_startup();
+  EXPECT_EQ(get("OMPI_MCA_pml"), "ob1");
+  EXPECT_EQ(get("OMPI_MCA_btl"), "self,vader");
+  EXPECT_EQ(get("OMPI_MCA_ess_singleton_isolated"), "1");
+  EXPECT_EQ(get("OMPI_MCA_orte_create_session_dirs"), "0");
+}
+
+TEST_F(MpiStartup, MpirunWithEveryRankHereGetsSharedMemoryOnly) {
+  setenv("OMPI_COMM_WORLD_SIZE", "2", 1);
+  setenv("OMPI_COMM_WORLD_LOCAL_SIZE", "2", 1);
+  prefer_local_mpi_startup();
+  EXPECT_EQ(get("OMPI_MCA_pml"), "ob1");
+  EXPECT_EQ(get("OMPI_MCA_btl"), "self,vader");
+  // The singleton settings would break a launched job: they stay unset.
+  EXPECT_EQ(get("OMPI_MCA_ess_singleton_isolated"), "<unset>");
+  EXPECT_EQ(get("OMPI_MCA_orte_create_session_dirs"), "<unset>");
+}
+
+TEST_F(MpiStartup, RanksOnSeveralMachinesKeepTheNetwork) {
+  setenv("OMPI_COMM_WORLD_SIZE", "4", 1);
+  setenv("OMPI_COMM_WORLD_LOCAL_SIZE", "2", 1);
+  prefer_local_mpi_startup();
+  EXPECT_EQ(get("OMPI_MCA_pml"), "<unset>");
+  EXPECT_EQ(get("OMPI_MCA_btl"), "<unset>");
+}
+
+TEST_F(MpiStartup, OtherLaunchersAreLeftAlone) {
+  setenv("PMIX_RANK", "0", 1);
+  prefer_local_mpi_startup();
+  EXPECT_EQ(get("OMPI_MCA_btl"), "<unset>");
+  EXPECT_EQ(get("OMPI_MCA_ess_singleton_isolated"), "<unset>");
+}
+
+TEST_F(MpiStartup, TheUsersValuesWin) {
+  setenv("OMPI_COMM_WORLD_SIZE", "2", 1);
+  setenv("OMPI_COMM_WORLD_LOCAL_SIZE", "2", 1);
+  setenv("OMPI_MCA_btl", "self,tcp", 1);
+  prefer_local_mpi_startup();
+  EXPECT_EQ(get("OMPI_MCA_btl"), "self,tcp");
+  EXPECT_EQ(get("OMPI_MCA_pml"), "ob1");
+  unsetenv("OMPI_COMM_WORLD_SIZE");
+  unsetenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+  setenv("OMPI_MCA_ess_singleton_isolated", "0", 1);
+  prefer_local_mpi_startup();
+  EXPECT_EQ(get("OMPI_MCA_ess_singleton_isolated"), "0");
+  EXPECT_EQ(get("OMPI_MCA_btl"), "self,tcp");
+}
+
+}  // namespace
+}  // namespace grout
