@@ -28,6 +28,7 @@ struct LinearSolver::Impl {
   bool last_symmetric = false;
   MumpsOptions mumps_options;
   MumpsOptions gathered_options;  // mumps_options for the gathered solves (ordering: amd)
+  bool mumps_given = false;       // a `MUMPS` sublist was given
   // Rank 0's 1-rank communicator for the gathered direct solves (split from `parent` once:
   // MUMPS keeps its analysis per communicator).
   Teuchos::RCP<const Comm> parent, self;
@@ -87,8 +88,19 @@ long long auto_iterative_threshold(int dim) {
   return dim == 3 ? 50000 : 200000;
 }
 
+// 2D below 2 000 unknowns: KLU2, gathered like the MUMPS solve (the same answer on any number
+// of ranks). On such systems MUMPS's fixed costs (its analysis, scaling and redistribution)
+// outweigh its supernodes: 2D Hertz level 1 (1 313 unknowns, 2 solves) took 5 ms less CPU
+// with KLU2, level 2 (4 903) the same, level 3 (19.5 k) 1.5x more; stacked blocks 1 100 unknowns
+// KLU2 ahead, 2 500 even (docs/performance.md, "2D level 1 whole process (start9)").
+long long auto_small_direct_threshold(int dim) {
+  return dim == 2 ? 2000 : 0;
+}
+
 std::string auto_linear_solver_type(long long global_unknowns, int dim) {
-  return global_unknowns >= auto_iterative_threshold(dim) ? "belos" : default_direct_type(dim);
+  if (global_unknowns >= auto_iterative_threshold(dim)) return "belos";
+  if (global_unknowns < auto_small_direct_threshold(dim)) return "amesos2";
+  return default_direct_type(dim);
 }
 
 LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::string& where)
@@ -102,6 +114,7 @@ LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::stri
   const Teuchos::ParameterList mumps =
       params.isSublist("MUMPS") ? params.sublist("MUMPS") : Teuchos::ParameterList();
   impl_->mumps_options = mumps_options_from(mumps, where + "/MUMPS");
+  impl_->mumps_given = params.isSublist("MUMPS");
   // The gathered solve orders with AMD unless told otherwise: on 2D Hertz (19 k and 75 k
   // unknowns) SCOTCH's nested dissection cost more in its analyses than it saved in the
   // factorisations (docs/performance.md, "2D speed and the demo on 2 ranks (demo9)").
@@ -193,9 +206,12 @@ bool LinearSolver::last_solve_symmetric() const {
 int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: linear solve"));
   const int dim = impl_->dim > 0 ? impl_->dim : 2;  // 2 when set_coordinates was never called
-  const std::string type = impl_->type != "auto"
-                               ? impl_->type
-                               : auto_linear_solver_type((long long)K->getGlobalNumRows(), dim);
+  std::string type = impl_->type != "auto"
+                         ? impl_->type
+                         : auto_linear_solver_type((long long)K->getGlobalNumRows(), dim);
+  // A `MUMPS` sublist asks for MUMPS: auto then keeps it for the smallest 2D systems too.
+  if (impl_->type == "auto" && type == "amesos2" && impl_->mumps_given)
+    type = default_direct_type(dim);
   impl_->last_type = type;
   impl_->last_symmetric = false;
   if (!impl_->condenses(type) || impl_->pairing.empty())

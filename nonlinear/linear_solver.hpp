@@ -4,7 +4,8 @@
 //                            MUMPS on the system gathered to rank 0, "mumps_gathered") for a
 //                            system of fewer than auto_iterative_threshold(dim) global
 //                            unknowns, otherwise the iterative path (type: belos with its
-//                            defaults).
+//                            defaults); in 2D below auto_small_direct_threshold(2) unknowns
+//                            the gathered KLU2 (amesos2), cheaper there.
 //   type: mumps              sparse direct MUMPS solve on the distributed matrix
 //                            (nonlinear/mumps_solver.hpp; `MUMPS` sublist: ordering,
 //                            symmetric, gather). With `gather: true` (what auto does in 2D) the
@@ -56,6 +57,9 @@ namespace grout {
 std::string default_direct_type(int dim);
 /// `type: auto` uses the iterative path from this many global unknowns (u and λ) on.
 long long auto_iterative_threshold(int dim);
+/// `type: auto` uses the gathered KLU2 (amesos2) below this many global unknowns (2000 in 2D,
+/// 0 in 3D: never).
+long long auto_small_direct_threshold(int dim);
 /// The type `type: auto` resolves to for a system of `global_unknowns` in `dim` dimensions.
 std::string auto_linear_solver_type(long long global_unknowns, int dim);
 

@@ -105,24 +105,43 @@ TEST(LinearSolver, BelosGmresWithMueLuConverges) {
   check_solver(params);
 }
 
-// type: auto (the default) resolves through one threshold per dimension: the direct solver
-// below it, the iterative path from it on; the solve reports the type it used.
+// type: auto (the default) resolves through the thresholds of each dimension: in 2D the
+// gathered KLU2 for the smallest systems, the direct solver up to the iterative threshold,
+// the iterative path from it on; the solve reports the type it used.
 TEST(LinearSolver, AutoPicksTheDirectSolverForSmallSystems) {
   for (int dim : {2, 3}) {
     const long long n = auto_iterative_threshold(dim);
     EXPECT_EQ(auto_linear_solver_type(n - 1, dim), default_direct_type(dim));
     EXPECT_EQ(auto_linear_solver_type(n, dim), "belos");
   }
+  const long long small = auto_small_direct_threshold(2);
+  EXPECT_EQ(small, 2000);
+  EXPECT_EQ(auto_linear_solver_type(small - 1, 2), "amesos2");
+  EXPECT_EQ(auto_linear_solver_type(small, 2), "mumps_gathered");
+  EXPECT_EQ(auto_small_direct_threshold(3), 0);
+  EXPECT_EQ(auto_linear_solver_type(1, 3), "mumps");
   EXPECT_GT(auto_iterative_threshold(2), auto_iterative_threshold(3));
   EXPECT_EQ(default_direct_type(3), "mumps");
   EXPECT_EQ(default_direct_type(2), "mumps_gathered");
-  LinearSolver solver(Teuchos::ParameterList(), "test");
+  // No coordinates given: 2D. Both sides of the small-system threshold, solved.
+  for (const int n : {200, int(small)}) {
+    LinearSolver solver(Teuchos::ParameterList(), "test");
+    const auto A = tridiagonal(n);
+    Vector b(A->getRowMap()), x(A->getRowMap());
+    b.randomize();
+    EXPECT_EQ(solver.solve(A, b, x), 1);
+    EXPECT_EQ(solver.last_type(), n < small ? "amesos2" : "mumps_gathered") << n;
+    EXPECT_LT(relative_residual(*A, x, b), 1e-10) << n;
+  }
+  // A MUMPS sublist asks for MUMPS: kept below the small-system threshold.
+  Teuchos::ParameterList with_mumps;
+  with_mumps.sublist("MUMPS").set("ordering", "amd");
+  LinearSolver solver(with_mumps, "test");
   const auto A = tridiagonal(200);
   Vector b(A->getRowMap()), x(A->getRowMap());
   b.randomize();
-  EXPECT_EQ(solver.solve(A, b, x), 1);
-  EXPECT_EQ(solver.last_type(), default_direct_type(2));  // no coordinates given: 2D
-  EXPECT_LT(relative_residual(*A, x, b), 1e-10);
+  solver.solve(A, b, x);
+  EXPECT_EQ(solver.last_type(), "mumps_gathered");
 }
 
 TEST(LinearSolver, GatheredMumpsIsCorrectOnAnyRankCount) {
@@ -169,7 +188,12 @@ TEST(LinearSolver, GatheredMumpsIsTheSameBitForBitOnAnyRankCount) {
 TEST(LinearSolver, GatheredSingularSystemThrowsOnEveryRank) {
   for (const char* type : {"mumps_gathered", "amesos2"}) {
     Teuchos::ParameterList params;
-    if (std::string(type) == "amesos2") params.set("type", "amesos2");
+    if (std::string(type) == "amesos2") {
+      params.set("type", "amesos2");
+    } else {
+      params.set("type", "mumps");
+      params.sublist("MUMPS").set("gather", true);
+    }
     LinearSolver solver(params, "test");
     const auto A = grid(20, Tpetra::getDefaultComm(), true);
     Vector b(A->getRowMap()), x(A->getRowMap());

@@ -23,7 +23,15 @@ const char* const kVariables[] = {"OMPI_COMM_WORLD_SIZE",
                                   "OMPI_MCA_pml",
                                   "OMPI_MCA_btl",
                                   "OMPI_MCA_ess_singleton_isolated",
-                                  "OMPI_MCA_orte_create_session_dirs"};
+                                  "OMPI_MCA_orte_create_session_dirs",
+                                  "OMPI_MCA_coll",
+                                  "OMPI_MCA_state",
+                                  "OMPI_MCA_errmgr",
+                                  "OMPI_MCA_schizo",
+                                  "OMPI_MCA_reachable",
+                                  "OMPI_MCA_shmem",
+                                  "HWLOC_COMPONENTS",
+                                  "HWLOC_PLUGINS_BLACKLIST"};
 
 // Saves the variables above, clears them, and puts them back at the end of the test.
 class MpiStartup : public ::testing::Test {
@@ -60,6 +68,18 @@ TEST_F(MpiStartup, SingletonGetsSharedMemoryAndNoDaemon) {
   EXPECT_EQ(get("OMPI_MCA_orte_create_session_dirs"), "0");
 }
 
+TEST_F(MpiStartup, SingletonOpensOnlyTheComponentsItUses) {
+  prefer_local_mpi_startup();
+  EXPECT_EQ(get("OMPI_MCA_coll"), "self,basic,libnbc");
+  EXPECT_EQ(get("OMPI_MCA_state"), "app");
+  EXPECT_EQ(get("OMPI_MCA_errmgr"), "default_app");
+  EXPECT_EQ(get("OMPI_MCA_schizo"), "orte");
+  EXPECT_EQ(get("OMPI_MCA_reachable"), "netlink");
+  EXPECT_EQ(get("OMPI_MCA_shmem"), "mmap");
+  EXPECT_EQ(get("HWLOC_COMPONENTS"), "-linuxio");
+  EXPECT_NE(get("HWLOC_PLUGINS_BLACKLIST").find("hwloc_pci"), std::string::npos);
+}
+
 TEST_F(MpiStartup, MpirunWithEveryRankHereGetsSharedMemoryOnly) {
   setenv("OMPI_COMM_WORLD_SIZE", "2", 1);
   setenv("OMPI_COMM_WORLD_LOCAL_SIZE", "2", 1);
@@ -69,6 +89,10 @@ TEST_F(MpiStartup, MpirunWithEveryRankHereGetsSharedMemoryOnly) {
   // The singleton settings would break a launched job: they stay unset.
   EXPECT_EQ(get("OMPI_MCA_ess_singleton_isolated"), "<unset>");
   EXPECT_EQ(get("OMPI_MCA_orte_create_session_dirs"), "<unset>");
+  // A launched rank's components are mpirun's business (state, errmgr differ there).
+  for (const char* name : {"OMPI_MCA_coll", "OMPI_MCA_state", "OMPI_MCA_errmgr", "OMPI_MCA_schizo",
+                           "HWLOC_COMPONENTS", "HWLOC_PLUGINS_BLACKLIST"})
+    EXPECT_EQ(get(name), "<unset>") << name;
 }
 
 TEST_F(MpiStartup, RanksOnSeveralMachinesKeepTheNetwork) {
@@ -96,9 +120,13 @@ TEST_F(MpiStartup, TheUsersValuesWin) {
   unsetenv("OMPI_COMM_WORLD_SIZE");
   unsetenv("OMPI_COMM_WORLD_LOCAL_SIZE");
   setenv("OMPI_MCA_ess_singleton_isolated", "0", 1);
+  setenv("OMPI_MCA_coll", "tuned,self", 1);
+  setenv("HWLOC_COMPONENTS", "linux", 1);
   prefer_local_mpi_startup();
   EXPECT_EQ(get("OMPI_MCA_ess_singleton_isolated"), "0");
   EXPECT_EQ(get("OMPI_MCA_btl"), "self,tcp");
+  EXPECT_EQ(get("OMPI_MCA_coll"), "tuned,self");
+  EXPECT_EQ(get("HWLOC_COMPONENTS"), "linux");
 }
 
 }  // namespace
