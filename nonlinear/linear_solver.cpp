@@ -90,9 +90,10 @@ long long auto_iterative_threshold(int dim) {
 
 // 2D below 2 000 unknowns: KLU2, gathered like the MUMPS solve (the same answer on any number
 // of ranks). On such systems MUMPS's fixed costs (its analysis, scaling and redistribution)
-// outweigh its supernodes: 2D Hertz level 1 (1 313 unknowns, 2 solves) took 5 ms less CPU
-// with KLU2, level 2 (4 903) the same, level 3 (19.5 k) 1.5x more; stacked blocks 1 100 unknowns
-// KLU2 ahead, 2 500 even (docs/performance.md, "2D level 1 whole process (start9)").
+// outweigh its supernodes: 2D Hertz level 1 (~1.3 k unknowns, 2 solves) took 5 ms less CPU
+// with KLU2, level 2 (~4.9 k) the same, level 3 (~19.5 k) 1.4x more; stacked blocks: KLU2
+// ahead at ~1.3 k unknowns, even at ~2.7 k (docs/performance.md, "2D level 1 whole process
+// (start9)").
 long long auto_small_direct_threshold(int dim) {
   return dim == 2 ? 2000 : 0;
 }
