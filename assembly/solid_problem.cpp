@@ -354,6 +354,12 @@ bool SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
   return !any_collapsed;
 }
 
+bool SolidProblem::tangent_is_constant() const {
+  for (const auto& block : blocks_)
+    if (block.finite_strain) return false;
+  return true;
+}
+
 double SolidProblem::round_off_estimate() const {
   double sum = 0.0;
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, round_off2_, Teuchos::outArg(sum));

@@ -66,6 +66,10 @@ class SolidProblem {
   /// Returns false (on this rank) if u collapses an element (det F <= 0, finite strain):
   /// the iterate is inadmissible and the caller backs off.
   bool assemble(const Vector& u, Vector& f_int, Matrix* K) const;
+  /// True when K does not depend on u: every block is small strain (linear elasticity,
+  /// K = ∫ Bᵀ C B dV). A caller may then assemble K once and pass K = nullptr afterwards;
+  /// f_int is computed by the same element loop either way, so it is the same bit for bit.
+  bool tangent_is_constant() const;
   /// Round-off estimate of ‖f_int‖₂ from the last assemble() with a tangent under strain:
   /// finite (sqrt of Σ_rows (ε Σ_k |K_rk u_k|)²), 0 under small strain. Collective.
   double round_off_estimate() const;

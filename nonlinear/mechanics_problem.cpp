@@ -14,6 +14,7 @@
 #include "io/errors.hpp"
 #include "nonlinear/dirichlet.hpp"
 #include "nonlinear/first_update_closures.hpp"
+#include "nonlinear/jacobian_matrix.hpp"
 
 namespace grout {
 
@@ -248,11 +249,16 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
   displacement(x, *u_);
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: solid assembly"));
+    // Under small strain K_solid is assembled once: later residuals compute f_int alone
+    // (the same element loop, so the same f_int bit for bit) and jacobian() reuses K_solid.
+    // On the 2D Hertz level-3 case the tangent was 0.4 G of 3.6 G instructions of the run.
+    Matrix* const K = K_solid_constant_ ? nullptr : K_solid_.get();
     // A collapsed element (finite strain) on any rank: every rank backs off together.
-    const int ok_here = solid_.assemble(*u_, *f_int_, K_solid_.get()) ? 1 : 0;
+    const int ok_here = solid_.assemble(*u_, *f_int_, K) ? 1 : 0;
     int ok_all = 0;
     Teuchos::reduceAll(*solid_.comm(), Teuchos::REDUCE_MIN, ok_here, Teuchos::outArg(ok_all));
     if (!ok_all) return false;
+    if (K) K_solid_constant_ = solid_.tangent_is_constant();
   }
   {
     auto Fv = F.getLocalViewHost(Tpetra::Access::OverwriteAll);
@@ -822,12 +828,7 @@ bool MechanicsProblem::jacobian(const Vector&, Teuchos::RCP<Matrix>& J) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: jacobian (u, lambda)"));
   // Contact triplets: this rank's rows, then those other ranks computed for its rows (master
   // rows), in rank order.
-  struct Entry {
-    GO row, col;
-    long long key;
-    double value;
-  };
-  std::vector<Entry> entries;
+  std::vector<JacobianTerm> entries;
   if (!interfaces_.empty()) {
     const int n_ranks = map_->getComm()->getSize();
     std::vector<std::vector<long long>> send_ids(n_ranks);
@@ -847,42 +848,11 @@ bool MechanicsProblem::jacobian(const Vector&, Teuchos::RCP<Matrix>& J) {
     for (std::size_t e = 0; e < received.size(); ++e)
       entries.push_back({ids[3 * e], ids[3 * e + 1], ids[3 * e + 2], received[e]});
     // Each row's entries in (slave node, emission) order: duplicates add up in one order.
-    std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    std::sort(entries.begin(), entries.end(), [](const JacobianTerm& a, const JacobianTerm& b) {
       return a.row < b.row || (a.row == b.row && a.key < b.key);
     });
   }
-
-  const LO n_rows = LO(map_->getNodeNumElements());
-  std::vector<std::size_t> counts(n_rows, 0);
-  const auto& K_row_map = *K_solid_->getRowMap();
-  for (LO i = 0; i < num_owned_u_; ++i) counts[i] = K_solid_->getNumEntriesInLocalRow(i);
-  for (const Entry& e : entries) ++counts[map_->getLocalElement(e.row)];
-  for (LO i = num_owned_u_; i < n_rows; ++i) ++counts[i];  // the λ diagonal below
-  J = Teuchos::rcp(new Matrix(map_, Teuchos::ArrayView<const std::size_t>(counts)));
-
-  const auto& col_map = *K_solid_->getColMap();
-  const auto local = K_solid_->getLocalMatrixHost();
-  std::vector<GO> row_cols;
-  std::vector<double> row_vals;
-  for (LO i = 0; i < num_owned_u_; ++i) {
-    row_cols.clear(), row_vals.clear();
-    for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p) {
-      row_cols.push_back(col_map.getGlobalElement(local.graph.entries(p)));
-      row_vals.push_back(local.values(p));
-    }
-    J->insertGlobalValues(K_row_map.getGlobalElement(i), Teuchos::ArrayView<const GO>(row_cols),
-                          Teuchos::ArrayView<const double>(row_vals));
-  }
-  for (const Entry& e : entries)
-    J->insertGlobalValues(e.row, Teuchos::ArrayView<const GO>(&e.col, 1),
-                          Teuchos::ArrayView<const double>(&e.value, 1));
-  for (LO i = num_owned_u_; i < n_rows; ++i) {  // keep a diagonal entry in every λ row
-    const GO g = map_->getGlobalElement(i);
-    const double zero = 0.0;
-    J->insertGlobalValues(g, Teuchos::ArrayView<const GO>(&g, 1),
-                          Teuchos::ArrayView<const double>(&zero, 1));
-  }
-  J->fillComplete(map_, map_);
+  J = jacobian_matrix(*K_solid_, map_, entries);
 
   // Prescribed dofs: rows and columns eliminated, diagonal kept (their update is zero).
   const auto& jc = *J->getColMap();

@@ -143,6 +143,7 @@ class MechanicsProblem : public NonlinearProblem {
   long long entry_seq_ = 0;         ///< entries emitted for it so far
   Teuchos::RCP<Vector> u_, f_int_, f_ext_, reaction_;
   Teuchos::RCP<Matrix> K_solid_;
+  bool K_solid_constant_ = false;   ///< K_solid_ assembled and independent of u (small strain)
   std::vector<double> prescribed_;  ///< per global u dof, NaN where free
   std::vector<GO> entry_rows_, entry_cols_;
   std::vector<long long> entry_keys_;  ///< tag · 2^24 + emission index: the insertion order
