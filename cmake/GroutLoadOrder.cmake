@@ -20,6 +20,8 @@
 # template instantiations, type info) move to another, identical copy. ctest
 # driver_load_order checks both on the built driver. A library that is not installed is left
 # out (the BLAS group only as a whole); -DGROUT_LOAD_ORDER=OFF turns the reordering off.
+# Amesos2 is not listed: the driver calls KLU2 from its headers (nonlinear/klu_solve.hpp) and
+# links no Amesos2.
 option(GROUT_LOAD_ORDER "Name the busiest shared libraries first in the driver's DT_NEEDED" ON)
 
 set(GROUT_BUSIEST_LIBRARIES
@@ -28,10 +30,9 @@ set(GROUT_BUSIEST_LIBRARIES
   # by the number of start-up look-ups that end in them (LD_DEBUG=bindings, 2D Hertz level 1)
   libtrilinos_teuchosparameterlist.so.13.2 libtrilinos_tpetra.so.13.2 libcrypto.so.3
   libstdc++.so.6 libtrilinos_thyracore.so.13.2 libtrilinos_kokkoskernels.so.13.2
-  libtrilinos_nox.so.13.2 libtrilinos_amesos2.so.13.2 libtrilinos_epetra.so.13.2
+  libtrilinos_nox.so.13.2 libtrilinos_epetra.so.13.2
   libnetcdf_mpi.so.19 libtrilinos_teuchoscomm.so.13.2 libopen-pal.so.40 libgnutls.so.30
-  libopen-rte.so.40 libnettle.so.8 libtrilinos_teuchoscore.so.13.2
-  CACHE STRING "Shared libraries (file names) the driver names first in its DT_NEEDED")
+  libopen-rte.so.40 libnettle.so.8 libtrilinos_teuchoscore.so.13.2)
 set(grout_blas_group libscalapack-openmpi.so.2.2 liblapack.so.3 libblas.so.3 libopenblas.so.0)
 
 function(grout_load_busiest_libraries_first target)

@@ -1,7 +1,6 @@
 #include "nonlinear/linear_solver.hpp"
 
 #include <mpi.h>
-#include <Amesos2.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <algorithm>
@@ -11,6 +10,7 @@
 #include "nonlinear/condensed_solve.hpp"
 #include "nonlinear/gathered_solve.hpp"
 #include "nonlinear/iterative_module.hpp"
+#include "nonlinear/klu_solve.hpp"
 #include "nonlinear/mumps_solver.hpp"
 #include "nonlinear/symmetric_condensation.hpp"
 
@@ -271,11 +271,7 @@ int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector
   if (type == "amesos2") {
     solve_gathered(K, b, x, impl_->self_communicator(K->getRowMap()->getComm()),
                    [](const Teuchos::RCP<Matrix>& K_self, Vector& b_self, Vector& x_self) {
-                     Amesos2::create<Matrix, MultiVector>(
-                         "KLU2", K_self, Teuchos::rcpFromRef(x_self), Teuchos::rcpFromRef(b_self))
-                         ->symbolicFactorization()
-                         .numericFactorization()
-                         .solve();
+                     klu_solve(*K_self, b_self, x_self);
                    });
     return 1;
   }

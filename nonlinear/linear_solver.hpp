@@ -14,7 +14,9 @@
 //   type: amesos2            direct KLU2 solve. Debian's KLU2 is silently wrong on a
 //                            communicator of more than one rank (TOOLCHAIN.md), so the
 //                            system is gathered to rank 0 and solved on a 1-rank
-//                            communicator, then scattered back.
+//                            communicator, then scattered back. KLU2 is called from its
+//                            headers as Amesos2 calls it there (nonlinear/klu_solve.hpp):
+//                            the same bits, without loading Amesos2.
 //   type: belos              Krylov solver `Belos/Solver Type` with a MueLu preconditioner.
 //                            Defaults: the multipliers are condensed (below), CG on a system
 //                            without multipliers (symmetric positive definite), GMRES on the
