@@ -25,7 +25,8 @@ ring_contact, ring_ends, node set ring_bottom), read with netCDF4:
   that does not converge is halved, up to 6 times);
 - output: --csv, one row per step: imposed d, the centre's (ring_bottom, the lowest outer node)
   vertical displacement, the ring-end reaction (N per m of thickness: the y internal force of
-  the ring on the end nodes), Newton iterations;
+  the ring on the end nodes), Newton iterations, and the vertical displacement of the ring's
+  lowest inner node (ring_bottom_inner; a diagnostic);
 - --ring-check: after the first step, the ring's own deflection d - delta_c against
   Castigliano's clamped composite half ring (arch_theory.py, k_ring = 1.566e8 N/m per m) with
   the computed end force, as check.py --ring does for Grout; prints the ratio.
@@ -132,7 +133,8 @@ def main():
     ap.add_argument("--r", type=float, default=None, help="augmentation parameter (Pa/m)")
     ap.add_argument("--release", type=float, default=0.005, help="release distance (m)")
     ap.add_argument("--slave", default="base", choices=("base", "ring"))
-    ap.add_argument("--e-base", type=float, default=E["base"], help="diagnostic only")
+    ap.add_argument("--moduli", type=float, nargs=3, metavar=("BASE", "INNER", "OUTER"),
+                    help="Young's moduli in place of the input's (diagnostics only)")
     ap.add_argument("--csv", default="")
     ap.add_argument("--ring-check", action="store_true")
     ap.add_argument("--max-res", type=float, default=1e-4,
@@ -147,7 +149,8 @@ def main():
               "python3-getfem); nothing to compare")
         return 77
     t0 = time.process_time()
-    E["base"] = a.e_base
+    if a.moduli:
+        E.update(zip(("base", "ring_inner", "ring_outer"), a.moduli))
     x, blocks, nsets, ssets, conn_all = read_exodus(a.mesh)
     for need in ("base", "ring_inner", "ring_outer"):
         if need not in blocks:
@@ -229,14 +232,19 @@ def main():
                                                                  "lam_c")
     md.add_master_contact_boundary_to_large_sliding_contact_brick(ind, ms_mim, ms_reg, ms_var)
 
-    # The centre's y dof and the ring-end y dofs (for the reaction).
+    # The centre's y dof (and the inner bottom node's, when the mesh names it), the ring-end
+    # y dofs (for the reaction). A vector MeshFem interleaves the components (x, y per node).
     pts_r = mfr.basic_dof_nodes()
-    cx = x[nsets["ring_bottom"][0]]
-    cy_dof = [i for i in range(mfr.nbdof()) if i % 2 == 1
-              and np.hypot(*(pts_r[:, i] - cx)) < 1e-9]
-    if len(cy_dof) != 1:
-        raise SystemExit("centre dof not found")
-    cy_dof = cy_dof[0]
+
+    def y_dof(node_set):
+        p = x[nsets[node_set][0]]
+        dofs = [i for i in range(1, mfr.nbdof(), 2) if np.hypot(*(pts_r[:, i] - p)) < 1e-9]
+        if len(dofs) != 1:
+            raise SystemExit("%s: no ring dof at node set %s" % (a.mesh, node_set))
+        return dofs[0]
+
+    cy_dof = y_dof("ring_bottom")
+    iy_dof = y_dof("ring_bottom_inner") if "ring_bottom_inner" in nsets else cy_dof
     end_dofs = mfr.basic_dof_on_region(ENDS)
     end_y = end_dofs[end_dofs % 2 == 1]
 
@@ -281,7 +289,7 @@ def main():
                     return 1
         u = md.variable("ur")
         fy = end_force()
-        rows.append((d_target, u[cy_dof], fy, total_it))
+        rows.append((d_target, u[cy_dof], fy, total_it, u[iy_dof]))
         print("step %3d  d = %.5f  u_centre = %+.6f  end force %+.4e N/m  newton %d%s"
               % (step, d_target, u[cy_dof], fy, total_it, "  (%d cut-backs)" % cuts if cuts
                  else ""), flush=True)
@@ -330,9 +338,9 @@ def write(path, rows):
         return
     with open(path, "w") as f:
         f.write("imposed_displacement[m],center_vertical_displacement[m],end_force_y[N/m],"
-                "newton\n")
-        for d, u, fy, it in rows:
-            f.write("%.8g,%.10g,%.8g,%d\n" % (d, u, fy, it))
+                "newton,inner_bottom_vertical_displacement[m]\n")
+        for d, u, fy, it, ui in rows:
+            f.write("%.8g,%.10g,%.8g,%d,%.10g\n" % (d, u, fy, it, ui))
     print("wrote %s" % path)
 
 
