@@ -7,11 +7,11 @@ Usage:
       runs getfem_double_arch.py on double_arch.exo to d = 0.024 in 8 steps (the steps of
       double_arch_ci.yaml) and compares with np1/ and np2/double_arch_ci.e. Exit 77 (ctest:
       skipped) when python3-getfem is missing.
-  getfem_compare.py --getfem CSV[:LABEL] ... [--grout STEM] [--plot PNG]
-      The full path: one or more GetFEM CSVs against Grout's run (np1/STEM.e, e.g.
-      build/inputs/double_arch/full/np1/double_arch.e from run_full.sh), the literature curve
-      (frictionless_reference_center_displacement.csv) and Kratos' 2017 solution; prints the
-      numbers and writes PNG.
+  getfem_compare.py --grout STEM[:LABEL] ... --getfem CSV[:LABEL[:STEM]] ... [--plot PNG]
+      The full path (run_getfem.sh): GetFEM CSVs and Grout runs (np1/STEM.e) against the
+      literature curve (frictionless_reference_center_displacement.csv) and Kratos' 2017
+      solution; a GetFEM curve naming a Grout STEM (the run on the same mesh) is also compared
+      with it. Prints the numbers, writes PNG (a curve labelled "diagnostic" is dotted).
 
 Numbers (u = the centre's vertical displacement, ring_bottom; d = the imposed displacement):
 - GetFEM vs Grout: max and rms of |u_G(d) - u_g(d)| over Grout's steps (GetFEM interpolated
@@ -140,31 +140,37 @@ def full(a):
     d_ref, u_ref = reference("frictionless_reference_center_displacement.csv")
     d_k, u_k = reference("frictionless_kratos2017_center_displacement.csv")
     scale = np.abs(u_ref).max()
+    grouts = {}
+    for spec in a.grout:
+        stem, _, label = spec.partition(":")
+        grouts[stem] = ("Grout " + (label or stem),) + grout_curve("np1/%s.e" % stem)
     curves = []
     for spec in a.getfem:
-        path, _, label = spec.partition(":")
-        curves.append(("GetFEM " + (label or os.path.basename(path)),) + getfem_curve(path))
-    grout = None
-    if a.grout:
-        grout = ("Grout " + a.grout,) + grout_curve("np1/%s.e" % a.grout)
-    print("%-32s %9s %8s %9s %9s %9s" % ("curve", "dip (mm)", "at d", "snap d", "lit. max",
+        path, label, stem = (spec.split(":") + ["", ""])[:3]
+        if stem and stem not in grouts:
+            raise SystemExit("--getfem %s: no --grout %s" % (spec, stem))
+        curves.append(("GetFEM " + (label or os.path.basename(path)),) + getfem_curve(path)
+                      + (stem,))
+    print("%-40s %9s %8s %8s %9s %9s" % ("curve", "dip (mm)", "at d", "snap d", "lit. max",
                                          "lit. rms"))
     for name, d, u in [("literature", d_ref, u_ref), ("Kratos 2017", d_k, u_k)] + \
-            [(c[0], c[1], c[2]) for c in curves + ([grout] if grout else [])]:
+            [(c[0], c[1], c[2]) for c in list(grouts.values()) + curves]:
         dip, at, snap = dip_and_snap(d, u)
         emax, erms, n = against_reference(d, u, d_ref, u_ref)
-        print("%-32s %9.3f %8.4f %9.4f %8.1f%% %8.1f%%" % (name, 1e3 * dip, at, snap, 100 * emax,
+        print("%-40s %9.3f %8.4f %8.4f %8.1f%% %8.1f%%" % (name, 1e3 * dip, at, snap, 100 * emax,
                                                         100 * erms))
-    if grout:
-        for c in curves:
-            du, dd = difference(c[1], c[2], grout[1], grout[2])
-            df, _ = difference(c[1], c[3], grout[1], grout[3])
-            k = int(np.argmax(du))
-            print("%s vs Grout over %d steps: centre max %.3f mm (%.2f %% of max|u_ref|, at d = "
-                  "%.4f), rms %.3f mm (%.2f %%); end force max %.2f %% of max|F|"
-                  % (c[0], len(dd) - 1, 1e3 * du.max(), 100 * du.max() / scale, dd[k],
-                     1e3 * np.sqrt((du ** 2).mean()), 100 * np.sqrt((du ** 2).mean()) / scale,
-                     100 * df.max() / np.abs(grout[3]).max()))
+    for c in curves:
+        if not c[4]:
+            continue
+        g = grouts[c[4]]
+        du, dd = difference(c[1], c[2], g[1], g[2])
+        df, _ = difference(c[1], c[3], g[1], g[3])
+        k = int(np.argmax(du))
+        print("%s vs %s over %d steps: centre max %.3f mm (%.2f %% of max|u_ref|, at d = %.4f), "
+              "rms %.3f mm (%.2f %%); end force max %.2f %% of max|F|"
+              % (c[0], g[0], len(dd) - 1, 1e3 * du.max(), 100 * du.max() / scale, dd[k],
+                 1e3 * np.sqrt((du ** 2).mean()), 100 * np.sqrt((du ** 2).mean()) / scale,
+                 100 * df.max() / np.abs(g[3]).max()))
     if a.plot:
         import matplotlib
         matplotlib.use("Agg")
@@ -173,15 +179,14 @@ def full(a):
         ax.plot(d_ref, u_ref, "o", mfc="none", color="k", label="literature (Drouet 2015; "
                 "Poulios & Renard 2015)")
         ax.plot(d_k, u_k, "--", color="gray", lw=1, label="Kratos 2017 (3D hexa)")
-        if grout:
-            ax.plot(grout[1], grout[2], "-", color="C3", lw=2.5, alpha=0.6,
-                    label="Grout, plane strain, QUAD4 (%d steps)" % (len(grout[1]) - 1))
+        for i, g in enumerate(grouts.values()):
+            ax.plot(g[1], g[2], "-", color="C%d" % (3 + i), lw=3, alpha=0.45, label=g[0])
         for i, c in enumerate(curves):
-            ax.plot(c[1], c[2], "-", color="C%d" % (i if i < 3 else i + 1), lw=1,
-                    label=c[0])
+            ax.plot(c[1], c[2], ":" if "diagnostic" in c[0] else "-",
+                    color="C%d" % ([0, 1, 2, 5, 6, 7][i % 6]), lw=1.2, label=c[0])
         ax.set_xlabel("imposed displacement d (m)")
         ax.set_ylabel("vertical displacement of the centre (m)")
-        ax.set_title("Double arc, frictionless: GetFEM, Grout, literature")
+        ax.set_title("Double arc, frictionless, plane strain: GetFEM, Grout, literature")
         ax.legend(fontsize=7)
         ax.grid(alpha=0.3)
         fig.tight_layout()
@@ -195,7 +200,7 @@ def main():
     ap.add_argument("--ci", action="store_true")
     ap.add_argument("--tol", type=float, default=0.01)
     ap.add_argument("--getfem", nargs="*", default=[])
-    ap.add_argument("--grout")
+    ap.add_argument("--grout", nargs="*", default=[])
     ap.add_argument("--plot")
     a = ap.parse_args()
     return ci(a) if a.ci else full(a)
