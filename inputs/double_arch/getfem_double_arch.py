@@ -135,6 +135,8 @@ def main():
     ap.add_argument("--slave", default="base", choices=("base", "ring"))
     ap.add_argument("--moduli", type=float, nargs=3, metavar=("BASE", "INNER", "OUTER"),
                     help="Young's moduli in place of the input's (diagnostics only)")
+    ap.add_argument("--base-support", default="clamped", choices=("clamped", "roller"),
+                    help="roller: the base bottom slides in x (diagnostic only)")
     ap.add_argument("--csv", default="")
     ap.add_argument("--ring-check", action="store_true")
     ap.add_argument("--max-res", type=float, default=1e-4,
@@ -210,7 +212,15 @@ def main():
         md.add_nonlinear_term(mim, piola(u, sfx) + ":Grad_Test_" + u)
 
     md.add_initialized_data("zero", [0.0, 0.0])
-    md.add_Dirichlet_condition_with_simplification("ub", BOTTOM, "zero")
+    if a.base_support == "clamped":
+        md.add_Dirichlet_condition_with_simplification("ub", BOTTOM, "zero")
+        base_fixed = mfb.basic_dof_on_region(BOTTOM)
+    else:  # diagnostic: u_y = 0 on the bottom (multipliers), u_x = 0 at its middle node only
+        md.add_normal_Dirichlet_condition_with_multipliers(mimb, "ub", 1, BOTTOM)
+        md.add_initialized_data("pin_pt", [0.125, 0.0])
+        md.add_initialized_data("pin_dir", [1.0, 0.0])
+        md.add_pointwise_constraints_with_multipliers("ub", "pin_pt", "pin_dir")
+        base_fixed = []
     md.add_initialized_data("dend", [0.0, 0.0])
     md.add_Dirichlet_condition_with_simplification("ur", ENDS, "dend")
 
@@ -256,7 +266,7 @@ def main():
     # Rows of the residual that are equilibrium equations (not Dirichlet rows): the force
     # residual the Newton test measures.
     free = []
-    for var, mf, fixed in (("ub", mfb, mfb.basic_dof_on_region(BOTTOM)),
+    for var, mf, fixed in (("ub", mfb, base_fixed),
                            ("ur", mfr, end_dofs)):
         i0, n = md.interval_of_variable(var)
         keep = np.ones(n, bool)
