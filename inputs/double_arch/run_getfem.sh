@@ -23,9 +23,8 @@ $py "$here/arch_on_block.py" double_arch_fine.exo --center 0.125 0.145 \
   --radii 0.085 0.09 0.095 --layer-names ring_inner ring_outer --block 0 0.25 0 \
   --n-around 120 --n-layer 4 4 --block-nx 100 --block-ny 14
 cp "$here/double_arch.yaml" .
-sed -e 's/file: double_arch.exo/file: double_arch_fine.exo/' \
-    -e 's/file: double_arch.e, summary: double_arch.csv/file: double_arch_fine.e, summary: double_arch_fine.csv/' \
-    double_arch.yaml > double_arch_fine.yaml
+sed -e 's/double_arch\.exo/double_arch_fine.exo/' -e 's/double_arch\.e,/double_arch_fine.e,/' \
+    -e 's/double_arch\.csv/double_arch_fine.csv/' double_arch.yaml > double_arch_fine.yaml
 for input in double_arch double_arch_fine; do
   "$build/bin/grout" $input.yaml --output-dir np1 > "np1_$input.log"
 done
