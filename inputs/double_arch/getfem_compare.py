@@ -3,10 +3,11 @@ literature (docs/verification.md, "Double arc", "Independent check with GetFEM")
 
 Usage:
   getfem_compare.py --ci [--tol 0.01]
-      The ctest (working folder build/inputs/double_arch, after the double_arch_ci.yaml runs):
-      runs getfem_double_arch.py on double_arch.exo to d = 0.024 in 8 steps (the steps of
-      double_arch_ci.yaml) and compares with np1/ and np2/double_arch_ci.e. Exit 77 (ctest:
-      skipped) when python3-getfem is missing.
+      The ctest (working folder build/inputs/double_arch, after the CI runs): runs
+      getfem_double_arch.py on double_arch.exo on the steps of Grout's np1/double_arch_ci.e
+      (frictionless, d to 0.024 in 8 steps) and np1/double_arch_mu05_ci.e (mu = 0.5, 16 steps;
+      friction depends on the path, so the same steps) and compares with the np1/ and np2/
+      runs step by step. Exit 77 (ctest: skipped) when python3-getfem is missing.
   getfem_compare.py --grout STEM[:LABEL] ... --getfem CSV[:LABEL[:STEM]] ... [--plot PNG]
       The full path (run_getfem.sh): GetFEM CSVs and Grout runs (np1/STEM.e) against the
       literature curve (frictionless_reference_center_displacement.csv) and Kratos' 2017
@@ -22,14 +23,16 @@ Numbers (u = the centre's vertical displacement, ring_bottom; d = the imposed di
   upwards, the middle of the jump; linear interpolation).
 
 CI tolerance (--tol, default 0.01): max |u_G - u_g| over d <= 0.024 within 1 % of the largest
-|u_g| on that portion (3.06 mm, so 31 um), and the end forces within 1 %. Both codes solve the
+|u_g| on that portion (3.06 mm frictionless, 3.20 mm with mu = 0.5: about 31 um), and the end
+forces within 1 %. Both codes solve the
 same discrete elasticity (same mesh, bilinear quads, 2x2 Gauss, the same W, the same nodal
 supports); they differ only in the contact discretisation (Grout: mortar segments with
 multipliers at the slave nodes; GetFEM: Gauss-point raytracing with an augmented Lagrangian).
 That difference, measured as GetFEM's own spread between slave = base and slave = ring, r =
 E/h, 10 E/h and E/(10 h), release distance 5 and 10 mm, is at most 7.5 um (0.25 % of the dip;
-docs/verification.md); 1 % is four times that, and eight times smaller than a model error as
-small as 10 % on the base's E (the dip moves by 0.24 mm, 8 %).
+docs/verification.md; with mu = 0.5 at most 5 um); 1 % is four times that, and eight times
+smaller than a model error as small as 10 % on the base's E (the dip moves by 0.24 mm, 8 %);
+friction itself moves the dip by 0.14 mm (4.5 %), so a friction law that is off fails too.
 """
 import argparse
 import csv
@@ -96,39 +99,52 @@ def difference(d_a, u_a, d_b, u_b):
     return np.abs(np.interp(d_b[inside], d_a, u_a) - u_b[inside]), d_b[inside]
 
 
-def ci(a):
-    csv_out = "getfem_double_arch_ci.csv"
+def ci_case(stem, mu, tol, failures):
+    """GetFEM on the steps of Grout's np1/STEM.e (equal steps from 0), against np1 and np2."""
+    d1 = grout_curve("np1/%s.e" % stem)[0]
+    steps = len(d1) - 1
+    if steps < 1 or np.abs(np.diff(d1) - d1[1]).max() > 1e-9:
+        failures.append("np1/%s.e: not equal steps from d = 0" % stem)
+        return 0
+    csv_out = "getfem_%s.csv" % stem
     cmd = [sys.executable, os.path.join(HERE, "getfem_double_arch.py"), "--mesh",
-           "double_arch.exo", "--d-max", "0.024", "--steps", "8", "--csv", csv_out]
+           "double_arch.exo", "--d-max", repr(d1[-1]), "--steps", str(steps), "--mu", repr(mu),
+           "--csv", csv_out]
     rc = subprocess.call(cmd)
     if rc == SKIP:
         return SKIP
     if rc != 0:
-        print("getfem_double_arch.py failed (exit code %d)" % rc)
-        return 1
+        failures.append("%s: getfem_double_arch.py failed (exit code %d)" % (stem, rc))
+        return 0
     dg, ug, fg = getfem_curve(csv_out)
-    failures = []
     for np_ in (1, 2):
-        d, u, f = grout_curve("np%d/double_arch_ci.e" % np_)
-        if d[-1] < 0.024 - 1e-12:
-            failures.append("np%d: Grout's CI run ends at d = %.4f" % (np_, d[-1]))
+        d, u, f = grout_curve("np%d/%s.e" % (np_, stem))
+        if len(d) != len(dg) or np.abs(d - dg).max() > 1e-9:
+            failures.append("np%d/%s: steps differ from GetFEM's" % (np_, stem))
             continue
-        du, dd = difference(dg, ug, d, u)
-        df, _ = difference(dg, fg, d, f)
+        du, df = np.abs(ug - u), np.abs(fg - f)
         scale_u, scale_f = np.abs(u).max(), np.abs(f).max()
-        print("np%d: GetFEM vs Grout over d <= %.3f (%d steps): centre max %.2e m (%.2f %% of "
-              "max|u| = %.3e), end force max %.3e N/m (%.2f %% of %.3e)"
-              % (np_, d[-1], len(dd) - 1, du.max(), 100 * du.max() / scale_u, scale_u, df.max(),
-                 100 * df.max() / scale_f, scale_f))
+        print("np%d/%s (mu = %g): GetFEM vs Grout over d <= %.4f (%d steps): centre max %.2e m "
+              "(%.2f %% of max|u| = %.3e), end force max %.3e N/m (%.2f %% of %.3e)"
+              % (np_, stem, mu, d[-1], steps, du.max(), 100 * du.max() / scale_u, scale_u,
+                 df.max(), 100 * df.max() / scale_f, scale_f))
         if np_ == 1:
-            for di, ui, uGi in zip(d, u, np.interp(d, dg, ug)):
+            for di, ui, uGi in zip(d, u, ug):
                 print("   d = %.4f  Grout %+.6f  GetFEM %+.6f" % (di, ui, uGi))
-        if not du.max() <= a.tol * scale_u:
-            failures.append("np%d: centre differs by %.2e m > %.1f %% of %.3e"
-                            % (np_, du.max(), 100 * a.tol, scale_u))
-        if not df.max() <= a.tol * scale_f:
-            failures.append("np%d: end force differs by %.3e > %.1f %% of %.3e"
-                            % (np_, df.max(), 100 * a.tol, scale_f))
+        if not du.max() <= tol * scale_u:
+            failures.append("np%d/%s: centre differs by %.2e m > %.1f %% of %.3e"
+                            % (np_, stem, du.max(), 100 * tol, scale_u))
+        if not df.max() <= tol * scale_f:
+            failures.append("np%d/%s: end force differs by %.3e > %.1f %% of %.3e"
+                            % (np_, stem, df.max(), 100 * tol, scale_f))
+    return 0
+
+
+def ci(a):
+    failures = []
+    for stem, mu in (("double_arch_ci", 0.0), ("double_arch_mu05_ci", 0.5)):
+        if ci_case(stem, mu, a.tol, failures) == SKIP:
+            return SKIP
     if failures:
         print("FAILED:\n  " + "\n  ".join(failures))
         return 1

@@ -134,6 +134,7 @@ def main():
     ap.add_argument("--r", type=float, default=None, help="augmentation parameter (Pa/m)")
     ap.add_argument("--release", type=float, default=0.005, help="release distance (m)")
     ap.add_argument("--slave", default="base", choices=("base", "ring"))
+    ap.add_argument("--mu", type=float, default=0.0, help="Coulomb friction coefficient")
     ap.add_argument("--moduli", type=float, nargs=3, metavar=("BASE", "INNER", "OUTER"),
                     help="Young's moduli in place of the input's (diagnostics only)")
     ap.add_argument("--base-support", default="clamped", choices=("clamped", "roller"),
@@ -228,8 +229,14 @@ def main():
     h = 0.25 / 50
     r = a.r if a.r is not None else E["base"] / h
     md.add_initialized_data("r", [r])
-    md.add_initialized_data("f", [0.0])
-    ind = md.add_integral_large_sliding_contact_brick_raytracing("r", a.release, "f")
+    md.add_initialized_data("f", [a.mu])
+    md.add_initialized_data("alpha", [1.0])
+    ind = md.add_integral_large_sliding_contact_brick_raytracing("r", a.release, "f", "alpha")
+    w = {}  # Coulomb: the slip is measured from the displacement at the start of the step
+    if a.mu > 0:
+        for var, mf in (("ub", mfb), ("ur", mfr)):
+            md.add_fem_data("w_" + var, mf)
+            w[var] = "w_" + var
     if a.slave == "base":
         sl_mesh, sl_var, sl_mim, sl_reg = base.mesh, "ub", mimb, TOP
         ms_var, ms_mim, ms_reg = "ur", mimr, CONTACT
@@ -240,8 +247,9 @@ def main():
     mfl.set_fem(gf.Fem("FEM_QK(2,%d)" % a.order))
     md.add_filtered_fem_variable("lam_c", mfl, sl_reg)
     md.add_slave_contact_boundary_to_large_sliding_contact_brick(ind, sl_mim, sl_reg, sl_var,
-                                                                 "lam_c")
-    md.add_master_contact_boundary_to_large_sliding_contact_brick(ind, ms_mim, ms_reg, ms_var)
+                                                                 "lam_c", *[w[v] for v in w if v == sl_var])
+    md.add_master_contact_boundary_to_large_sliding_contact_brick(ind, ms_mim, ms_reg, ms_var,
+                                                                  *[w[v] for v in w if v == ms_var])
 
     # The centre's y dof (and the inner bottom node's, when the mesh names it), the ring-end
     # y dofs (for the reaction). A vector MeshFem interleaves the components (x, y per node).
@@ -286,6 +294,8 @@ def main():
             d_try = min(d_target, d_now + dd)
             md.set_variable("dend", [0.0, -d_try])
             saved = md.from_variables()
+            for var, wname in w.items():
+                md.set_variable(wname, md.variable(var))
             nit, conv = newton(gf, md, free, a)
             total_it += nit
             if conv:
