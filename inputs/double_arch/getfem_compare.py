@@ -13,6 +13,8 @@ Usage:
       literature curve (frictionless_reference_center_displacement.csv) and Kratos' 2017
       solution; a GetFEM curve naming a Grout STEM (the run on the same mesh) is also compared
       with it. Prints the numbers, writes PNG (a curve labelled "diagnostic" is dotted).
+      --frictional: mu = 0.5 runs, against frictional_reference_figure.csv (Kratos' figure,
+      digitised) instead.
 
 Numbers (u = the centre's vertical displacement, ring_bottom; d = the imposed displacement):
 - GetFEM vs Grout: max and rms of |u_G(d) - u_g(d)| over Grout's steps (GetFEM interpolated
@@ -68,7 +70,7 @@ def getfem_curve(path):
 
 
 def reference(name):
-    rows = [r for r in csv.reader(open(os.path.join(HERE, name))) if r]
+    rows = [r for r in csv.reader(open(os.path.join(HERE, name))) if r and not r[0].startswith("#")]
     data = np.array([[float(v) for v in r] for r in rows[1:]])
     return data[:, -2], data[:, -1]
 
@@ -153,8 +155,12 @@ def ci(a):
 
 
 def full(a):
-    d_ref, u_ref = reference("frictionless_reference_center_displacement.csv")
-    d_k, u_k = reference("frictionless_kratos2017_center_displacement.csv")
+    if a.frictional:
+        d_ref, u_ref = reference("frictional_reference_figure.csv")
+        d_k, u_k = np.zeros(0), np.zeros(0)
+    else:
+        d_ref, u_ref = reference("frictionless_reference_center_displacement.csv")
+        d_k, u_k = reference("frictionless_kratos2017_center_displacement.csv")
     scale = np.abs(u_ref).max()
     grouts = {}
     for spec in a.grout:
@@ -169,8 +175,8 @@ def full(a):
                       + (stem,))
     print("%-40s %9s %8s %8s %9s %9s" % ("curve", "dip (mm)", "at d", "snap d", "lit. max",
                                          "lit. rms"))
-    for name, d, u in [("literature", d_ref, u_ref), ("Kratos 2017", d_k, u_k)] + \
-            [(c[0], c[1], c[2]) for c in list(grouts.values()) + curves]:
+    table = [("literature", d_ref, u_ref)] + ([("Kratos 2017", d_k, u_k)] if len(d_k) else [])
+    for name, d, u in table + [(c[0], c[1], c[2]) for c in list(grouts.values()) + curves]:
         dip, at, snap = dip_and_snap(d, u)
         emax, erms, n = against_reference(d, u, d_ref, u_ref)
         print("%-40s %9.3f %8.4f %8.4f %8.1f%% %8.1f%%" % (name, 1e3 * dip, at, snap, 100 * emax,
@@ -192,9 +198,11 @@ def full(a):
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
         fig, ax = plt.subplots(figsize=(7, 5))
-        ax.plot(d_ref, u_ref, "o", mfc="none", color="k", label="literature (Drouet 2015; "
-                "Poulios & Renard 2015)")
-        ax.plot(d_k, u_k, "--", color="gray", lw=1, label="Kratos 2017 (3D hexa)")
+        ax.plot(d_ref, u_ref, "o", mfc="none", color="k",
+                label="reference: Kratos' figure, digitised" if a.frictional else
+                "literature (Drouet 2015; Poulios & Renard 2015)")
+        if len(d_k):
+            ax.plot(d_k, u_k, "--", color="gray", lw=1, label="Kratos 2017 (3D hexa)")
         for i, g in enumerate(grouts.values()):
             ax.plot(g[1], g[2], "-", color="C%d" % (3 + i), lw=3, alpha=0.45, label=g[0])
         for i, c in enumerate(curves):
@@ -202,7 +210,8 @@ def full(a):
                     color="C%d" % ([0, 1, 2, 5, 6, 7][i % 6]), lw=1.2, label=c[0])
         ax.set_xlabel("imposed displacement d (m)")
         ax.set_ylabel("vertical displacement of the centre (m)")
-        ax.set_title("Double arc, frictionless, plane strain: GetFEM, Grout, literature")
+        ax.set_title("Double arc, %s, plane strain: GetFEM, Grout, literature"
+                     % ("mu = 0.5" if a.frictional else "frictionless"))
         ax.legend(fontsize=7)
         ax.grid(alpha=0.3)
         fig.tight_layout()
@@ -218,6 +227,8 @@ def main():
     ap.add_argument("--getfem", nargs="*", default=[])
     ap.add_argument("--grout", nargs="*", default=[])
     ap.add_argument("--plot")
+    ap.add_argument("--frictional", action="store_true",
+                    help="against frictional_reference_figure.csv (mu = 0.5)")
     a = ap.parse_args()
     return ci(a) if a.ci else full(a)
 
