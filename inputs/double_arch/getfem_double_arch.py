@@ -1,6 +1,6 @@
 """Double arc (BENCHMARKS.md #14) solved independently with GetFEM 5.4 (Poulios & Renard's own
-code and contact formulation), to judge Grout's frictionless curve (docs/verification.md,
-"Double arc", "Independent check with GetFEM").
+code and contact formulation), to judge Grout's curves (docs/verification.md, "Double arc",
+"Independent check with GetFEM").
 
 What: the same plane-strain problem as double_arch.yaml, on the same Exodus mesh
 (arch_on_block.py; blocks base / ring_inner / ring_outer, side sets base_bottom, base_top,
@@ -18,9 +18,12 @@ ring_contact, ring_ends, node set ring_bottom), read with netCDF4:
   simplification, as Grout's dirichlet);
 - contact: GetFEM's integral large sliding contact brick (augmented Lagrangian, raytracing on
   the current geometry: Poulios & Renard 2015, the formulation of the literature curve),
-  frictionless, slave = the base top (as Kratos and Grout; --slave ring swaps), multiplier on
+  frictionless, or Coulomb with --mu (the slip measured from the displacement at the start of
+  the step), slave = the base top (as Kratos and Grout; --slave ring swaps), multiplier on
   the slave's nodes (QK(2,1) trace); augmentation parameter --r (Pa/m, default E_base / h with
   h = 5 mm the base's element size), release distance --release (default 5 mm);
+- diagnostics only: --moduli BASE INNER OUTER replaces the json's moduli; --base-support roller
+  lets the base bottom slide in x (u_y = 0, u_x = 0 at its middle node);
 - load path: d = 0 ... --d-max in --steps equal steps (Newton from the previous state; a step
   that does not converge is halved, up to 6 times);
 - output: --csv, one row per step: imposed d, the centre's (ring_bottom, the lowest outer node)
