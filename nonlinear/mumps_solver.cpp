@@ -477,8 +477,13 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   if (!(s.analysed && s.n == n && keys == s.last_keys))
     missing = int(!(s.analysed && s.n == n && locate(s.pattern, keys, sorted_prefix, s.position)));
   MPI_Allreduce(MPI_IN_PLACE, &missing, 1, MPI_INT, MPI_MAX, mpi_comm);
-  // Schur updates: the last factorised matrix (pattern and values) is the base.
-  const bool updates = s.options.symmetric && s.options.schur_updates;
+  // Schur updates: the last factorised matrix (pattern and values) is the base. On one
+  // process only: MUMPS's centralised Schur complement (ICNTL(19) = 1) is the root of the
+  // elimination tree on rank 0 alone, where MUMPS otherwise factorises the root on all ranks,
+  // and the dense update runs on rank 0 too; with the patterns also changing more often on
+  // 2 ranks (5 analyses instead of 3 on the 11.0 k-node spheres), the set is reused twice
+  // and the run is not faster (docs/performance.md, "3D 11k on 1 rank ... (pattern9)").
+  const bool updates = s.options.symmetric && s.options.schur_updates && comm.getSize() == 1;
   const bool have_base =
       updates && s.analysed && s.factorised && s.n == n && !s.base_values.empty();
   std::vector<long long> base_pattern;
