@@ -284,6 +284,7 @@ struct MumpsSolver::Impl {
     int ok = 1;
     if (!schur_rows.empty() && rank == 0)
       ok = int(dense.set_base(int(schur_rows.size()), schur_buffer));
+    std::vector<double>().swap(schur_buffer);  // now the previous base: released
     MPI_Bcast(&ok, 1, MPI_INT, 0, c);
     return ok != 0;
   }
