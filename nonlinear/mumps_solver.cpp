@@ -542,7 +542,7 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
     // every row changed so far (rows that changed once change again in the next Newton
     // iterations), or those changed since the last factorisation, or none. Not at the first
     // change: a factorisation with a Schur set costs more than one without (MUMPS orders the
-    // set last; 1.6–2.2× the flops on the 3D Hertz spheres), which pays only if the set is
+    // set last; 1.6–1.9× the flops on the 3D Hertz spheres), which pays only if the set is
     // reused, and a single change is no evidence that the rows keep changing.
     s.schur_rows = !changed_before                       ? std::vector<long long>{}
                    : s.schur_pays(s.changed_ever.size()) ? s.changed_ever
@@ -561,7 +561,8 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
     s.analysed = true;
   }
   bool updated = false;
-  if (changed[1] && !changed[0] && !s.schur_rows.empty() && rows_within(rows, s.schur_rows)) {
+  if (changed[1] && !changed[0] && have_base && !s.schur_rows.empty() &&
+      rows_within(rows, s.schur_rows)) {
     // Only rows of the Schur set changed: S(A') = S(A) + (A' − A)_BB, dense Cholesky.
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: MUMPS Schur update"));
     std::vector<int> where(std::size_t(n), -1);
