@@ -237,6 +237,8 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
       if (!impl_->mumps_symmetric) {
         MumpsOptions options = impl_->mumps_options;
         options.symmetric = true;
+        // K̃ is SPD and changes between Newton iterations only near the contact interface.
+        options.schur_updates = true;
         impl_->mumps_symmetric = std::make_unique<MumpsSolver>(options);
       }
       Vector y(reduction.matrix()->getRowMap());

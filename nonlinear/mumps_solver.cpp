@@ -16,6 +16,7 @@
 
 #include "assembly/raw_mpi_comm.hpp"
 #include "io/errors.hpp"
+#include "nonlinear/schur_update.hpp"
 
 namespace grout {
 
@@ -112,13 +113,13 @@ void make_scotch_deterministic() {
 }
 
 // The position in `pattern` (sorted, unique) of every key; false if a key is not in it.
-// Increasing keys are found in one forward walk, others by binary search.
+// The increasing keys[0 .. sorted) are found in one forward walk, the others by binary search.
 bool locate(const std::vector<long long>& pattern, const std::vector<long long>& keys,
-            bool keys_sorted, std::vector<std::size_t>& position) {
+            std::size_t sorted, std::vector<std::size_t>& position) {
   position.assign(keys.size(), 0);
   auto it = pattern.begin();
   for (std::size_t k = 0; k < keys.size(); ++k) {
-    if (keys_sorted) {
+    if (k < sorted) {
       while (it != pattern.end() && *it < keys[k]) ++it;
     } else {
       it = std::lower_bound(pattern.begin(), pattern.end(), keys[k]);
@@ -147,12 +148,52 @@ std::string describe(int code) {
   }
 }
 
+// The union over all ranks of sorted 0-based row lists (the same sorted list on every rank).
+std::vector<long long> union_over_ranks(const std::vector<long long>& local, MPI_Comm comm) {
+  int ranks = 1;
+  MPI_Comm_size(comm, &ranks);
+  if (ranks == 1) return local;
+  int count = int(local.size());
+  std::vector<int> counts(static_cast<std::size_t>(ranks), 0), offsets(counts);
+  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+  for (int r = 1; r < ranks; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<long long> all(std::size_t(offsets.back() + counts.back()));
+  MPI_Allgatherv(local.data(), count, MPI_LONG_LONG, all.data(), counts.data(), offsets.data(),
+                 MPI_LONG_LONG, comm);
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  return all;
+}
+
+// Every rank's Schur deltas on rank 0 (as triplets of doubles: i, j, value).
+std::vector<SchurDelta> gather_deltas(const std::vector<SchurDelta>& local, MPI_Comm comm) {
+  int ranks = 1, rank = 0;
+  MPI_Comm_size(comm, &ranks);
+  MPI_Comm_rank(comm, &rank);
+  if (ranks == 1) return local;
+  std::vector<double> packed;
+  for (const SchurDelta& d : local)
+    packed.insert(packed.end(), {double(d.i), double(d.j), d.value});
+  int count = int(packed.size());
+  std::vector<int> counts(static_cast<std::size_t>(ranks), 0), offsets(counts);
+  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+  for (int r = 1; r < ranks; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<double> all(rank == 0 ? std::size_t(offsets.back() + counts.back()) : 0);
+  MPI_Gatherv(packed.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
+              MPI_DOUBLE, 0, comm);
+  std::vector<SchurDelta> deltas;
+  for (std::size_t k = 0; k + 2 < all.size(); k += 3)
+    deltas.push_back({int(all[k]), int(all[k + 1]), all[k + 2]});
+  return deltas;
+}
+
 }  // namespace
 
 struct MumpsSolver::Impl {
   MumpsOptions options;
   DMUMPS_STRUC_C m{};
   MPI_Comm comm = MPI_COMM_NULL;
+  int rank = 0;
   bool initialised = false;
   bool analysed = false;
   bool factorised = false;
@@ -167,6 +208,16 @@ struct MumpsSolver::Impl {
   std::vector<MUMPS_INT> irn, jcn;
   std::vector<double> values;
 
+  // Schur updates (MumpsOptions::schur_updates, schur_update.hpp): the Schur set B of the
+  // last analysis (sorted 0-based rows; MUMPS's 1-based list), the values of the last
+  // factorised matrix (in `pattern` order), its flops with the Schur block's Cholesky, and on
+  // rank 0 the dense Schur complement with the factor of the current matrix.
+  std::vector<long long> schur_rows, changed_ever;
+  std::vector<MUMPS_INT> schur_list;
+  std::vector<double> base_values, schur_buffer, reduced_rhs;
+  double full_flops = 0.0;
+  DenseSchur dense;
+
   // b gathered to rank 0 and x scattered back: `source` is the row map (global-id numbering)
   // or its contiguous renumbering.
   bool gid_numbering = false;
@@ -180,6 +231,7 @@ struct MumpsSolver::Impl {
     finish();
     limit_blas_threads_under_mpi(num_ranks);
     comm = c;
+    MPI_Comm_rank(c, &rank);
     m = DMUMPS_STRUC_C{};
     m.comm_fortran = MUMPS_INT(MPI_Comm_c2f(c));
     m.par = 1;  // rank 0 works too
@@ -215,6 +267,36 @@ struct MumpsSolver::Impl {
     n = -1;
   }
 
+  // The Schur set for the next analysis (0: none); MUMPS orders those rows last.
+  void configure_schur() {
+    schur_list.resize(schur_rows.size());
+    for (std::size_t k = 0; k < schur_rows.size(); ++k)
+      schur_list[k] = MUMPS_INT(schur_rows[k] + 1);
+    icntl(m, 19) = schur_rows.empty() ? 0 : 1;  // centralised Schur complement on rank 0
+    m.size_schur = MUMPS_INT(schur_rows.size());
+    m.listvar_schur = schur_list.empty() ? nullptr : schur_list.data();
+    stats.schur_size = int(schur_rows.size());
+  }
+
+  // After a sparse factorisation with a Schur set: S(A) to the dense solver on rank 0 and its
+  // Cholesky factorisation; false (on every rank) if S(A) is not positive definite.
+  bool take_schur(MPI_Comm c) {
+    int ok = 1;
+    if (!schur_rows.empty() && rank == 0)
+      ok = int(dense.set_base(int(schur_rows.size()), schur_buffer));
+    std::vector<double>().swap(schur_buffer);  // now the previous base: released
+    MPI_Bcast(&ok, 1, MPI_INT, 0, c);
+    return ok != 0;
+  }
+
+  // Whether a Schur set of `size` rows pays: its dense Cholesky factorisation (size³/3 flops)
+  // at most half the last sparse factorisation (with its Schur block), and at most 6000 rows
+  // (288 MB per dense copy).
+  bool schur_pays(std::size_t size) const {
+    const double nb = double(size);
+    return size > 0 && size <= 6000 && nb * nb * nb / 3.0 <= 0.5 * full_flops;
+  }
+
   void finish() {
     if (!initialised) return;
     int finalized = 0;
@@ -245,6 +327,11 @@ struct MumpsSolver::Impl {
   // workspace relaxation ICNTL(14) (percent over the analysis estimate) and retry.
   void factorise() {
     for (int attempt = 0;; ++attempt) {
+      if (!schur_rows.empty() && rank == 0) {
+        schur_buffer = DenseSchur::prepare(int(schur_rows.size()));
+        m.schur = schur_buffer.data();
+        m.schur_lld = MUMPS_INT(schur_rows.size());
+      }
       m.irn_loc = irn.data();
       m.jcn_loc = jcn.data();
       m.a_loc = values.data();
@@ -266,6 +353,8 @@ struct MumpsSolver::Impl {
       factorised = true;
       stats.flops = m.rinfog[2];
       stats.factor_entries = infog(m, 29);
+      const double nb = double(schur_rows.size());
+      full_flops = stats.flops + nb * nb * nb / 3.0;
       return;
     }
   }
@@ -350,7 +439,7 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   // This rank's entries (lower triangle only when symmetric) as keys row * n + col (0-based
   // MUMPS numbering), in the matrix's storage order.
   const auto local = K->getLocalMatrixHost();
-  std::vector<long long> keys;
+  std::vector<long long> keys, mirror_keys;
   std::vector<double> entry_values;
   keys.reserve(local.nnz());
   entry_values.reserve(local.nnz());
@@ -362,14 +451,17 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
         // An explicit zero above the diagonal stands for its mirror's place in the pattern
         // (symmetric_condensation.hpp keeps the pattern of rows it eliminates that way, on
         // the rank owning the row only): it adds the lower key (col, row) and nothing to the
-        // values.
-        if (local.values(p) == 0.0) keys.push_back(col * n + row), entry_values.push_back(0.0);
+        // values. Those keys go last, after the rows' own (in row order, on one rank sorted:
+        // found in one forward walk below instead of a binary search each).
+        if (local.values(p) == 0.0) mirror_keys.push_back(col * n + row);
         continue;
       }
       keys.push_back(row * n + col);
       entry_values.push_back(local.values(p));
     }
   }
+  keys.insert(keys.end(), mirror_keys.begin(), mirror_keys.end());
+  entry_values.resize(keys.size(), 0.0);
 
   // The analysed pattern is kept while the matrix's pattern stays inside it: the Jacobian's
   // pattern follows the contact state (active set, mortar pairs, nonzero derivatives) and
@@ -379,14 +471,31 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   // would be more than twice its size.
   // Keys in increasing order (the gathered matrix: rows in order, each row's columns in
   // order) are looked up in one forward walk and need no sort.
-  const bool keys_sorted = std::is_sorted(keys.begin(), keys.end());
+  const std::size_t sorted_prefix =
+      std::size_t(std::is_sorted_until(keys.begin(), keys.end()) - keys.begin());
+  const bool keys_sorted = sorted_prefix == keys.size();
   int missing = 0;
   if (!(s.analysed && s.n == n && keys == s.last_keys))
-    missing = int(!(s.analysed && s.n == n && locate(s.pattern, keys, keys_sorted, s.position)));
+    missing = int(!(s.analysed && s.n == n && locate(s.pattern, keys, sorted_prefix, s.position)));
   MPI_Allreduce(MPI_IN_PLACE, &missing, 1, MPI_INT, MPI_MAX, mpi_comm);
+  // Schur updates: the last factorised matrix (pattern and values) is the base. On one
+  // process only: MUMPS's centralised Schur complement (ICNTL(19) = 1) is the root of the
+  // elimination tree on rank 0 alone, where MUMPS otherwise factorises the root on all ranks,
+  // and the dense update runs on rank 0 too; with the patterns also changing more often on
+  // 2 ranks (5 analyses instead of 3 on the 11.0 k-node spheres), the set is reused twice
+  // and the run is not faster (docs/performance.md, "3D 11k on 1 rank ... (pattern9)").
+  const bool updates = s.options.symmetric && s.options.schur_updates && comm.getSize() == 1;
+  const bool have_base =
+      updates && s.analysed && s.factorised && s.n == n && !s.base_values.empty();
+  std::vector<long long> base_pattern;
+  if (have_base && missing) base_pattern = s.pattern;
   if (missing) {
     std::vector<long long> sorted = keys;
-    if (!keys_sorted) std::sort(sorted.begin(), sorted.end());
+    if (!keys_sorted) {  // the unsorted tail sorted, then merged with the sorted prefix
+      const auto middle = sorted.begin() + std::ptrdiff_t(sorted_prefix);
+      std::sort(middle, sorted.end());
+      std::inplace_merge(sorted.begin(), middle, sorted.end());
+    }
     sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
     std::vector<long long> merged;
     if (s.analysed && s.n == n) {
@@ -402,7 +511,7 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
       s.irn[e] = MUMPS_INT(s.pattern[e] / n) + 1;
       s.jcn[e] = MUMPS_INT(s.pattern[e] % n) + 1;
     }
-    locate(s.pattern, keys, keys_sorted, s.position);
+    locate(s.pattern, keys, sorted_prefix, s.position);
   }
   s.last_keys.swap(keys);
 
@@ -412,22 +521,79 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   changed[1] = int(missing || !s.factorised || values != s.values);
   MPI_Allreduce(MPI_IN_PLACE, &changed[1], 1, MPI_INT, MPI_MAX, mpi_comm);
   s.values.swap(values);
+  // The rows whose entries differ from the base's (any rank).
+  std::vector<long long> rows;
+  if (have_base && changed[1])
+    rows = union_over_ranks(
+        changed_rows(missing ? base_pattern : s.pattern, s.base_values, s.pattern, s.values, n),
+        mpi_comm);
+  // Every row changed so far (since the first factorisation of this layout).
+  const bool changed_before = have_base && !s.changed_ever.empty();
+  if (!have_base) s.changed_ever.clear();
+  {
+    std::vector<long long> joined;
+    std::set_union(s.changed_ever.begin(), s.changed_ever.end(), rows.begin(), rows.end(),
+                   std::back_inserter(joined));
+    s.changed_ever.swap(joined);
+  }
 
   if (changed[0]) {
+    // A new Schur set, at an analysis the pattern asks for anyway (so never an extra one):
+    // every row changed so far (rows that changed once change again in the next Newton
+    // iterations), or those changed since the last factorisation, or none. Not at the first
+    // change: a factorisation with a Schur set costs more than one without (MUMPS orders the
+    // set last; 1.6–1.9× the flops on the 3D Hertz spheres), which pays only if the set is
+    // reused, and a single change is no evidence that the rows keep changing.
+    s.schur_rows = !changed_before                       ? std::vector<long long>{}
+                   : s.schur_pays(s.changed_ever.size()) ? s.changed_ever
+                   : s.schur_pays(rows.size())           ? rows
+                                                         : std::vector<long long>{};
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: MUMPS analysis"));
     s.n = n;
     s.analysed = s.factorised = false;
     s.m.n = MUMPS_INT(n);
     s.m.nz_loc = MUMPS_INT(s.irn.size());
     s.m.nnz_loc = MUMPS_INT8(s.irn.size());
+    s.configure_schur();
     make_scotch_deterministic();
     s.run(1, "analysis");
     ++s.stats.analyses;
     s.analysed = true;
   }
-  if (changed[1]) {
+  bool updated = false;
+  if (changed[1] && !changed[0] && have_base && !s.schur_rows.empty() &&
+      rows_within(rows, s.schur_rows)) {
+    // Only rows of the Schur set changed: S(A') = S(A) + (A' − A)_BB, dense Cholesky.
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: MUMPS Schur update"));
+    std::vector<int> where(std::size_t(n), -1);
+    for (std::size_t k = 0; k < s.schur_rows.size(); ++k)
+      where[std::size_t(s.schur_rows[k])] = int(k);
+    std::vector<SchurDelta> deltas;
+    for (std::size_t p = 0; p < s.pattern.size(); ++p) {
+      const double d = s.values[p] - s.base_values[p];
+      if (d == 0.0) continue;
+      const int i = where[std::size_t(s.pattern[p] / n)], j = where[std::size_t(s.pattern[p] % n)];
+      if (i >= 0 && j >= 0) deltas.push_back({i, j, d});
+    }
+    deltas = gather_deltas(deltas, mpi_comm);
+    int ok = comm.getRank() == 0 ? int(s.dense.update(deltas)) : 1;
+    MPI_Bcast(&ok, 1, MPI_INT, 0, mpi_comm);
+    updated = ok != 0;  // not positive definite: factorise below instead
+    if (updated) ++s.stats.schur_updates;
+  }
+  if (changed[1] && !updated) {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: MUMPS factorisation"));
     s.factorise();
+    if (!s.take_schur(mpi_comm)) {
+      // S(A) not positive definite (A is not): analyse and factorise without a Schur set.
+      s.schur_rows.clear();
+      s.configure_schur();
+      make_scotch_deterministic();
+      s.run(1, "analysis");
+      ++s.stats.analyses;
+      s.factorise();
+    }
+    s.base_values = s.values;
   }
 
   // Solve with b gathered on rank 0; scatter x back.
@@ -448,7 +614,26 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   s.m.rhs = is_root ? s.rhs.data() : nullptr;
   s.m.nrhs = 1;
   s.m.lrhs = MUMPS_INT(n);
-  s.run(3, "solve");
+  if (s.schur_rows.empty()) {
+    s.run(3, "solve");
+  } else {
+    // Reduction (forward substitution on the interior, the reduced right-hand side on the
+    // Schur rows), the dense solve there, expansion (ICNTL(26) = 1, 2). MUMPS does no
+    // iterative refinement with a Schur complement; the matrix is SPD (LDLᵀ of a reduced
+    // elastic stiffness), where one is not needed.
+    const MUMPS_INT nb = MUMPS_INT(s.schur_rows.size());
+    s.reduced_rhs.assign(is_root ? std::size_t(nb) : 0, 0.0);
+    s.m.redrhs = is_root ? s.reduced_rhs.data() : nullptr;
+    s.m.lredrhs = nb;
+    icntl(s.m, 10) = 0;
+    icntl(s.m, 26) = 1;
+    s.run(3, "solve (reduction)");
+    if (is_root) s.dense.solve(s.reduced_rhs.data());
+    icntl(s.m, 26) = 2;
+    s.run(3, "solve (expansion)");
+    icntl(s.m, 26) = 0;
+    icntl(s.m, 10) = 1;
+  }
   ++s.stats.solves;
   if (is_root) {
     auto r = b_root.getLocalViewHost(Tpetra::Access::OverwriteAll);

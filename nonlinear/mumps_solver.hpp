@@ -33,6 +33,15 @@ struct MumpsOptions {
   /// the same order on any number of ranks, so the answer is the same bit for bit. false: each
   /// rank hands MUMPS its rows (the fronts are factorised on all ranks; rounding differs).
   bool gather = false;
+  /// true (symmetric positive definite matrices only; LinearSolver sets it for the symmetric
+  /// reduction, it is no input key; used on one MPI process only): when a new matrix differs
+  /// from the last factorised one
+  /// only in rows that an analysis put into the Schur set, solve it with a dense update of
+  /// the Schur complement instead of a new factorisation (schur_update.hpp). The Schur set is
+  /// chosen at an analysis that the pattern requires anyway: the rows that changed since the
+  /// last factorisation, joined to the previous set, while its dense Cholesky factorisation
+  /// costs at most half a sparse one.
+  bool schur_updates = false;
 };
 
 /// Reads the `MUMPS` sublist; throws InputError naming `where` + key on a bad value.
@@ -46,6 +55,8 @@ struct MumpsStatistics {
   int workspace_retries = 0;     ///< factorisations repeated with more workspace (INFOG(1) -8/-9)
   double flops = 0.0;            ///< floating-point operations of the last factorisation, RINFOG(3)
   long long factor_entries = 0;  ///< entries in the factors of the last one, INFOG(29)
+  int schur_updates = 0;         ///< matrices solved by a dense Schur update (no factorisation)
+  int schur_size = 0;            ///< rows in the Schur set of the last analysis (0: none)
 };
 
 class MumpsSolver {

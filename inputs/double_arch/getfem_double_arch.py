@@ -1,0 +1,372 @@
+"""Double arc (BENCHMARKS.md #14) solved independently with GetFEM 5.4 (Poulios & Renard's own
+code and contact formulation), to judge Grout's curves (docs/verification.md, "Double arc",
+"Independent check with GetFEM").
+
+What: the same plane-strain problem as double_arch.yaml, on the same Exodus mesh
+(arch_on_block.py; blocks base / ring_inner / ring_outer, side sets base_bottom, base_top,
+ring_contact, ring_ends, node set ring_bottom), read with netCDF4:
+- two bodies, each its own GetFEM mesh (the ring's lowest outer node and the base's top centre
+  node coincide; one mesh would merge them): base (E = 3e8) and the half ring (inner layer
+  r 0.085-0.09 E = 1e11, outer layer 0.09-0.095 E = 1e9), nu = 0.3 everywhere;
+- compressible Neo-Hookean written out in GWFL, the same W as Grout (docs/input.md):
+  W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2, P = mu (F - F^-T) + lambda ln J F^-T,
+  plane strain (F is the in-plane 2x2 block, F33 = 1: I1 = |F|^2 + 1, J = det F),
+  lambda = E nu / ((1 + nu)(1 - 2 nu)), mu = E / (2 (1 + nu));
+- elements: --order 1 (default) bilinear QK(2,1) with 2x2 Gauss, as Grout's QUAD4; --order 2
+  biquadratic QK(2,2), 3x3 Gauss, on the same mesh (the discretisation check);
+- supports: base bottom u = 0; ring ends (y = 0.145) u = (0, -d), nodal (Dirichlet by
+  simplification, as Grout's dirichlet);
+- contact: GetFEM's integral large sliding contact brick (augmented Lagrangian, raytracing on
+  the current geometry: Poulios & Renard 2015, the formulation of the literature curve),
+  frictionless, or Coulomb with --mu (the slip measured from the displacement at the start of
+  the step), slave = the base top (as Kratos and Grout; --slave ring swaps), multiplier on
+  the slave's nodes (QK(2,1) trace); augmentation parameter --r (Pa/m, default E_base / h with
+  h = 5 mm the base's element size), release distance --release (default 5 mm);
+- diagnostics only: --moduli BASE INNER OUTER replaces the json's moduli; --base-support roller
+  lets the base bottom slide in x (u_y = 0, u_x = 0 at its middle node);
+- load path: d = 0 ... --d-max in --steps equal steps (Newton from the previous state; a step
+  that does not converge is halved, up to 6 times);
+- output: --csv, one row per step: imposed d, the centre's (ring_bottom, the lowest outer node)
+  vertical displacement, the ring-end reaction (N per m of thickness: the y internal force of
+  the ring on the end nodes), Newton iterations, and the vertical displacement of the ring's
+  lowest inner node (ring_bottom_inner; a diagnostic);
+- --ring-check: after the first step, the ring's own deflection d - delta_c against
+  Castigliano's clamped composite half ring (arch_theory.py, k_ring = 1.566e8 N/m per m) with
+  the computed end force, as check.py --ring does for Grout; prints the ratio.
+
+How to run (from a folder holding the mesh; the ctest writes
+build/inputs/double_arch/double_arch.exo, run_full.sh build/inputs/double_arch/full/):
+  /usr/bin/python3 inputs/double_arch/getfem_double_arch.py --mesh double_arch.exo \
+      --d-max 0.075 --steps 150 --csv getfem_double_arch.csv
+  /usr/bin/python3 inputs/double_arch/getfem_double_arch.py --mesh double_arch_fine.exo \
+      --d-max 0.001 --steps 1 --ring-check
+Runtime (CPU, one core of the shared 2-core machine; printed at the end), d to 0.075 in 150
+steps: Kratos' mesh QK(2,1) 11 s, QK(2,2) 61 s; the mesh twice as fine QK(2,1) 50 s, QK(2,2)
+276 s. The CI portion (d <= 0.024, 8 steps, Kratos' mesh): 0.7 s.
+
+Needs python3-getfem (Debian), numpy, netCDF4. Exit code 77 (ctest: skipped) when GetFEM is
+missing (message), 1 when a step does not converge.
+"""
+import argparse
+import os
+import sys
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+NU = 0.3
+E = {"base": 3.0e8, "ring_inner": 1.0e11, "ring_outer": 1.0e9}
+RING = [(0.085, 0.09, 1e11, 0.3), (0.09, 0.095, 1e9, 0.3)]  # (r_in, r_out, E, nu): arch_theory
+
+
+def lame(e, nu=NU):
+    return e * nu / ((1 + nu) * (1 - 2 * nu)), e / (2 * (1 + nu))
+
+
+def names(var):
+    """Exodus names: each ends at its first NUL (the bytes after it are not defined)."""
+    out = []
+    for row in np.array(var[:], dtype="S1"):
+        chars = list(row)
+        end = chars.index(b"") if b"" in chars else len(chars)
+        out.append(b"".join(chars[:end]).decode("utf-8", "replace").strip())
+    return out
+
+
+def read_exodus(path):
+    """Nodes, blocks {name: connectivity (0-based, counter-clockwise)}, node sets, side sets
+    {name: [(element, 0-based in block order, side 1..4)]}, and all blocks' connectivity."""
+    import netCDF4
+    d = netCDF4.Dataset(path)
+    d.set_auto_mask(False)
+    x = np.stack([d.variables["coordx"][:], d.variables["coordy"][:]], axis=1)
+    blocks = {}
+    for i, n in enumerate(names(d.variables["eb_names"])):
+        conn = np.asarray(d.variables["connect%d" % (i + 1)][:]) - 1
+        if conn.shape[1] != 4:
+            raise SystemExit("%s: block %s is not QUAD4" % (path, n))
+        blocks[n] = conn
+    nsets = {n: np.asarray(d.variables["node_ns%d" % (i + 1)][:]) - 1
+             for i, n in enumerate(names(d.variables["ns_names"]))}
+    ssets = {n: list(zip(np.asarray(d.variables["elem_ss%d" % (i + 1)][:]) - 1,
+                         np.asarray(d.variables["side_ss%d" % (i + 1)][:])))
+             for i, n in enumerate(names(d.variables["ss_names"]))}
+    conn_all = np.concatenate([blocks[n] for n in blocks])
+    return x, blocks, nsets, ssets, conn_all
+
+
+class Body:
+    """One GetFEM mesh built from some Exodus blocks, a volume region per block."""
+
+    def __init__(self, gf, x, blocks, block_names, region_base):
+        self.mesh = gf.Mesh("empty", 2)
+        gt = gf.GeoTrans("GT_QK(2,1)")
+        self.regions = {}
+        for k, name in enumerate(block_names):
+            conn = blocks[name]
+            # GetFEM's QK(2,1) vertex order is (0,0), (1,0), (0,1), (1,1): Exodus 1, 2, 4, 3.
+            pts = np.transpose(x[conn[:, [0, 1, 3, 2]]], (2, 1, 0))
+            cvs = self.mesh.add_convex(gt, pts)
+            rid = region_base + k
+            self.mesh.set_region(rid, np.atleast_2d(cvs))
+            self.regions[name] = rid
+
+    def pids(self, nodes, x):
+        """GetFEM point ids of Exodus nodes (-1: not in this body)."""
+        return np.asarray(self.mesh.pid_from_coords(x[nodes].T, 1e-9), dtype=int)
+
+    def face_region(self, rid, nodes, x):
+        """The faces of this mesh whose vertices are all among the Exodus nodes `nodes`."""
+        p = self.pids(nodes, x)
+        p = p[p >= 0]
+        faces = self.mesh.faces_from_pid(p)
+        outer = self.mesh.outer_faces()
+        keep = set(map(tuple, outer.T))
+        faces = np.array([f for f in faces.T if tuple(f) in keep]).T
+        self.mesh.set_region(rid, faces)
+        return faces.shape[1] if faces.size else 0
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--mesh", default="double_arch.exo")
+    ap.add_argument("--d-max", type=float, default=0.075)
+    ap.add_argument("--steps", type=int, default=150)
+    ap.add_argument("--order", type=int, default=1, choices=(1, 2))
+    ap.add_argument("--r", type=float, default=None, help="augmentation parameter (Pa/m)")
+    ap.add_argument("--release", type=float, default=0.005, help="release distance (m)")
+    ap.add_argument("--slave", default="base", choices=("base", "ring"))
+    ap.add_argument("--mu", type=float, default=0.0, help="Coulomb friction coefficient")
+    ap.add_argument("--moduli", type=float, nargs=3, metavar=("BASE", "INNER", "OUTER"),
+                    help="Young's moduli in place of the input's (diagnostics only)")
+    ap.add_argument("--base-support", default="clamped", choices=("clamped", "roller"),
+                    help="roller: the base bottom slides in x (diagnostic only)")
+    ap.add_argument("--csv", default="")
+    ap.add_argument("--ring-check", action="store_true")
+    ap.add_argument("--max-res", type=float, default=1e-4,
+                    help="Newton: max |residual| (N/m) on the free rows")
+    ap.add_argument("--noisy", action="store_true")
+    a = ap.parse_args()
+    try:
+        import getfem as gf
+        gf.util_trace_level(0)
+    except ImportError:
+        print("getfem_double_arch.py: python3-getfem is not installed (Debian package "
+              "python3-getfem); nothing to compare")
+        return 77
+    t0 = time.process_time()
+    if a.moduli:
+        E.update(zip(("base", "ring_inner", "ring_outer"), a.moduli))
+    x, blocks, nsets, ssets, conn_all = read_exodus(a.mesh)
+    for need in ("base", "ring_inner", "ring_outer"):
+        if need not in blocks:
+            raise SystemExit("%s: block %s missing" % (a.mesh, need))
+    base = Body(gf, x, blocks, ["base"], 10)
+    ring = Body(gf, x, blocks, ["ring_inner", "ring_outer"], 20)
+    BOTTOM, TOP, CONTACT, ENDS = 1, 2, 3, 4
+
+    def side_nodes(name):  # Exodus QUAD4 side s joins nodes s and s + 1 (mod 4)
+        out = set()
+        for el, side in ssets[name]:
+            c = conn_all[el]
+            out.update((c[side - 1], c[side % 4]))
+        return np.array(sorted(out))
+
+    counts = (base.face_region(BOTTOM, side_nodes("base_bottom"), x),
+              base.face_region(TOP, side_nodes("base_top"), x),
+              ring.face_region(CONTACT, side_nodes("ring_contact"), x),
+              ring.face_region(ENDS, side_nodes("ring_ends"), x))
+    expect = tuple(len(ssets[n]) for n in ("base_bottom", "base_top", "ring_contact",
+                                           "ring_ends"))
+    if counts != expect:
+        raise SystemExit("%s: faces found %s, side sets have %s" % (a.mesh, counts, expect))
+    centre = ring.pids(nsets["ring_bottom"], x)
+    if len(centre) != 1 or centre[0] < 0:
+        raise SystemExit("%s: node set ring_bottom must be one ring node" % a.mesh)
+    print("mesh %s: base %d nodes %d quads, ring %d nodes %d quads; centre node at (%.4f, %.4f)"
+          % (a.mesh, base.mesh.nbpts(), base.mesh.nbcvs(), ring.mesh.nbpts(), ring.mesh.nbcvs(),
+             *x[nsets["ring_bottom"][0]]))
+
+    def fem(body, order):
+        mf = gf.MeshFem(body.mesh, 2)
+        mf.set_fem(gf.Fem("FEM_QK(2,%d)" % order))
+        return mf
+
+    im = "IM_GAUSS_PARALLELEPIPED(2,%d)" % (3 if a.order == 1 else 5)  # 2x2 / 3x3 Gauss
+    mfb, mfr = fem(base, a.order), fem(ring, a.order)
+    mimb, mimr = gf.MeshIm(base.mesh, gf.Integ(im)), gf.MeshIm(ring.mesh, gf.Integ(im))
+    md = gf.Model("real")
+    md.add_fem_variable("ub", mfb)
+    md.add_fem_variable("ur", mfr)
+
+    def piola(u, sfx):
+        f = "(Id(2)+Grad_%s)" % u
+        return "(mu_%s*(%s-Inv(%s)')+lam_%s*log(Det(%s))*Inv(%s)')" % (sfx, f, f, sfx, f, f)
+
+    # Lame constants as element-wise constant data (P0), one Neo-Hookean term per body.
+    for body, u, mim, sfx in ((base, "ub", mimb, "b"), (ring, "ur", mimr, "r")):
+        mf0 = gf.MeshFem(body.mesh, 1)
+        mf0.set_fem(gf.Fem("FEM_QK(2,0)"))
+        lam_v, mu_v = np.zeros(mf0.nbdof()), np.zeros(mf0.nbdof())
+        for name, rid in body.regions.items():
+            dofs = mf0.basic_dof_on_region(rid)
+            lam_v[dofs], mu_v[dofs] = lame(E[name])
+        md.add_initialized_fem_data("lam_" + sfx, mf0, lam_v)
+        md.add_initialized_fem_data("mu_" + sfx, mf0, mu_v)
+        md.add_nonlinear_term(mim, piola(u, sfx) + ":Grad_Test_" + u)
+
+    md.add_initialized_data("zero", [0.0, 0.0])
+    if a.base_support == "clamped":
+        md.add_Dirichlet_condition_with_simplification("ub", BOTTOM, "zero")
+        base_fixed = mfb.basic_dof_on_region(BOTTOM)
+    else:  # diagnostic: u_y = 0 on the bottom (multipliers), u_x = 0 at its middle node only
+        md.add_normal_Dirichlet_condition_with_multipliers(mimb, "ub", 1, BOTTOM)
+        md.add_initialized_data("pin_pt", [0.125, 0.0])
+        md.add_initialized_data("pin_dir", [1.0, 0.0])
+        md.add_pointwise_constraints_with_multipliers("ub", "pin_pt", "pin_dir")
+        base_fixed = []
+    md.add_initialized_data("dend", [0.0, 0.0])
+    md.add_Dirichlet_condition_with_simplification("ur", ENDS, "dend")
+
+    h = 0.25 / 50
+    r = a.r if a.r is not None else E["base"] / h
+    md.add_initialized_data("r", [r])
+    md.add_initialized_data("f", [a.mu])
+    md.add_initialized_data("alpha", [1.0])
+    ind = md.add_integral_large_sliding_contact_brick_raytracing("r", a.release, "f", "alpha")
+    w = {}  # Coulomb: the slip is measured from the displacement at the start of the step
+    if a.mu > 0:
+        for var, mf in (("ub", mfb), ("ur", mfr)):
+            md.add_fem_data("w_" + var, mf)
+            w[var] = "w_" + var
+    if a.slave == "base":
+        sl_mesh, sl_var, sl_mim, sl_reg = base.mesh, "ub", mimb, TOP
+        ms_var, ms_mim, ms_reg = "ur", mimr, CONTACT
+    else:
+        sl_mesh, sl_var, sl_mim, sl_reg = ring.mesh, "ur", mimr, CONTACT
+        ms_var, ms_mim, ms_reg = "ub", mimb, TOP
+    mfl = gf.MeshFem(sl_mesh, 2)
+    mfl.set_fem(gf.Fem("FEM_QK(2,%d)" % a.order))
+    md.add_filtered_fem_variable("lam_c", mfl, sl_reg)
+    md.add_slave_contact_boundary_to_large_sliding_contact_brick(ind, sl_mim, sl_reg, sl_var,
+                                                                 "lam_c", *[w[v] for v in w if v == sl_var])
+    md.add_master_contact_boundary_to_large_sliding_contact_brick(ind, ms_mim, ms_reg, ms_var,
+                                                                  *[w[v] for v in w if v == ms_var])
+
+    # The centre's y dof (and the inner bottom node's, when the mesh names it), the ring-end
+    # y dofs (for the reaction). A vector MeshFem interleaves the components (x, y per node).
+    pts_r = mfr.basic_dof_nodes()
+
+    def y_dof(node_set):
+        p = x[nsets[node_set][0]]
+        dofs = [i for i in range(1, mfr.nbdof(), 2) if np.hypot(*(pts_r[:, i] - p)) < 1e-9]
+        if len(dofs) != 1:
+            raise SystemExit("%s: no ring dof at node set %s" % (a.mesh, node_set))
+        return dofs[0]
+
+    cy_dof = y_dof("ring_bottom")
+    iy_dof = y_dof("ring_bottom_inner") if "ring_bottom_inner" in nsets else cy_dof
+    end_dofs = mfr.basic_dof_on_region(ENDS)
+    end_y = end_dofs[end_dofs % 2 == 1]
+
+    def end_force():
+        fint = gf.asm_generic(mimr, 1, piola("ur", "r") + ":Grad_Test_ur", -1, md,
+                              "select_output", "ur")
+        return float(np.sum(fint[end_y]))
+
+    # Rows of the residual that are equilibrium equations (not Dirichlet rows): the force
+    # residual the Newton test measures.
+    free = []
+    for var, mf, fixed in (("ub", mfb, base_fixed),
+                           ("ur", mfr, end_dofs)):
+        i0, n = md.interval_of_variable(var)
+        keep = np.ones(n, bool)
+        keep[np.asarray(fixed, int)] = False
+        free.append(i0 + np.nonzero(keep)[0])
+    free = np.concatenate(free)
+
+    rows = []
+    d_prev, d_target = 0.0, 0.0
+    dd0 = a.d_max / a.steps
+    for step in range(1, a.steps + 1):
+        d_target = min(a.d_max, step * dd0)
+        dd, d_now, total_it = d_target - d_prev, d_prev, 0
+        cuts = 0
+        while d_now < d_target - 1e-15:
+            d_try = min(d_target, d_now + dd)
+            md.set_variable("dend", [0.0, -d_try])
+            saved = md.from_variables()
+            for var, wname in w.items():
+                md.set_variable(wname, md.variable(var))
+            nit, conv = newton(gf, md, free, a)
+            total_it += nit
+            if conv:
+                d_now = d_try
+            else:
+                md.to_variables(saved)
+                cuts += 1
+                dd /= 2
+                if cuts > 6:
+                    print("step %d: no convergence at d = %.5f after 6 cut-backs" % (step, d_try))
+                    write(a.csv, rows)
+                    return 1
+        u = md.variable("ur")
+        fy = end_force()
+        rows.append((d_target, u[cy_dof], fy, total_it, u[iy_dof]))
+        print("step %3d  d = %.5f  u_centre = %+.6f  end force %+.4e N/m  newton %d%s"
+              % (step, d_target, u[cy_dof], fy, total_it, "  (%d cut-backs)" % cuts if cuts
+                 else ""), flush=True)
+        d_prev = d_target
+        if a.ring_check and step == 1:
+            sys.path.insert(0, HERE)
+            from arch_theory import arch_stiffness
+            k = arch_stiffness(RING)
+            ring_defl = d_target + u[cy_dof]
+            pred = abs(fy) / k
+            print("ring check: d = %.4f, end force %.4e N/m, ring deflection d - delta_c = "
+                  "%.4e, Castigliano F/k_ring = %.4e (k_ring = %.4e), ratio %.4f"
+                  % (d_target, abs(fy), ring_defl, pred, k, ring_defl / pred))
+    write(a.csv, rows)
+    print("getfem_double_arch.py: %d steps, %.1f s CPU" % (len(rows), time.process_time() - t0))
+    return 0
+
+
+def newton(gf, md, free, a):
+    """Full Newton on the whole model (GetFEM assembles the tangent and the residual; the
+    Dirichlet rows, by simplification, hold the distance to the imposed value). GetFEM's own
+    md.solve() is not used: its line search weighs those rows (m) against forces (N/m) and
+    stalls. Converged when max |R| over the free rows <= --max-res (N/m; the forces here are
+    1e5 to 1e7 N/m) and max |dx| <= 1e-12 m. Returns (iterations, converged); --noisy prints
+    the residuals."""
+    for it in range(1, 41):
+        md.assembly("build_all")
+        rhs = md.rhs()
+        res = np.abs(rhs[free]).max()
+        if not np.isfinite(res):
+            return it, False
+        dx = np.asarray(gf.linsolve_mumps(md.tangent_matrix(), rhs)).ravel()
+        step = np.abs(dx[free]).max()
+        if a.noisy:
+            print("     newton %2d  |R_free| = %.3e  |dx| = %.3e" % (it, res, step))
+        if not np.all(np.isfinite(dx)):
+            return it, False
+        if res <= a.max_res and step <= 1e-12:
+            return it, True
+        md.to_variables(md.from_variables() + dx)
+    return 40, False
+
+
+def write(path, rows):
+    if not path:
+        return
+    with open(path, "w") as f:
+        f.write("imposed_displacement[m],center_vertical_displacement[m],end_force_y[N/m],"
+                "newton,inner_bottom_vertical_displacement[m]\n")
+        for d, u, fy, it, ui in rows:
+            f.write("%.8g,%.10g,%.8g,%d,%.10g\n" % (d, u, fy, it, ui))
+    print("wrote %s" % path)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
