@@ -6,14 +6,18 @@ no symbol that two loaded libraries define strongly binds differently because of
     check_load_order.py <grout executable> <library,library,...>
 
 Runs `grout --help` (start-up and MPI_Init/MPI_Finalize) with LD_DEBUG=scopes,bindings and
-checks:
+LD_BIND_NOW=1 and checks:
   1. the global scope starts with the executable and then the given libraries, in order;
   2. every start-up binding of a symbol that two or more libraries of the scope define strongly
      (GLOBAL, not weak or unique: no C++ vague linkage) goes to a definer that no other definer
      depends on (through DT_NEEDED, transitively): the wrapper wins over what it wraps, as it
      does in the linker's natural breadth-first order (libblas.so.3 and liblapack.so.3 over
      libopenblas.so.0, ScaLAPACK over LAPACK, MUMPS's Fortran MPI sentinels over libmpi's).
-     Moving a wrapped library in front of its wrapper would fail here.
+     Moving a wrapped library in front of its wrapper would fail here;
+  3. one MUMPS build: Debian's plain MUMPS (libdmumps-*, libmumps_common-*: Amesos2's)
+     beside the PT-SCOTCH build Grout uses would replace the latter's common functions when
+     loaded before it (a driver that named the plain libmumps_common directly had
+     libdmumps_ptscotch's calls bound to it, and PT-SCOTCH orderings failed on 2 ranks).
 """
 import collections
 import glob
@@ -25,15 +29,15 @@ import tempfile
 
 
 def defined_symbols(path):
-    """Strongly defined dynamic symbols of `path` (GLOBAL, not UND)."""
+    """Strongly defined dynamic symbols of `path` (GLOBAL, not UND): {name: type}."""
     out = subprocess.run(["readelf", "--dyn-syms", "-W", path], capture_output=True,
                          text=True, check=True).stdout
-    strong = set()
+    strong = {}
     for row in out.splitlines():
         f = row.split()
         if len(f) < 8 or not f[0].endswith(":") or f[6] == "UND" or f[4] != "GLOBAL":
             continue
-        strong.add(f[7].split("@")[0])
+        strong[f[7].split("@")[0]] = f[3]
     return strong
 
 
@@ -47,8 +51,10 @@ def main():
     exe, expected = sys.argv[1], [n for n in sys.argv[2].split(",") if n]
     expected = [os.path.basename(n) for n in expected]
     with tempfile.TemporaryDirectory() as tmp:
+        # LD_BIND_NOW: the libraries not linked with BIND_NOW (MUMPS, ...) bind their calls at
+        # start-up too, so that every call --help never makes is checked.
         env = dict(os.environ, LD_DEBUG="scopes,bindings", LD_DEBUG_OUTPUT=tmp + "/ld",
-                   OPENBLAS_NUM_THREADS="1")
+                   LD_BIND_NOW="1", OPENBLAS_NUM_THREADS="1")
         subprocess.run([exe, "--help"], env=env, stdout=subprocess.DEVNULL,
                        stderr=subprocess.DEVNULL, check=True)
         logs = sorted(glob.glob(tmp + "/ld.*"), key=os.path.getsize)
@@ -66,6 +72,10 @@ def main():
     if names[1:1 + len(expected)] != expected:
         failures.append("scope does not start with the listed libraries:\n  expected %s\n  got      %s"
                         % (expected, names[1:1 + len(expected)]))
+    # 3. one MUMPS build.
+    plain = [n for n in names if re.match(r"lib(dmumps|mumps_common)-[0-9]", n)]
+    if plain and any("ptscotch" in n and "mumps" in n for n in names):
+        failures.append("Debian's plain MUMPS beside the PT-SCOTCH build: %s" % ", ".join(plain))
     # 2. strong definitions shared by several libraries bind to the outermost wrapper.
     libs = scope[1:]
     by_name = {os.path.basename(p): p for p in libs}
