@@ -1,11 +1,11 @@
 #include "nonlinear/klu_solve.hpp"
 
-#include <Teuchos_ScalarTraits.hpp>
 #include <assert.h>
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <Teuchos_ScalarTraits.hpp>
 
 #include <complex>
 #include <stdexcept>
