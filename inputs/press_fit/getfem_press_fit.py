@@ -19,7 +19,10 @@ press_fit.mdpa converted by tools/mdpa_to_exodus.py), read with netCDF4
   displacement at the start of the step), slave = the block bottom
   (contact_contact_slave_auto1), master = the channel top (contact_contact_master_auto1),
   multiplier on the slave's nodes (QK(2,1) trace), augmentation --r (Pa/m, default
-  E_block / h = 1e9 / 0.09), release distance --release (default 10 mm);
+  E_block / h, h the mean length of the slave's sides: 1e9 / 0.09 on Kratos' mesh; GetFEM's
+  curve holds for r = 1 ... 10 E_block / h; with E/(3h) or 100 E/h the block loses contact
+  while it crosses the ramp, R_x drops 4x in a step: docs/verification.md), release distance
+  --release (default 10 mm; 20 mm gives the same curve);
 - load path: t = 1.3 k / --steps, k = 1 ... --steps (default 150, Grout's full run and the
   figure's steps); Newton from the previous state, a step that does not converge is halved (up
   to 6 times);
@@ -66,7 +69,9 @@ def main():
     ap.add_argument("--t-end", type=float, default=T_END, help="stop at this time (steps of "
                     "1.3/--steps)")
     ap.add_argument("--mu", type=float, default=0.1, help="Coulomb friction coefficient")
-    ap.add_argument("--r", type=float, default=1e9 / 0.09, help="augmentation (Pa/m)")
+    ap.add_argument("--r", type=float, default=None,
+                    help="augmentation (Pa/m; default E_block / h)")
+    ap.add_argument("--r-factor", type=float, default=1.0, help="multiplies the default --r")
     ap.add_argument("--release", type=float, default=0.01, help="release distance (m)")
     ap.add_argument("--max-res", type=float, default=1e-3,
                     help="Newton: max |residual| (N/m) on the equilibrium rows")
@@ -127,7 +132,12 @@ def main():
     if md.interval_of_variable(mult)[1] != len(pts):
         raise SystemExit("getfem_press_fit.py: %s is not the support multipliers" % mult)
 
-    md.add_initialized_data("r", [a.r])
+    slave = side_nodes(ssets, conn_all, "contact_contact_slave_auto1")
+    h = np.ptp(x[slave, 0]) / len(ssets["contact_contact_slave_auto1"])
+    r = a.r if a.r is not None else a.r_factor * MODULI["parts_solid_auto2"][0] / h
+    md.add_initialized_data("r", [r])
+    print("contact: r = %.4g Pa/m (h = %.4g m), release distance %.3g m, mu = %g"
+          % (r, h, a.release, a.mu))
     md.add_initialized_data("f", [a.mu])
     md.add_initialized_data("alpha", [1.0])
     ind = md.add_integral_large_sliding_contact_brick_raytracing("r", a.release, "f", "alpha")
@@ -159,9 +169,8 @@ def main():
         return np.r_[np.full(ntop, top_uy(t)), np.full(len(left), push_ux(t))]
 
     def reactions():
-        # The multiplier is the force on the constraint's side: the support's force on the
-        # block is its negative (checked: the top pushes the block down, R_y < 0 ... see
-        # the sign test below).
+        # The support's force on the block is minus the multiplier (the top pushes the
+        # block down: R_y < 0, as Grout's reaction_displacement_displacement_auto1_y).
         m = np.asarray(md.variable(mult)).ravel()
         return -m[ntop:].sum(), -m[:ntop].sum()
 
