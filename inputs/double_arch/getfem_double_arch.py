@@ -55,77 +55,12 @@ import time
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
+from getfem_model import (Body, add_neo_hookean, neo_hookean_piola, newton as newton_loop,  # noqa: E402
+                          read_exodus, side_nodes)
 NU = 0.3
 E = {"base": 3.0e8, "ring_inner": 1.0e11, "ring_outer": 1.0e9}
 RING = [(0.085, 0.09, 1e11, 0.3), (0.09, 0.095, 1e9, 0.3)]  # (r_in, r_out, E, nu): arch_theory
-
-
-def lame(e, nu=NU):
-    return e * nu / ((1 + nu) * (1 - 2 * nu)), e / (2 * (1 + nu))
-
-
-def names(var):
-    """Exodus names: each ends at its first NUL (the bytes after it are not defined)."""
-    out = []
-    for row in np.array(var[:], dtype="S1"):
-        chars = list(row)
-        end = chars.index(b"") if b"" in chars else len(chars)
-        out.append(b"".join(chars[:end]).decode("utf-8", "replace").strip())
-    return out
-
-
-def read_exodus(path):
-    """Nodes, blocks {name: connectivity (0-based, counter-clockwise)}, node sets, side sets
-    {name: [(element, 0-based in block order, side 1..4)]}, and all blocks' connectivity."""
-    import netCDF4
-    d = netCDF4.Dataset(path)
-    d.set_auto_mask(False)
-    x = np.stack([d.variables["coordx"][:], d.variables["coordy"][:]], axis=1)
-    blocks = {}
-    for i, n in enumerate(names(d.variables["eb_names"])):
-        conn = np.asarray(d.variables["connect%d" % (i + 1)][:]) - 1
-        if conn.shape[1] != 4:
-            raise SystemExit("%s: block %s is not QUAD4" % (path, n))
-        blocks[n] = conn
-    nsets = {n: np.asarray(d.variables["node_ns%d" % (i + 1)][:]) - 1
-             for i, n in enumerate(names(d.variables["ns_names"]))}
-    ssets = {n: list(zip(np.asarray(d.variables["elem_ss%d" % (i + 1)][:]) - 1,
-                         np.asarray(d.variables["side_ss%d" % (i + 1)][:])))
-             for i, n in enumerate(names(d.variables["ss_names"]))}
-    conn_all = np.concatenate([blocks[n] for n in blocks])
-    return x, blocks, nsets, ssets, conn_all
-
-
-class Body:
-    """One GetFEM mesh built from some Exodus blocks, a volume region per block."""
-
-    def __init__(self, gf, x, blocks, block_names, region_base):
-        self.mesh = gf.Mesh("empty", 2)
-        gt = gf.GeoTrans("GT_QK(2,1)")
-        self.regions = {}
-        for k, name in enumerate(block_names):
-            conn = blocks[name]
-            # GetFEM's QK(2,1) vertex order is (0,0), (1,0), (0,1), (1,1): Exodus 1, 2, 4, 3.
-            pts = np.transpose(x[conn[:, [0, 1, 3, 2]]], (2, 1, 0))
-            cvs = self.mesh.add_convex(gt, pts)
-            rid = region_base + k
-            self.mesh.set_region(rid, np.atleast_2d(cvs))
-            self.regions[name] = rid
-
-    def pids(self, nodes, x):
-        """GetFEM point ids of Exodus nodes (-1: not in this body)."""
-        return np.asarray(self.mesh.pid_from_coords(x[nodes].T, 1e-9), dtype=int)
-
-    def face_region(self, rid, nodes, x):
-        """The faces of this mesh whose vertices are all among the Exodus nodes `nodes`."""
-        p = self.pids(nodes, x)
-        p = p[p >= 0]
-        faces = self.mesh.faces_from_pid(p)
-        outer = self.mesh.outer_faces()
-        keep = set(map(tuple, outer.T))
-        faces = np.array([f for f in faces.T if tuple(f) in keep]).T
-        self.mesh.set_region(rid, faces)
-        return faces.shape[1] if faces.size else 0
 
 
 def main():
@@ -166,17 +101,10 @@ def main():
     ring = Body(gf, x, blocks, ["ring_inner", "ring_outer"], 20)
     BOTTOM, TOP, CONTACT, ENDS = 1, 2, 3, 4
 
-    def side_nodes(name):  # Exodus QUAD4 side s joins nodes s and s + 1 (mod 4)
-        out = set()
-        for el, side in ssets[name]:
-            c = conn_all[el]
-            out.update((c[side - 1], c[side % 4]))
-        return np.array(sorted(out))
-
-    counts = (base.face_region(BOTTOM, side_nodes("base_bottom"), x),
-              base.face_region(TOP, side_nodes("base_top"), x),
-              ring.face_region(CONTACT, side_nodes("ring_contact"), x),
-              ring.face_region(ENDS, side_nodes("ring_ends"), x))
+    counts = tuple(body.face_region(rid, side_nodes(ssets, conn_all, name), x)
+                   for body, rid, name in ((base, BOTTOM, "base_bottom"), (base, TOP, "base_top"),
+                                           (ring, CONTACT, "ring_contact"),
+                                           (ring, ENDS, "ring_ends")))
     expect = tuple(len(ssets[n]) for n in ("base_bottom", "base_top", "ring_contact",
                                            "ring_ends"))
     if counts != expect:
@@ -200,21 +128,9 @@ def main():
     md.add_fem_variable("ub", mfb)
     md.add_fem_variable("ur", mfr)
 
-    def piola(u, sfx):
-        f = "(Id(2)+Grad_%s)" % u
-        return "(mu_%s*(%s-Inv(%s)')+lam_%s*log(Det(%s))*Inv(%s)')" % (sfx, f, f, sfx, f, f)
-
-    # Lame constants as element-wise constant data (P0), one Neo-Hookean term per body.
+    moduli = {name: (e, NU) for name, e in E.items()}
     for body, u, mim, sfx in ((base, "ub", mimb, "b"), (ring, "ur", mimr, "r")):
-        mf0 = gf.MeshFem(body.mesh, 1)
-        mf0.set_fem(gf.Fem("FEM_QK(2,0)"))
-        lam_v, mu_v = np.zeros(mf0.nbdof()), np.zeros(mf0.nbdof())
-        for name, rid in body.regions.items():
-            dofs = mf0.basic_dof_on_region(rid)
-            lam_v[dofs], mu_v[dofs] = lame(E[name])
-        md.add_initialized_fem_data("lam_" + sfx, mf0, lam_v)
-        md.add_initialized_fem_data("mu_" + sfx, mf0, mu_v)
-        md.add_nonlinear_term(mim, piola(u, sfx) + ":Grad_Test_" + u)
+        add_neo_hookean(gf, md, body, u, mim, sfx, moduli)
 
     md.add_initialized_data("zero", [0.0, 0.0])
     if a.base_support == "clamped":
@@ -271,7 +187,7 @@ def main():
     end_y = end_dofs[end_dofs % 2 == 1]
 
     def end_force():
-        fint = gf.asm_generic(mimr, 1, piola("ur", "r") + ":Grad_Test_ur", -1, md,
+        fint = gf.asm_generic(mimr, 1, neo_hookean_piola("ur", "r") + ":Grad_Test_ur", -1, md,
                               "select_output", "ur")
         return float(np.sum(fint[end_y]))
 
@@ -333,28 +249,8 @@ def main():
 
 
 def newton(gf, md, free, a):
-    """Full Newton on the whole model (GetFEM assembles the tangent and the residual; the
-    Dirichlet rows, by simplification, hold the distance to the imposed value). GetFEM's own
-    md.solve() is not used: its line search weighs those rows (m) against forces (N/m) and
-    stalls. Converged when max |R| over the free rows <= --max-res (N/m; the forces here are
-    1e5 to 1e7 N/m) and max |dx| <= 1e-12 m. Returns (iterations, converged); --noisy prints
-    the residuals."""
-    for it in range(1, 41):
-        md.assembly("build_all")
-        rhs = md.rhs()
-        res = np.abs(rhs[free]).max()
-        if not np.isfinite(res):
-            return it, False
-        dx = np.asarray(gf.linsolve_mumps(md.tangent_matrix(), rhs)).ravel()
-        step = np.abs(dx[free]).max()
-        if a.noisy:
-            print("     newton %2d  |R_free| = %.3e  |dx| = %.3e" % (it, res, step))
-        if not np.all(np.isfinite(dx)):
-            return it, False
-        if res <= a.max_res and step <= 1e-12:
-            return it, True
-        md.to_variables(md.from_variables() + dx)
-    return 40, False
+    """getfem_model.newton with --max-res and --noisy."""
+    return newton_loop(gf, md, free, a.max_res, a.noisy)
 
 
 def write(path, rows):

@@ -1,0 +1,135 @@
+"""Pieces shared by the independent GetFEM 5.4 checks (python3-getfem; Poulios & Renard's code):
+inputs/double_arch/getfem_double_arch.py and inputs/press_fit/getfem_press_fit.py.
+
+- read_exodus: Grout's QUAD4 Exodus mesh (nodes, blocks, node and side sets) with netCDF4;
+- Body: one GetFEM mesh from some Exodus blocks (a volume region per block), face regions from
+  Exodus nodes; two touching bodies are two meshes, so their coincident nodes stay apart;
+- lame, neo_hookean_piola: Grout's compressible Neo-Hookean (docs/input.md) in GWFL,
+  W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2, P = mu (F - F^-T) + lambda ln J F^-T, plane
+  strain (F the in-plane 2x2 block, F33 = 1);
+- add_neo_hookean: that term on a body, with element-wise (P0) Lame constants per block;
+- newton: a plain full Newton on GetFEM's tangent (GetFEM's md.solve() line search weighs
+  Dirichlet rows in m against forces in N/m and stalls).
+"""
+import numpy as np
+
+
+def lame(e, nu):
+    """(lambda, mu) from E and nu."""
+    return e * nu / ((1 + nu) * (1 - 2 * nu)), e / (2 * (1 + nu))
+
+
+def names(var):
+    """Exodus names: each ends at its first NUL (the bytes after it are not defined)."""
+    out = []
+    for row in np.array(var[:], dtype="S1"):
+        chars = list(row)
+        end = chars.index(b"") if b"" in chars else len(chars)
+        out.append(b"".join(chars[:end]).decode("utf-8", "replace").strip())
+    return out
+
+
+def read_exodus(path):
+    """Nodes, blocks {name: connectivity (0-based, counter-clockwise)}, node sets, side sets
+    {name: [(element, 0-based in block order, side 1..4)]}, and all blocks' connectivity."""
+    import netCDF4
+    d = netCDF4.Dataset(path)
+    d.set_auto_mask(False)
+    x = np.stack([d.variables["coordx"][:], d.variables["coordy"][:]], axis=1)
+    blocks = {}
+    for i, n in enumerate(names(d.variables["eb_names"])):
+        conn = np.asarray(d.variables["connect%d" % (i + 1)][:]) - 1
+        if conn.shape[1] != 4:
+            raise SystemExit("%s: block %s is not QUAD4" % (path, n))
+        blocks[n] = conn
+    nsets = {n: np.asarray(d.variables["node_ns%d" % (i + 1)][:]) - 1
+             for i, n in enumerate(names(d.variables["ns_names"]))}
+    ssets = {n: list(zip(np.asarray(d.variables["elem_ss%d" % (i + 1)][:]) - 1,
+                         np.asarray(d.variables["side_ss%d" % (i + 1)][:])))
+             for i, n in enumerate(names(d.variables["ss_names"]))}
+    conn_all = np.concatenate([blocks[n] for n in blocks])
+    return x, blocks, nsets, ssets, conn_all
+
+
+def side_nodes(ssets, conn_all, name):
+    """Exodus nodes of side set `name` (QUAD4 side s joins nodes s and s + 1, mod 4)."""
+    out = set()
+    for el, side in ssets[name]:
+        c = conn_all[el]
+        out.update((c[side - 1], c[side % 4]))
+    return np.array(sorted(out))
+
+
+class Body:
+    """One GetFEM mesh built from some Exodus blocks, a volume region per block."""
+
+    def __init__(self, gf, x, blocks, block_names, region_base):
+        self.mesh = gf.Mesh("empty", 2)
+        gt = gf.GeoTrans("GT_QK(2,1)")
+        self.regions = {}
+        for k, name in enumerate(block_names):
+            conn = blocks[name]
+            # GetFEM's QK(2,1) vertex order is (0,0), (1,0), (0,1), (1,1): Exodus 1, 2, 4, 3.
+            pts = np.transpose(x[conn[:, [0, 1, 3, 2]]], (2, 1, 0))
+            cvs = self.mesh.add_convex(gt, pts)
+            rid = region_base + k
+            self.mesh.set_region(rid, np.atleast_2d(cvs))
+            self.regions[name] = rid
+
+    def pids(self, nodes, x):
+        """GetFEM point ids of Exodus nodes (-1: not in this body)."""
+        return np.asarray(self.mesh.pid_from_coords(x[nodes].T, 1e-9), dtype=int)
+
+    def face_region(self, rid, nodes, x):
+        """The faces of this mesh whose vertices are all among the Exodus nodes `nodes`."""
+        p = self.pids(nodes, x)
+        p = p[p >= 0]
+        faces = self.mesh.faces_from_pid(p)
+        outer = self.mesh.outer_faces()
+        keep = set(map(tuple, outer.T))
+        faces = np.array([f for f in faces.T if tuple(f) in keep]).T
+        self.mesh.set_region(rid, faces)
+        return faces.shape[1] if faces.size else 0
+
+
+def neo_hookean_piola(u, sfx):
+    """GWFL: first Piola stress of variable u with Lame data lam_<sfx>, mu_<sfx>."""
+    f = "(Id(2)+Grad_%s)" % u
+    return "(mu_%s*(%s-Inv(%s)')+lam_%s*log(Det(%s))*Inv(%s)')" % (sfx, f, f, sfx, f, f)
+
+
+def add_neo_hookean(gf, md, body, u, mim, sfx, moduli):
+    """The Neo-Hookean internal virtual work of variable u on body; moduli {block name:
+    (E, nu)}; the Lame constants are element-wise (P0) data lam_<sfx>, mu_<sfx>."""
+    mf0 = gf.MeshFem(body.mesh, 1)
+    mf0.set_fem(gf.Fem("FEM_QK(2,0)"))
+    lam_v, mu_v = np.zeros(mf0.nbdof()), np.zeros(mf0.nbdof())
+    for name, rid in body.regions.items():
+        dofs = mf0.basic_dof_on_region(rid)
+        lam_v[dofs], mu_v[dofs] = lame(*moduli[name])
+    md.add_initialized_fem_data("lam_" + sfx, mf0, lam_v)
+    md.add_initialized_fem_data("mu_" + sfx, mf0, mu_v)
+    md.add_nonlinear_term(mim, neo_hookean_piola(u, sfx) + ":Grad_Test_" + u)
+
+
+def newton(gf, md, free, max_res, noisy=False, max_dx=1e-12, max_it=40):
+    """Full Newton on the whole model (GetFEM assembles the tangent and the residual; Dirichlet
+    rows by simplification hold the distance to the imposed value). Converged when
+    max |R| over the rows `free` (the equilibrium rows, N/m) <= max_res and max |dx| over them
+    <= max_dx (m). Returns (iterations, converged); noisy prints the residuals."""
+    for it in range(1, max_it + 1):
+        md.assembly("build_all")
+        rhs = md.rhs()
+        res = np.abs(rhs[free]).max()
+        if not np.isfinite(res):
+            return it, False
+        dx = np.asarray(gf.linsolve_mumps(md.tangent_matrix(), rhs)).ravel()
+        step = np.abs(dx[free]).max()
+        if noisy:
+            print("     newton %2d  |R_free| = %.3e  |dx| = %.3e" % (it, res, step))
+        if not np.all(np.isfinite(dx)):
+            return it, False
+        if res <= max_res and step <= max_dx:
+            return it, True
+        md.to_variables(md.from_variables() + dx)
+    return max_it, False
