@@ -133,3 +133,30 @@ def newton(gf, md, free, max_res, noisy=False, max_dx=1e-12, max_it=40):
             return it, True
         md.to_variables(md.from_variables() + dx)
     return max_it, False
+
+
+def advance(gf, md, free, apply, s_from, s_to, w, max_res, noisy=False, max_cuts=6):
+    """Take the load parameter from s_from to s_to: apply(s) sets the prescribed values for s;
+    before each try the friction's reference displacements w (model variable -> its copy)
+    are set to the last converged state; a failed Newton is undone and its increment halved,
+    at most max_cuts times. Returns (Newton iterations, cut-backs, converged, last s tried)."""
+    ds, s_now, total, cuts = s_to - s_from, s_from, 0, 0
+    eps = 1e-12 * abs(s_to - s_from)
+    s_try = s_to
+    while s_now < s_to - eps:
+        s_try = min(s_to, s_now + ds)
+        apply(s_try)
+        saved = md.from_variables()
+        for var, wname in w.items():
+            md.set_variable(wname, md.variable(var))
+        nit, conv = newton(gf, md, free, max_res, noisy)
+        total += nit
+        if conv:
+            s_now = s_try
+            continue
+        md.to_variables(saved)
+        cuts += 1
+        ds /= 2
+        if cuts > max_cuts:
+            return total, cuts, False, s_try
+    return total, cuts, True, s_try

@@ -53,14 +53,20 @@ def read_reference(name):
     return data[:, 0], data[:, 1]
 
 
-def centre_curve(path):
+def centre_curve(path, force=None):
+    """(d, u_centre) from a Grout Exodus file, the undeformed state first; with `force` (a
+    global variable's name) also that variable, 0 first."""
     r = Results(path)
     node = cc.node_set(r, "ring_bottom")
     if len(node) != 1:
         raise SystemExit("%s: node set ring_bottom has %d nodes, expected 1" % (path, len(node)))
     t = r.times()
     u = np.array([r.nodal("displ_y", step=k)[node[0]] for k in range(len(t))])
-    return np.concatenate([[0.0], RATE * t]), np.concatenate([[0.0], u])
+    d, u = np.concatenate([[0.0], RATE * t]), np.concatenate([[0.0], u])
+    if force is None:
+        return d, u
+    f = np.array([r.global_var(force, step=k) for k in range(len(t))])
+    return d, u, np.concatenate([[0.0], f])
 
 
 

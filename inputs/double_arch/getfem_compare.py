@@ -46,22 +46,14 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
-RATE = 0.4  # d = 0.4 t
+sys.path.insert(0, HERE)
 SKIP = 77
 
 
 def grout_curve(path):
     """(d, u_centre, end force) from a Grout Exodus file, with the undeformed state first."""
-    import contact_check as cc
-    from grout_results import Results
-    r = Results(path)
-    node = cc.node_set(r, "ring_bottom")
-    if len(node) != 1:
-        raise SystemExit("%s: node set ring_bottom has %d nodes, expected 1" % (path, len(node)))
-    t = r.times()
-    u = np.array([r.nodal("displ_y", step=k)[node[0]] for k in range(len(t))])
-    f = np.array([r.global_var("reaction_ring_ends_nodes_y", step=k) for k in range(len(t))])
-    return np.r_[0.0, RATE * t], np.r_[0.0, u], np.r_[0.0, f]
+    from check import centre_curve
+    return centre_curve(path, force="reaction_ring_ends_nodes_y")
 
 
 def getfem_curve(path):

@@ -56,7 +56,7 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
-from getfem_model import (Body, add_neo_hookean, neo_hookean_piola, newton as newton_loop,  # noqa: E402
+from getfem_model import (Body, add_neo_hookean, advance, neo_hookean_piola,  # noqa: E402
                           read_exodus, side_nodes)
 NU = 0.3
 E = {"base": 3.0e8, "ring_inner": 1.0e11, "ring_outer": 1.0e9}
@@ -207,26 +207,13 @@ def main():
     dd0 = a.d_max / a.steps
     for step in range(1, a.steps + 1):
         d_target = min(a.d_max, step * dd0)
-        dd, d_now, total_it = d_target - d_prev, d_prev, 0
-        cuts = 0
-        while d_now < d_target - 1e-15:
-            d_try = min(d_target, d_now + dd)
-            md.set_variable("dend", [0.0, -d_try])
-            saved = md.from_variables()
-            for var, wname in w.items():
-                md.set_variable(wname, md.variable(var))
-            nit, conv = newton(gf, md, free, a)
-            total_it += nit
-            if conv:
-                d_now = d_try
-            else:
-                md.to_variables(saved)
-                cuts += 1
-                dd /= 2
-                if cuts > 6:
-                    print("step %d: no convergence at d = %.5f after 6 cut-backs" % (step, d_try))
-                    write(a.csv, rows)
-                    return 1
+        total_it, cuts, conv, d_try = advance(
+            gf, md, free, lambda d: md.set_variable("dend", [0.0, -d]), d_prev, d_target, w,
+            a.max_res, a.noisy)
+        if not conv:
+            print("step %d: no convergence at d = %.5f after 6 cut-backs" % (step, d_try))
+            write(a.csv, rows)
+            return 1
         u = md.variable("ur")
         fy = end_force()
         rows.append((d_target, u[cy_dof], fy, total_it, u[iy_dof]))
@@ -246,11 +233,6 @@ def main():
     write(a.csv, rows)
     print("getfem_double_arch.py: %d steps, %.1f s CPU" % (len(rows), time.process_time() - t0))
     return 0
-
-
-def newton(gf, md, free, a):
-    """getfem_model.newton with --max-res and --noisy."""
-    return newton_loop(gf, md, free, a.max_res, a.noisy)
 
 
 def write(path, rows):

@@ -48,7 +48,7 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
-from getfem_model import Body, add_neo_hookean, newton, read_exodus, side_nodes  # noqa: E402
+from getfem_model import Body, add_neo_hookean, advance, read_exodus, side_nodes  # noqa: E402
 
 MODULI = {"parts_solid_auto1": (2.1e10, 0.3), "parts_solid_auto2": (1.0e9, 0.47)}
 T_END, T_PRESS = 1.3, 0.01
@@ -180,25 +180,13 @@ def main():
     nsteps = int(round(a.t_end / dt0))
     for step in range(1, nsteps + 1):
         t_target = step * dt0
-        dt, t_now, total_it, cuts = t_target - t_prev, t_prev, 0, 0
-        while t_now < t_target - 1e-14:
-            t_try = min(t_target, t_now + dt)
-            md.set_variable("sup_vals", values(t_try))
-            saved = md.from_variables()
-            for var, wname in w.items():
-                md.set_variable(wname, md.variable(var))
-            nit, conv = newton(gf, md, free, a.max_res, a.noisy)
-            total_it += nit
-            if conv:
-                t_now = t_try
-            else:
-                md.to_variables(saved)
-                cuts += 1
-                dt /= 2
-                if cuts > 6:
-                    print("step %d: no convergence at t = %.5f after 6 cut-backs" % (step, t_try))
-                    write(a.csv, rows)
-                    return 1
+        total_it, cuts, conv, t_try = advance(
+            gf, md, free, lambda t: md.set_variable("sup_vals", values(t)), t_prev, t_target, w,
+            a.max_res, a.noisy)
+        if not conv:
+            print("step %d: no convergence at t = %.5f after 6 cut-backs" % (step, t_try))
+            write(a.csv, rows)
+            return 1
         ub = np.asarray(md.variable("ub"))
         err = np.abs(sup_displacements(mfb, ub, pts, dirs) - values(t_target)).max()
         if err > 1e-9:
