@@ -6,6 +6,9 @@ Usage (working folder build/inputs/shallow_ironing, after the CI runs ci_frictio
 ci_frictional.yaml on 1 and 2 ranks):
   getfem_compare.py [--mu 0.3] [--plateau 1.3 1.4] [--tol-fy 0.01] [--tol-ratio 0.02]
                     [--tol-fx0 0.01] [--plot getfem_shallow_ironing.png]
+  getfem_compare.py --summary GETFEM_CSV --mu MU [--plateau 1.3 1.7]
+      Only prints F_x/F_y and the F_y plateau of a GetFEM run (e.g. the full-size mesh) in the
+      window, against the published curve.
 Runs getfem_shallow_ironing.py on shallow_ci.exo at the times Grout took (np1/CASE.csv), both
 cases (the frictional one with --mu: another value shows that the test can fail), and
 compares with np1/ and np2/CASE.csv. Exit 77 (ctest: skipped) when python3-getfem is missing.
@@ -169,6 +172,22 @@ def plot(path, curves, a):
     print("wrote %s" % path)
 
 
+def summary(a):
+    g = np.loadtxt(a.summary, delimiter=",", skiprows=1, ndmin=2)
+    t, fx, fy, nx = g[:, :4].T
+    win = (t >= a.plateau[0] - 1e-12) & (t <= a.plateau[1] + 1e-12)
+    t_ref, fy_ref, _ = reference(a.mu)
+    ref = fy_ref[(t_ref >= a.plateau[0]) & (t_ref <= a.plateau[1])].mean()
+    r = fx[win] / fy[win] / (a.mu if a.mu > 0 else 1.0)
+    print("%s: %d steps in t = [%g, %g]: F_x/F_y %.4f ... %.4f, mean %.4f%s; x-part of the "
+          "normal contact resultant / F_y %.4f ... %.4f; F_y plateau %.4e (published %.4e: "
+          "%+.1f %%)" % (a.summary, win.sum(), a.plateau[0], a.plateau[1], r.min(), r.max(),
+                         r.mean(), " mu" if a.mu > 0 else "", (-nx / fy)[win].min(),
+                         (-nx / fy)[win].max(), fy[win].mean(), ref,
+                         100 * (fy[win].mean() / ref - 1)))
+    return 0
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--mu", type=float, default=0.3, help="GetFEM's mu in the frictional case")
@@ -177,7 +196,10 @@ def main():
     ap.add_argument("--tol-ratio", type=float, default=0.02)
     ap.add_argument("--tol-fx0", type=float, default=0.01)
     ap.add_argument("--plot", default="getfem_shallow_ironing.png")
+    ap.add_argument("--summary", default="", help="GetFEM CSV: print its window only")
     a = ap.parse_args()
+    if a.summary:
+        return summary(a)
     if importlib.util.find_spec("getfem") is None:
         print("getfem_compare.py: python3-getfem is not installed; skipped")
         return SKIP
