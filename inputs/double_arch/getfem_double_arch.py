@@ -56,8 +56,8 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
-from getfem_model import (Body, add_neo_hookean, advance, neo_hookean_piola,  # noqa: E402
-                          read_exodus, side_nodes)
+from getfem_model import (Body, add_large_sliding_contact, add_neo_hookean, advance,  # noqa: E402
+                          neo_hookean_piola, read_exodus, side_nodes)
 NU = 0.3
 E = {"base": 3.0e8, "ring_inner": 1.0e11, "ring_outer": 1.0e9}
 RING = [(0.085, 0.09, 1e11, 0.3), (0.09, 0.095, 1e9, 0.3)]  # (r_in, r_out, E, nu): arch_theory
@@ -147,28 +147,12 @@ def main():
 
     h = 0.25 / 50
     r = a.r if a.r is not None else E["base"] / h
-    md.add_initialized_data("r", [r])
-    md.add_initialized_data("f", [a.mu])
-    md.add_initialized_data("alpha", [1.0])
-    ind = md.add_integral_large_sliding_contact_brick_raytracing("r", a.release, "f", "alpha")
-    w = {}  # Coulomb: the slip is measured from the displacement at the start of the step
-    if a.mu > 0:
-        for var, mf in (("ub", mfb), ("ur", mfr)):
-            md.add_fem_data("w_" + var, mf)
-            w[var] = "w_" + var
-    if a.slave == "base":
-        sl_mesh, sl_var, sl_mim, sl_reg = base.mesh, "ub", mimb, TOP
-        ms_var, ms_mim, ms_reg = "ur", mimr, CONTACT
-    else:
-        sl_mesh, sl_var, sl_mim, sl_reg = ring.mesh, "ur", mimr, CONTACT
-        ms_var, ms_mim, ms_reg = "ub", mimb, TOP
-    mfl = gf.MeshFem(sl_mesh, 2)
-    mfl.set_fem(gf.Fem("FEM_QK(2,%d)" % a.order))
-    md.add_filtered_fem_variable("lam_c", mfl, sl_reg)
-    md.add_slave_contact_boundary_to_large_sliding_contact_brick(ind, sl_mim, sl_reg, sl_var,
-                                                                 "lam_c", *[w[v] for v in w if v == sl_var])
-    md.add_master_contact_boundary_to_large_sliding_contact_brick(ind, ms_mim, ms_reg, ms_var,
-                                                                  *[w[v] for v in w if v == ms_var])
+    # Coulomb: the slip is measured from the displacement at the start of the step (w).
+    bodies = {"base": ("ub", mfb, base.mesh, mimb, TOP),
+              "ring": ("ur", mfr, ring.mesh, mimr, CONTACT)}
+    other = "ring" if a.slave == "base" else "base"
+    ind, w = add_large_sliding_contact(gf, md, r, a.release, a.mu, bodies[a.slave],
+                                       bodies[other][:2] + bodies[other][3:], order=a.order)
 
     # The centre's y dof (and the inner bottom node's, when the mesh names it), the ring-end
     # y dofs (for the reaction). A vector MeshFem interleaves the components (x, y per node).

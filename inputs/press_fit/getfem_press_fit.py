@@ -48,7 +48,8 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
-from getfem_model import Body, add_neo_hookean, advance, read_exodus, side_nodes  # noqa: E402
+from getfem_model import (Body, add_large_sliding_contact, add_neo_hookean, advance,  # noqa: E402
+                          read_exodus, side_nodes)
 
 MODULI = {"parts_solid_auto1": (2.1e10, 0.3), "parts_solid_auto2": (1.0e9, 0.47)}
 T_END, T_PRESS = 1.3, 0.01
@@ -135,24 +136,11 @@ def main():
     slave = side_nodes(ssets, conn_all, "contact_contact_slave_auto1")
     h = np.ptp(x[slave, 0]) / len(ssets["contact_contact_slave_auto1"])
     r = a.r if a.r is not None else a.r_factor * MODULI["parts_solid_auto2"][0] / h
-    md.add_initialized_data("r", [r])
     print("contact: r = %.4g Pa/m (h = %.4g m), release distance %.3g m, mu = %g"
           % (r, h, a.release, a.mu))
-    md.add_initialized_data("f", [a.mu])
-    md.add_initialized_data("alpha", [1.0])
-    ind = md.add_integral_large_sliding_contact_brick_raytracing("r", a.release, "f", "alpha")
-    w = {}
-    if a.mu > 0:
-        for var, mf in (("ub", mfb), ("uc", mfc)):
-            md.add_fem_data("w_" + var, mf)
-            w[var] = "w_" + var
-    mfl = gf.MeshFem(blk.mesh, 2)
-    mfl.set_fem(gf.Fem("FEM_QK(2,1)"))
-    md.add_filtered_fem_variable("lam_c", mfl, SLAVE)
-    md.add_slave_contact_boundary_to_large_sliding_contact_brick(
-        ind, mimb, SLAVE, "ub", "lam_c", *([w["ub"]] if w else []))
-    md.add_master_contact_boundary_to_large_sliding_contact_brick(
-        ind, mimc, MASTER, "uc", *([w["uc"]] if w else []))
+    ind, w = add_large_sliding_contact(gf, md, r, a.release, a.mu,
+                                       ("ub", mfb, blk.mesh, mimb, SLAVE),
+                                       ("uc", mfc, mimc, MASTER))
 
     # Equilibrium rows: all of ub (the supports act through the multipliers) and uc but its
     # clamped dofs.

@@ -47,8 +47,8 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
-from getfem_model import (Body, add_neo_hookean, advance, neo_hookean_piola,  # noqa: E402
-                          read_exodus, side_nodes)
+from getfem_model import (Body, add_large_sliding_contact, add_neo_hookean, advance,  # noqa: E402
+                          neo_hookean_piola, read_exodus, side_nodes)
 
 MODULI = {"die": (6.896e9, 0.32), "block": (6.896e8, 0.32)}
 
@@ -118,24 +118,11 @@ def main():
     seg = np.diff(x[slave[np.argsort(x[slave, 0])]], axis=0)
     h = np.hypot(seg[:, 0], seg[:, 1]).mean()
     r = a.r if a.r is not None else a.r_factor * MODULI["block"][0] / h
-    md.add_initialized_data("r", [r])
     print("contact: r = %.4g Pa/m (h = %.4g), release distance %.3g, mu = %g"
           % (r, h, a.release, a.mu))
-    md.add_initialized_data("f", [a.mu])
-    md.add_initialized_data("alpha", [1.0])
-    ind = md.add_integral_large_sliding_contact_brick_raytracing("r", a.release, "f", "alpha")
-    w = {}
-    if a.mu > 0:
-        for var, mf in (("ud", mfd), ("ub", mfb)):
-            md.add_fem_data("w_" + var, mf)
-            w[var] = "w_" + var
-    mfl = gf.MeshFem(die.mesh, 2)
-    mfl.set_fem(gf.Fem("FEM_QK(2,1)"))
-    md.add_filtered_fem_variable("lam_c", mfl, SLAVE)
-    md.add_slave_contact_boundary_to_large_sliding_contact_brick(
-        ind, mimd, SLAVE, "ud", "lam_c", *([w["ud"]] if w else []))
-    md.add_master_contact_boundary_to_large_sliding_contact_brick(
-        ind, mimb, MASTER, "ub", *([w["ub"]] if w else []))
+    ind, w = add_large_sliding_contact(gf, md, r, a.release, a.mu,
+                                       ("ud", mfd, die.mesh, mimd, SLAVE),
+                                       ("ub", mfb, mimb, MASTER))
 
     # Equilibrium rows: all but the supported dofs; the die top's dofs (x, y interleaved).
     free, top_dofs = [], None
