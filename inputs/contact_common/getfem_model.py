@@ -1,5 +1,9 @@
 """Pieces shared by the independent GetFEM 5.4 checks (python3-getfem; Poulios & Renard's code):
-inputs/double_arch/getfem_double_arch.py and inputs/press_fit/getfem_press_fit.py.
+inputs/double_arch/getfem_double_arch.py, inputs/press_fit/getfem_press_fit.py and
+inputs/shallow_ironing/getfem_shallow_ironing.py.
+
+- import_getfem: the module, or None when python3-getfem is missing (the checks skip: 77);
+- read_mesh: read_exodus with the element blocks a check needs;
 
 - read_exodus: Grout's QUAD4 Exodus mesh (nodes, blocks, node and side sets) with netCDF4;
 - Body: one GetFEM mesh from some Exodus blocks (a volume region per block), face regions from
@@ -10,6 +14,8 @@ inputs/double_arch/getfem_double_arch.py and inputs/press_fit/getfem_press_fit.p
 - add_neo_hookean: that term on a body, with element-wise (P0) Lame constants per block;
 - newton: a plain full Newton on GetFEM's tangent (GetFEM's md.solve() line search weighs
   Dirichlet rows in m against forces in N/m and stalls).
+- advance: one load increment with cut-backs, the friction's start-of-step copies set first;
+- add_large_sliding_contact: Poulios & Renard's integral large-sliding contact brick.
 """
 import numpy as np
 
@@ -188,3 +194,25 @@ def add_large_sliding_contact(gf, md, r, release, mu, slave, master, order=1):
     md.add_master_contact_boundary_to_large_sliding_contact_brick(
         ind, m_mim, m_region, m_var, *([w[m_var]] if w else []))
     return ind, w
+
+
+def import_getfem(script):
+    """GetFEM's Python module with its trace output off; None, after a message naming
+    `script`, when python3-getfem is not installed (the checks then exit 77: skipped)."""
+    try:
+        import getfem as gf
+    except ImportError:
+        print("%s: python3-getfem is not installed (Debian package python3-getfem); nothing to "
+              "compare" % script)
+        return None
+    gf.util_trace_level(0)
+    return gf
+
+
+def read_mesh(path, needed_blocks):
+    """read_exodus(path), refusing a mesh without one of the element blocks named."""
+    x, blocks, nsets, ssets, conn_all = read_exodus(path)
+    for need in needed_blocks:
+        if need not in blocks:
+            raise SystemExit("%s: block %s missing" % (path, need))
+    return x, blocks, nsets, ssets, conn_all

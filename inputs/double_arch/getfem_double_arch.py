@@ -57,7 +57,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
 from getfem_model import (Body, add_large_sliding_contact, add_neo_hookean, advance,  # noqa: E402
-                          neo_hookean_piola, read_exodus, side_nodes)
+                          neo_hookean_piola, import_getfem, read_mesh, side_nodes)
 NU = 0.3
 E = {"base": 3.0e8, "ring_inner": 1.0e11, "ring_outer": 1.0e9}
 RING = [(0.085, 0.09, 1e11, 0.3), (0.09, 0.095, 1e9, 0.3)]  # (r_in, r_out, E, nu): arch_theory
@@ -83,20 +83,13 @@ def main():
                     help="Newton: max |residual| (N/m) on the free rows")
     ap.add_argument("--noisy", action="store_true")
     a = ap.parse_args()
-    try:
-        import getfem as gf
-        gf.util_trace_level(0)
-    except ImportError:
-        print("getfem_double_arch.py: python3-getfem is not installed (Debian package "
-              "python3-getfem); nothing to compare")
+    gf = import_getfem("getfem_double_arch.py")
+    if gf is None:
         return 77
     t0 = time.process_time()
     if a.moduli:
         E.update(zip(("base", "ring_inner", "ring_outer"), a.moduli))
-    x, blocks, nsets, ssets, conn_all = read_exodus(a.mesh)
-    for need in ("base", "ring_inner", "ring_outer"):
-        if need not in blocks:
-            raise SystemExit("%s: block %s missing" % (a.mesh, need))
+    x, blocks, nsets, ssets, conn_all = read_mesh(a.mesh, ("base", "ring_inner", "ring_outer"))
     base = Body(gf, x, blocks, ["base"], 10)
     ring = Body(gf, x, blocks, ["ring_inner", "ring_outer"], 20)
     BOTTOM, TOP, CONTACT, ENDS = 1, 2, 3, 4

@@ -49,7 +49,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
 from getfem_model import (Body, add_large_sliding_contact, add_neo_hookean, advance,  # noqa: E402
-                          read_exodus, side_nodes)
+                          import_getfem, read_mesh, side_nodes)
 
 MODULI = {"parts_solid_auto1": (2.1e10, 0.3), "parts_solid_auto2": (1.0e9, 0.47)}
 T_END, T_PRESS = 1.3, 0.01
@@ -79,18 +79,11 @@ def main():
     ap.add_argument("--csv", default="")
     ap.add_argument("--noisy", action="store_true")
     a = ap.parse_args()
-    try:
-        import getfem as gf
-        gf.util_trace_level(0)
-    except ImportError:
-        print("getfem_press_fit.py: python3-getfem is not installed (Debian package "
-              "python3-getfem); nothing to compare")
+    gf = import_getfem("getfem_press_fit.py")
+    if gf is None:
         return 77
     t0 = time.process_time()
-    x, blocks, nsets, ssets, conn_all = read_exodus(a.mesh)
-    for need in MODULI:
-        if need not in blocks:
-            raise SystemExit("%s: block %s missing" % (a.mesh, need))
+    x, blocks, nsets, ssets, conn_all = read_mesh(a.mesh, MODULI)
     chan = Body(gf, x, blocks, ["parts_solid_auto1"], 10)
     blk = Body(gf, x, blocks, ["parts_solid_auto2"], 20)
     BOTTOM, MASTER, SLAVE = 1, 2, 3

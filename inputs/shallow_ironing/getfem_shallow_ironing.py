@@ -48,7 +48,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
 from getfem_model import (Body, add_large_sliding_contact, add_neo_hookean, advance,  # noqa: E402
-                          neo_hookean_piola, read_exodus, side_nodes)
+                          neo_hookean_piola, import_getfem, read_mesh, side_nodes)
 
 MODULI = {"die": (6.896e9, 0.32), "block": (6.896e8, 0.32)}
 
@@ -73,18 +73,11 @@ def main():
     ap.add_argument("--csv", default="")
     ap.add_argument("--noisy", action="store_true")
     a = ap.parse_args()
-    try:
-        import getfem as gf
-        gf.util_trace_level(0)
-    except ImportError:
-        print("getfem_shallow_ironing.py: python3-getfem is not installed (Debian package "
-              "python3-getfem); nothing to compare")
+    gf = import_getfem("getfem_shallow_ironing.py")
+    if gf is None:
         return 77
     t0 = time.process_time()
-    x, blocks, nsets, ssets, conn_all = read_exodus(a.mesh)
-    for need in MODULI:
-        if need not in blocks:
-            raise SystemExit("%s: block %s missing" % (a.mesh, need))
+    x, blocks, nsets, ssets, conn_all = read_mesh(a.mesh, MODULI)
     die = Body(gf, x, blocks, ["die"], 10)
     blk = Body(gf, x, blocks, ["block"], 20)
     TOP, BOTTOM, SLAVE, MASTER = 1, 2, 3, 4
