@@ -478,13 +478,12 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   if (!(s.analysed && s.n == n && keys == s.last_keys))
     missing = int(!(s.analysed && s.n == n && locate(s.pattern, keys, sorted_prefix, s.position)));
   MPI_Allreduce(MPI_IN_PLACE, &missing, 1, MPI_INT, MPI_MAX, mpi_comm);
-  // Schur updates: the last factorised matrix (pattern and values) is the base. On one
-  // process only: MUMPS's centralised Schur complement (ICNTL(19) = 1) is the root of the
-  // elimination tree on rank 0 alone, where MUMPS otherwise factorises the root on all ranks,
-  // and the dense update runs on rank 0 too; with the patterns also changing more often on
-  // 2 ranks (5 analyses instead of 3 on the 11.0 k-node spheres), the set is reused twice
-  // and the run is not faster (docs/performance.md, "3D 11k on 1 rank ... (pattern9)").
-  const bool updates = s.options.symmetric && s.options.schur_updates && comm.getSize() == 1;
+  // Schur updates: the last factorised matrix (pattern and values) is the base. On any number
+  // of ranks: on 2, MUMPS's centralised Schur complement (ICNTL(19) = 1) and the dense update
+  // run on rank 0 alone and the set is reused for 2 of 7 iterations on the 11.0 k-node spheres
+  // (5 analyses), yet the run takes 0.86x the wall time of refactorising every time on a quiet
+  // machine (docs/performance.md, "Schur updates on 2 ranks").
+  const bool updates = s.options.symmetric && s.options.schur_updates;
   const bool have_base =
       updates && s.analysed && s.factorised && s.n == n && !s.base_values.empty();
   std::vector<long long> base_pattern;

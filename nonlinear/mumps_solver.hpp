@@ -34,8 +34,7 @@ struct MumpsOptions {
   /// rank hands MUMPS its rows (the fronts are factorised on all ranks; rounding differs).
   bool gather = false;
   /// true (symmetric positive definite matrices only; LinearSolver sets it for the symmetric
-  /// reduction, it is no input key; used on one MPI process only): when a new matrix differs
-  /// from the last factorised one
+  /// reduction, it is no input key): when a new matrix differs from the last factorised one
   /// only in rows that an analysis put into the Schur set, solve it with a dense update of
   /// the Schur complement instead of a new factorisation (schur_update.hpp). The Schur set is
   /// chosen at an analysis that the pattern requires anyway: the rows that changed since the

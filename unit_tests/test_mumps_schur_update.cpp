@@ -5,8 +5,7 @@
 // (a fresh solver, no Schur set) to 1e-12 with |b − A x|/|b| at round-off; the statistics
 // show which path was taken: a new pattern → analysis with the changed rows as Schur set; a
 // change inside that set → a dense update and no factorisation; a change outside → a new
-// factorisation with the same analysis. On 2 ranks (where the updates are off) every matrix is
-// factorised, with the same answers.
+// factorisation with the same analysis. The same paths on 1 and 2 ranks.
 
 #include <gtest/gtest.h>
 
@@ -121,9 +120,6 @@ TEST(SchurUpdate, DenseCholeskyOfUpdatedSchurComplement) {
 TEST(SchurUpdate, SolvesWithoutRefactorisingWhileOnlyTheSetChanges) {
   MumpsSolver solver(symmetric(true));
   const auto& stats = solver.statistics();
-  // On several ranks the updates are off (MumpsOptions::schur_updates): every new matrix is
-  // factorised, with the same answers.
-  const bool one = Tpetra::getDefaultComm()->getSize() == 1;
   expect_solution(solver, grid(false, 0.0, 0.0, 0.0));  // first: no base, no Schur set
   EXPECT_EQ(stats.analyses, 1);
   EXPECT_EQ(stats.schur_size, 0);
@@ -136,21 +132,21 @@ TEST(SchurUpdate, SolvesWithoutRefactorisingWhileOnlyTheSetChanges) {
   expect_solution(solver, grid(true, 0.7, 0.2, 0.0));
   EXPECT_EQ(stats.analyses, 2);
   EXPECT_EQ(stats.factorisations, 3);
-  EXPECT_EQ(stats.schur_size, one ? 30 : 0);  // the 6 × 5 patch rows
+  EXPECT_EQ(stats.schur_size, 30);  // the 6 × 5 patch rows
   // Values change inside the patch only: dense update, no factorisation.
   expect_solution(solver, grid(true, 1.1, -0.2, 0.0));
   expect_solution(solver, grid(true, 0.05, 0.5, 0.0));
-  EXPECT_EQ(stats.factorisations, one ? 3 : 5);
-  EXPECT_EQ(stats.schur_updates, one ? 2 : 0);
+  EXPECT_EQ(stats.factorisations, 3);
+  EXPECT_EQ(stats.schur_updates, 2);
   // A change outside the set: a factorisation with the same analysis (the new base).
   expect_solution(solver, grid(true, 0.05, 0.5, 0.25));
   EXPECT_EQ(stats.analyses, 2);
-  EXPECT_EQ(stats.factorisations, one ? 4 : 6);
-  EXPECT_EQ(stats.schur_updates, one ? 2 : 0);
+  EXPECT_EQ(stats.factorisations, 4);
+  EXPECT_EQ(stats.schur_updates, 2);
   // ... and updates relative to it again.
   expect_solution(solver, grid(true, 0.4, 0.1, 0.25));
-  EXPECT_EQ(stats.factorisations, one ? 4 : 7);
-  EXPECT_EQ(stats.schur_updates, one ? 3 : 0);
+  EXPECT_EQ(stats.factorisations, 4);
+  EXPECT_EQ(stats.schur_updates, 3);
   EXPECT_EQ(stats.solves, 7);
 }
 
