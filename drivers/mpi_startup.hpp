@@ -55,14 +55,11 @@ inline bool every_open_mpi_rank_on_this_machine() {
 
 /// Call before MPI_Init (e.g. before Tpetra::ScopeGuard).
 inline void prefer_local_mpi_startup() {
-  if (every_open_mpi_rank_on_this_machine()) {
-    setenv("OMPI_MCA_pml", "ob1", 0);  // 0: keep the user's value
-    setenv("OMPI_MCA_btl", "self,vader", 0);
-    return;
-  }
-  if (launched_by_mpi_launcher()) return;
-  setenv("OMPI_MCA_pml", "ob1", 0);
+  const bool launched = launched_by_mpi_launcher();
+  if (launched && !every_open_mpi_rank_on_this_machine()) return;
+  setenv("OMPI_MCA_pml", "ob1", 0);  // 0: keep the user's value
   setenv("OMPI_MCA_btl", "self,vader", 0);
+  if (launched) return;  // the rest is for a singleton only
   setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
   setenv("OMPI_MCA_orte_create_session_dirs", "0", 0);
   setenv("OMPI_MCA_coll", "self,basic,libnbc", 0);

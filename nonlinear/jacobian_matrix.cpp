@@ -17,7 +17,7 @@ Teuchos::RCP<Matrix> jacobian_matrix(const Matrix& K_solid, const Teuchos::RCP<c
   const auto K = K_solid.getLocalMatrixHost();
   if (n_u > n_rows) throw std::logic_error("jacobian_matrix: K_solid has more rows than J");
 
-  // The terms of each local row, in their (row, key) order (a stable counting sort).
+  // The terms of each local row (a counting sort by row), each row's in key order.
   std::vector<LO> term_row(terms.size());
   std::vector<std::size_t> term_start(std::size_t(n_rows) + 1, 0);
   for (std::size_t t = 0; t < terms.size(); ++t) {
@@ -31,6 +31,10 @@ Teuchos::RCP<Matrix> jacobian_matrix(const Matrix& K_solid, const Teuchos::RCP<c
     std::vector<std::size_t> next(term_start.begin(), term_start.end() - 1);
     for (std::size_t t = 0; t < terms.size(); ++t) term_order[next[term_row[t]]++] = t;
   }
+  for (LO i = 0; i < n_rows; ++i)
+    std::sort(term_order.begin() + std::ptrdiff_t(term_start[i]),
+              term_order.begin() + std::ptrdiff_t(term_start[i + 1]),
+              [&](std::size_t a, std::size_t b) { return terms[a].key < terms[b].key; });
 
   // Column map: K_solid's columns in its order (its local indices carry over), then the other
   // columns of the terms and of the multiplier diagonals, ascending (on one rank the column

@@ -12,7 +12,7 @@
 namespace grout {
 
 /// One contact term J(row, col) += value. `key` orders the terms of one row: equal
-/// (row, col) terms are summed in key order.
+/// (row, col) terms are summed in key order, whatever order they come in.
 struct JacobianTerm {
   GO row, col;
   long long key;
@@ -21,9 +21,9 @@ struct JacobianTerm {
 
 /// J on `map` (owned displacement rows first, in the order of K_solid's row map, then owned
 /// multiplier rows): row i < K_solid's local rows is K_solid's row i, plus `terms` (owned
-/// rows only, sorted by (row, key)), plus a stored zero diagonal in each multiplier row.
-/// Every entry (r, c) is the sum, in this order, of K_solid(r, c) and the terms of (r, c) in
-/// key order: the same bits on any number of ranks when K_solid's and the terms' are.
+/// rows only, in any order; keys unique within a row), plus a stored zero diagonal in each
+/// multiplier row. Every entry (r, c) is the sum, in this order, of K_solid(r, c) and the terms of
+/// (r, c) in key order: the same bits on any number of ranks when K_solid's and the terms' are.
 /// Fill-complete on (map, map); collective.
 Teuchos::RCP<Matrix> jacobian_matrix(const Matrix& K_solid, const Teuchos::RCP<const Map>& map,
                                      const std::vector<JacobianTerm>& terms);

@@ -847,11 +847,9 @@ bool MechanicsProblem::jacobian(const Vector&, Teuchos::RCP<Matrix>& J) {
     const std::vector<double> received = exchange_with_ranks(send_values, raw_comm_);
     for (std::size_t e = 0; e < received.size(); ++e)
       entries.push_back({ids[3 * e], ids[3 * e + 1], ids[3 * e + 2], received[e]});
-    // Each row's entries in (slave node, emission) order: duplicates add up in one order.
-    std::sort(entries.begin(), entries.end(), [](const JacobianTerm& a, const JacobianTerm& b) {
-      return a.row < b.row || (a.row == b.row && a.key < b.key);
-    });
   }
+  // Each row's terms are summed in key = (slave node, emission) order: one order on any
+  // number of ranks.
   J = jacobian_matrix(*K_solid_, map_, entries);
 
   // Prescribed dofs: rows and columns eliminated, diagonal kept (their update is zero).

@@ -14,33 +14,13 @@
 #include "assembly/solid_problem.hpp"
 #include "io/mesh_generators.hpp"
 #include "nonlinear/mechanics_problem.hpp"
+#include "unit_tests/two_block_contact_input.hpp"
 
 namespace grout {
 namespace {
 
 Input contact_input(int dim, ContactKind type, double mu, StrainKind strain) {
-  Input input;
-  input.file = "test.yaml";
-  input.model.dimension = dim;
-  input.model.strain = strain;
-  for (const char* block : {"lower", "upper"}) {
-    MaterialInput m;
-    m.name = block;
-    m.block = block;
-    m.youngs_modulus = std::string(block) == "lower" ? 1000.0 : 3000.0;
-    m.poissons_ratio = 0.3;
-    if (strain == StrainKind::finite) m.law = MaterialLaw::neo_hookean;
-    input.materials.push_back(m);
-  }
-  ContactInput c;
-  c.name = "interface";
-  c.slave = "upper_bottom";
-  c.master = "lower_top";
-  c.geometry = ContactGeometry::current;
-  c.type = type;
-  c.friction_coefficient = mu;
-  input.contact.push_back(c);
-  return input;
+  return two_block_bodies(dim, type, mu, ContactGeometry::current, strain);
 }
 
 // Random displacements that press the upper body into the lower one (so most slave nodes

@@ -15,7 +15,8 @@ inputs/shallow_ironing/getfem_shallow_ironing.py.
 - newton: a plain full Newton on GetFEM's tangent (GetFEM's md.solve() line search weighs
   Dirichlet rows in m against forces in N/m and stalls).
 - advance: one load increment with cut-backs, the friction's start-of-step copies set first;
-- add_large_sliding_contact: Poulios & Renard's integral large-sliding contact brick.
+- add_large_sliding_contact: Poulios & Renard's integral large-sliding contact brick;
+- write_csv: a check's curve as CSV.
 """
 import numpy as np
 
@@ -216,3 +217,14 @@ def read_mesh(path, needed_blocks):
         if need not in blocks:
             raise SystemExit("%s: block %s missing" % (path, need))
     return x, blocks, nsets, ssets, conn_all
+
+
+def write_csv(path, header, row_format, rows):
+    """rows as CSV under `header` (no-op when path is empty), each row % row_format."""
+    if not path:
+        return
+    with open(path, "w") as f:
+        f.write(header + "\n")
+        for r in rows:
+            f.write(row_format % tuple(r) + "\n")
+    print("wrote %s" % path)

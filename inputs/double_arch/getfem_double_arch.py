@@ -57,7 +57,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
 from getfem_model import (Body, add_large_sliding_contact, add_neo_hookean, advance,  # noqa: E402
-                          neo_hookean_piola, import_getfem, read_mesh, side_nodes)
+                          neo_hookean_piola, import_getfem, read_mesh, side_nodes, write_csv)
 NU = 0.3
 E = {"base": 3.0e8, "ring_inner": 1.0e11, "ring_outer": 1.0e9}
 RING = [(0.085, 0.09, 1e11, 0.3), (0.09, 0.095, 1e9, 0.3)]  # (r_in, r_out, E, nu): arch_theory
@@ -213,14 +213,8 @@ def main():
 
 
 def write(path, rows):
-    if not path:
-        return
-    with open(path, "w") as f:
-        f.write("imposed_displacement[m],center_vertical_displacement[m],end_force_y[N/m],"
-                "newton,inner_bottom_vertical_displacement[m]\n")
-        for d, u, fy, it, ui in rows:
-            f.write("%.8g,%.10g,%.8g,%d,%.10g\n" % (d, u, fy, it, ui))
-    print("wrote %s" % path)
+    write_csv(path, "imposed_displacement[m],center_vertical_displacement[m],end_force_y[N/m],"
+              "newton,inner_bottom_vertical_displacement[m]", "%.8g,%.10g,%.8g,%d,%.10g", rows)
 
 
 if __name__ == "__main__":

@@ -49,7 +49,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
 from getfem_model import (Body, add_large_sliding_contact, add_neo_hookean, advance,  # noqa: E402
-                          import_getfem, read_mesh, side_nodes)
+                          import_getfem, read_mesh, side_nodes, write_csv)
 
 MODULI = {"parts_solid_auto1": (2.1e10, 0.3), "parts_solid_auto2": (1.0e9, 0.47)}
 T_END, T_PRESS = 1.3, 0.01
@@ -195,13 +195,8 @@ def sup_displacements(mf, u, pts, dirs):
 
 
 def write(path, rows):
-    if not path:
-        return
-    with open(path, "w") as f:
-        f.write("time,figure_step,push_x[m],reaction_x[N/m],reaction_top_y[N/m],newton\n")
-        for r in rows:
-            f.write("%.10g,%.6g,%.10g,%.10g,%.10g,%d\n" % r)
-    print("wrote %s" % path)
+    write_csv(path, "time,figure_step,push_x[m],reaction_x[N/m],reaction_top_y[N/m],newton",
+              "%.10g,%.6g,%.10g,%.10g,%.10g,%d", rows)
 
 
 if __name__ == "__main__":

@@ -48,7 +48,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
 from getfem_model import (Body, add_large_sliding_contact, add_neo_hookean, advance,  # noqa: E402
-                          neo_hookean_piola, import_getfem, read_mesh, side_nodes)
+                          neo_hookean_piola, import_getfem, read_mesh, side_nodes, write_csv)
 
 MODULI = {"die": (6.896e9, 0.32), "block": (6.896e8, 0.32)}
 
@@ -187,13 +187,8 @@ def main():
 
 
 def write(path, rows):
-    if not path:
-        return
-    with open(path, "w") as f:
-        f.write("time,F_x,F_y,contact_normal_x,contact_normal_y,contact_x,contact_y,newton\n")
-        for r in rows:
-            f.write("%.16g,%.16g,%.16g,%.16g,%.16g,%.16g,%.16g,%d\n" % r)
-    print("wrote %s" % path)
+    write_csv(path, "time,F_x,F_y,contact_normal_x,contact_normal_y,contact_x,contact_y,newton",
+              "%.16g,%.16g,%.16g,%.16g,%.16g,%.16g,%.16g,%d", rows)
 
 
 if __name__ == "__main__":
