@@ -76,6 +76,7 @@ struct ContactInput {
   int collocation_points = 0;  ///< per segment, for collocation; 0 = integrator default
   /// At the start of a step (until the first Newton update), a slave node with no pressure and
   /// a gap below start_gap × the mean size of its slave faces counts as active; 0 = off.
+  /// Default 0.05, and 0 with dynamics (the mass matrix holds a body held only by contact).
   double start_gap = 0.05;
   /// At a Newton iterate where more nodes close than were active: a closing node whose gap
   /// reaches 0 later than this fraction of the update stays inactive for that iterate (once

@@ -32,9 +32,12 @@
 // contact impulse acting on each body as a whole, v_{n+1} ← v_{n+1} + s w, s > 0 the root of
 //   ½ s² wᵀMw + s v_{n+1}ᵀMw = L,   L = −Σ_{j closing} e_j ≥ 0
 // (ContactStepEnergy: the contact energy of the slave nodes that closed in this step). w is
-// the rigid translation each body (element block without prescribed dofs) would get from
-// the contact impulse, w = −F_b/m_b on the nodes of body b (F_b the resultant of f_c,n+1 on
-// it, m_b its mass); bodies with prescribed dofs get none. Measured on the cylinder in a
+// the rigid translation each body (element block) would get from the contact impulse, in the
+// directions in which none of its dofs is prescribed: w = −F_b/m_b on the nodes of body b
+// (F_b the resultant of f_c,n+1 on it restricted to those directions, m_b its mass). A body
+// whose prescribed directions carry more than 1 % of |F_b|² gets none (a die driven along the
+// impulse); one held across it only (u_z = 0 on the faces of a 3D slice) gets its in-plane
+// jump, as the same body in plane strain. Measured on the cylinder in a
 // ring (inputs/ring_pendulum/README.md): the jump along the impulse itself, w = −M⁻¹ f_c, puts
 // the energy into vibrations of the slave body near the contact node instead of its motion.
 // The impact then acts with a restitution of one, and momentum is kept (two free bodies get

@@ -92,6 +92,43 @@ class Mesh:
         return int((~used).sum())
 
 
+def extrude(mesh, thickness, layers):
+    """3D mesh of a 2D QUAD4 mesh swept along z over [0, thickness] in `layers` equal layers:
+    each quad (a, b, c, d) of layer k gives the HEX8 (a, b, c, d) at z_k and (a, b, c, d) at
+    z_{k+1} (positive volume: the quads are counter-clockwise, orient()). Blocks keep their
+    names; a 2D side set becomes the side set of the swept faces (same name); a 2D node set
+    becomes its nodes on every layer (same name); node set "z_faces" holds the nodes on
+    z = 0 and z = thickness."""
+    if mesh.dim != 2:
+        raise MeshError("extrude: the mesh is %dD (need 2D)" % mesh.dim)
+    if not (thickness > 0 and layers >= 1):
+        raise MeshError("extrude: need thickness > 0 and layers >= 1")
+    n = len(mesh.coords)
+    z = np.linspace(0.0, thickness, layers + 1)
+    coords = np.vstack([np.column_stack([mesh.coords, np.full(n, zk)]) for zk in z])
+    out = Mesh(coords)
+    for name, topology, conn in mesh.blocks:
+        if topology != "QUAD4":
+            raise MeshError("extrude: block '%s' is %s (need QUAD4)" % (name, topology))
+        out.add_block(name, "HEX8", np.vstack([np.hstack([conn + k * n, conn + (k + 1) * n])
+                                               for k in range(layers)]))
+    conn2d = {e: (t, row) for e, t, row in mesh.elements()}
+    faces = out.boundary_faces()
+    for name, sides in mesh.side_sets.items():
+        swept = []
+        for e, side in sides:
+            t, row = conn2d[e]
+            a, b = (int(row[i]) for i in SIDES[t][side - 1])
+            for k in range(layers):
+                swept.append(faces[frozenset((a + k * n, b + k * n, a + (k + 1) * n,
+                                              b + (k + 1) * n))])
+        out.side_sets[name] = sorted(swept)
+    for name, nodes in mesh.node_sets.items():
+        out.node_sets[name] = np.concatenate([np.asarray(nodes) + k * n for k in range(layers + 1)])
+    out.node_sets["z_faces"] = np.concatenate([np.arange(n), np.arange(n) + layers * n])
+    return out
+
+
 def orient(coords, topology, conn):
     """Reorders elements of negative measure (clockwise 2D, inverted 3D) to positive."""
     conn = conn.copy()

@@ -98,9 +98,23 @@ def read_csv(path):
 
 
 def nodal_weights(xy, conn):
-    """Integral of each bilinear (QUAD4) or linear (TRI3) shape function over the block:
-    the nodal masses / rho of both the consistent and the row-sum lumped mass matrix."""
+    """Integral of each bilinear (QUAD4), trilinear (HEX8) or linear (TRI3, TET4) shape
+    function over the block: the nodal masses / rho of both the consistent and the row-sum
+    lumped mass matrix."""
     w = np.zeros(xy.shape[1])
+    if xy.shape[0] == 3 and conn.shape[1] == 8:  # HEX8, 2 x 2 x 2 Gauss
+        ref = np.array([[-1, -1, -1], [1, -1, -1], [1, 1, -1], [-1, 1, -1],
+                        [-1, -1, 1], [1, -1, 1], [1, 1, 1], [-1, 1, 1]], dtype=float)
+        p = xy[:, conn]  # [d, e, a]
+        for gp in ref / np.sqrt(3.0):
+            n = np.prod(1 + ref * gp, axis=1) / 8  # N_a
+            dn = np.empty((3, 8))  # dN_a / dxi_k
+            for k_ in range(3):
+                other = [j for j in range(3) if j != k_]
+                dn[k_] = ref[:, k_] * np.prod(1 + ref[:, other] * gp[other], axis=1) / 8
+            jac = np.einsum("dea,ka->edk", p, dn)  # [e, d, k]
+            np.add.at(w, conn, np.abs(np.linalg.det(jac))[:, None] * n[None, :])
+        return w
     if xy.shape[0] == 3:  # TET4: a quarter of the volume to each node
         p = xy[:, conn]
         vol = np.abs(np.einsum("ie,ie->e", np.cross(p[:, :, 1] - p[:, :, 0], p[:, :, 2] - p[:, :, 0],

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Cylinder in a ring (benchmark #13, plane strain), meshed by gmsh (all quads), as Exodus.
 
-Usage: ring.py OUTPUT.exo [--size H]
+Usage: ring.py OUTPUT.exo [--size H] [--interior H2] [--thickness T [--layers N]]
 
 Ring: annulus about the origin, inner radius 0.9, outer radius 1.0 (block "ring"; outer
 circle "ring_outer", inner circle "ring_inner"). Cylinder: disc of radius 0.2 centred at
@@ -10,6 +10,9 @@ surface: released there, it swings as a pendulum of length 0.7 about the ring ce
 Element size H (default 0.025) on the ring and the cylinder surface; with --interior H2 > H
 the elements grow from H on the contact surfaces (the ring's inner circle and the cylinder's
 circle) to H2 at 0.1 from them (a fine contact surface at a small cost: refinement studies).
+With --thickness T the quads are swept along z over [0, T] in N layers (default 1) of HEX8
+(exodus_mesh.extrude): the 3D version with the issue's dimensions, the side sets now faces, and
+node set "z_faces" the nodes on z = 0 and z = T.
 """
 import argparse
 import os
@@ -18,7 +21,7 @@ import sys
 import gmsh
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-from exodus_mesh import MeshError, write_exodus  # noqa: E402
+from exodus_mesh import MeshError, extrude, write_exodus  # noqa: E402
 from gmsh_to_exodus import generate_all_quads, model_to_mesh  # noqa: E402
 
 
@@ -66,9 +69,15 @@ def main():
     ap.add_argument("--size", type=float, default=0.025)
     ap.add_argument("--interior", type=float, default=None,
                     help="element size 0.1 away from the contact surfaces (default: --size)")
+    ap.add_argument("--thickness", type=float, default=None,
+                    help="sweep along z over this thickness: a 3D HEX8 mesh")
+    ap.add_argument("--layers", type=int, default=1, help="HEX8 layers through --thickness")
     a = ap.parse_args()
     if not a.size > 0:
         print("ring.py: error: --size must be > 0", file=sys.stderr)
+        return 2
+    if a.thickness is not None and not (a.thickness > 0 and a.layers >= 1):
+        print("ring.py: error: --thickness must be > 0 and --layers >= 1", file=sys.stderr)
         return 2
     interior = a.size if a.interior is None else a.interior
     if interior < a.size:
@@ -78,7 +87,10 @@ def main():
     gmsh.option.setNumber("General.Terminal", 0)
     try:
         build(a.size, interior)
-        write_exodus(model_to_mesh("ring.py"), a.output)
+        mesh = model_to_mesh("ring.py")
+        if a.thickness is not None:
+            mesh = extrude(mesh, a.thickness, a.layers)
+        write_exodus(mesh, a.output)
     except MeshError as e:
         print("ring.py: error: %s" % e, file=sys.stderr)
         return 2
