@@ -320,8 +320,10 @@ std::vector<ContactInput> read_contact(const Section& grout) {
     c.collocation_points = s.integer("collocation_points");
     // Dynamics: the mass keeps a body held only by contact from being singular, so the
     // proximity start is off unless asked for (it would only add Newton iterations).
-    if (s.has("start_gap")) c.start_gap = s.number("start_gap");
-    else if (grout.has("dynamics")) c.start_gap = 0.0;
+    if (s.has("start_gap"))
+      c.start_gap = s.number("start_gap");
+    else if (grout.has("dynamics"))
+      c.start_gap = 0.0;
     if (s.has("start_closure")) c.start_closure = s.number("start_closure");
     if (s.has("geometry")) {
       c.geometry =
