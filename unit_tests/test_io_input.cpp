@@ -565,6 +565,21 @@ const std::string dynamic_input = R"yaml(grout:
   dynamics: {scheme: generalized_alpha, rho_infinity: 0.8, mass: lumped}
 )yaml";
 
+// docs/input.md, contact `start_gap`: 0.05 by default, 0 with dynamics (the mass matrix holds
+// a body held only by contact), a value given is kept either way.
+TEST(InputDynamics, ProximityStartIsOffByDefaultInDynamics) {
+  const std::string pair = "  contact:\n    c: {slave: s, master: m, type: frictionless}\n";
+  const std::string given =
+      "  contact:\n    c: {slave: s, master: m, type: frictionless, start_gap: 0.2}\n";
+  EXPECT_EQ(read_input(write_file("gap_static.yaml", minimal + pair)).contact.at(0).start_gap,
+            0.05);
+  EXPECT_EQ(
+      read_input(write_file("gap_dynamic.yaml", dynamic_input + pair)).contact.at(0).start_gap,
+      0.0);
+  EXPECT_EQ(read_input(write_file("gap_given.yaml", dynamic_input + given)).contact.at(0).start_gap,
+            0.2);
+}
+
 TEST(InputDynamics, ReadsSchemeGravityAndInitialVelocity) {
   const Input input = read_input(write_file("dynamics.yaml", dynamic_input));
   EXPECT_TRUE(input.dynamics.enabled);
