@@ -643,6 +643,14 @@ TEST(InputDynamics, ErrorsNameTheKey) {
                    replaced(dynamic_input, "generalized_alpha, rho_infinity: 0.8",
                             "newmark, gamma: 0.9, beta: 0.25"),
                    {"grout/dynamics/beta: must be >= (gamma + 1/2)^2 / 4"});
+  expect_bad_input(
+      "balanced_friction",
+      replaced(dynamic_input, "mass: lumped",
+               "mass: lumped, contact_treatment: velocity_update, sliding: balanced") +
+          "  contact:\n    rub: {slave: s, master: m, type: frictional, friction_coefficient: "
+          "0.3}\n",
+      {"grout/dynamics/sliding: balanced is for frictionless and tied contact",
+       "'rub' is frictional"});
   expect_bad_input("sliding_stabilized",
                    replaced(dynamic_input, "mass: lumped", "mass: lumped, sliding: impact"),
                    {"grout/dynamics/sliding: only with contact_treatment: velocity_update"});
