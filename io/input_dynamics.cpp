@@ -81,12 +81,13 @@ void read_dynamics(const Section& grout, Input& input) {
   dyn.sliding_balance = d.string("sliding") == "balanced";
   // balanced gives back the energy of the nodes that stay closed, of either sign: with
   // friction that would undo its dissipation.
-  for (const ContactInput& c : input.contact)
-    if (dyn.sliding_balance && c.type == ContactKind::frictional)
-      d.fail("sliding",
-             "balanced is for frictionless and tied contact (it would give back the "
-             "friction's dissipation); contact pair '" +
-                 c.name + "' is frictional");
+  if (dyn.sliding_balance)
+    for (const ContactInput& c : input.contact)
+      if (c.type == ContactKind::frictional)
+        d.fail("sliding",
+               "balanced is for frictionless and tied contact (it would give back the "
+               "friction's dissipation); contact pair '" +
+                   c.name + "' is frictional");
   for (const MaterialInput& m : input.materials) {
     if (!(m.density > 0.0)) {
       throw InputError(input.file + ": grout/materials/" + m.name +

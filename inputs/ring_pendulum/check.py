@@ -102,20 +102,7 @@ def nodal_weights(xy, conn):
     function over the block: the nodal masses / rho of both the consistent and the row-sum
     lumped mass matrix."""
     w = np.zeros(xy.shape[1])
-    if xy.shape[0] == 3 and conn.shape[1] == 8:  # HEX8, 2 x 2 x 2 Gauss
-        ref = np.array([[-1, -1, -1], [1, -1, -1], [1, 1, -1], [-1, 1, -1],
-                        [-1, -1, 1], [1, -1, 1], [1, 1, 1], [-1, 1, 1]], dtype=float)
-        p = xy[:, conn]  # [d, e, a]
-        for gp in ref / np.sqrt(3.0):
-            n = np.prod(1 + ref * gp, axis=1) / 8  # N_a
-            dn = np.empty((3, 8))  # dN_a / dxi_k
-            for k_ in range(3):
-                other = [j for j in range(3) if j != k_]
-                dn[k_] = ref[:, k_] * np.prod(1 + ref[:, other] * gp[other], axis=1) / 8
-            jac = np.einsum("dea,ka->edk", p, dn)  # [e, d, k]
-            np.add.at(w, conn, np.abs(np.linalg.det(jac))[:, None] * n[None, :])
-        return w
-    if xy.shape[0] == 3:  # TET4: a quarter of the volume to each node
+    if conn.shape[1] == 4 and xy.shape[0] == 3:  # TET4: a quarter of the volume to each node
         p = xy[:, conn]
         vol = np.abs(np.einsum("ie,ie->e", np.cross(p[:, :, 1] - p[:, :, 0], p[:, :, 2] - p[:, :, 0],
                                                     axis=0), p[:, :, 3] - p[:, :, 0])) / 6
@@ -129,7 +116,7 @@ def nodal_weights(xy, conn):
         for a_ in range(3):
             np.add.at(w, conn[:, a_], area / 3)
         return w
-    return cylinder_rotation.lumped_weights(xy, conn)  # QUAD4, 2 x 2 Gauss
+    return cylinder_rotation.lumped_weights(xy, conn)  # QUAD4, HEX8
 
 
 s = read_csv("np1/%s.csv" % a.stem)

@@ -36,7 +36,8 @@ MASS_2D = 1000.0 * math.pi * 0.2 ** 2  # kg per unit thickness
 MGH = T * MASS_2D * G * H
 FIRST_CONTACT = 0.09  # s: the 2D run's first active node (checked below)
 
-stem3, stem2 = (sys.argv[1:3] + ["ring_3d_ci", "ring_ci"][len(sys.argv[1:3]):])[:2]
+stem3 = sys.argv[1] if len(sys.argv) > 1 else "ring_3d_ci"
+stem2 = sys.argv[2] if len(sys.argv) > 2 else "ring_ci"
 failures = []
 
 

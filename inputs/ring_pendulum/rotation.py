@@ -28,21 +28,28 @@ state before step 1 is the release: x = X, v = 0, a = g):
 import numpy as np
 
 
+# Corners of the reference element in Exodus order: QUAD4 (2D), HEX8 (3D).
+CORNERS = {2: np.array([[-1, -1], [1, -1], [1, 1], [-1, 1]], dtype=float),
+           3: np.array([[-1, -1, -1], [1, -1, -1], [1, 1, -1], [-1, 1, -1],
+                        [-1, -1, 1], [1, -1, 1], [1, 1, 1], [-1, 1, 1]], dtype=float)}
+
+
 def lumped_weights(xy, conn):
-    """Integral of each bilinear shape function over the block (QUAD4, 2x2 Gauss): the row
-    sums of the consistent mass matrix / rho, i.e. the lumped nodal masses / rho."""
+    """Integral of each bilinear (QUAD4) or trilinear (HEX8) shape function over the block
+    (2^dim Gauss points): the row sums of the consistent mass matrix / rho, i.e. the lumped
+    nodal masses / rho. N_a = prod_k (1 + c_ak xi_k) / 2^dim, c_a the corners."""
+    dim = xy.shape[0]
+    c = CORNERS[dim]
     w = np.zeros(xy.shape[1])
-    gp = np.array([-1, 1]) / np.sqrt(3)
-    for xi in gp:
-        for eta in gp:
-            N = 0.25 * np.array([(1 - xi) * (1 - eta), (1 + xi) * (1 - eta),
-                                 (1 + xi) * (1 + eta), (1 - xi) * (1 + eta)])
-            dxi = 0.25 * np.array([-(1 - eta), 1 - eta, 1 + eta, -(1 + eta)])
-            deta = 0.25 * np.array([-(1 - xi), -(1 + xi), 1 + xi, 1 - xi])
-            x, y = xy[0][conn], xy[1][conn]
-            det = (x @ dxi) * (y @ deta) - (x @ deta) * (y @ dxi)
-            for a in range(4):
-                np.add.at(w, conn[:, a], N[a] * det)
+    p = xy[:, conn]  # [d, e, a]
+    for gp in c / np.sqrt(3.0):
+        n = np.prod(1 + c * gp, axis=1) / 2 ** dim
+        dn = np.empty((dim, len(c)))  # dN_a / dxi_k
+        for k in range(dim):
+            other = [j for j in range(dim) if j != k]
+            dn[k] = c[:, k] * np.prod(1 + c[:, other] * gp[other], axis=1) / 2 ** dim
+        jac = np.einsum("dea,ka->edk", p, dn)  # [e, d, k]
+        np.add.at(w, conn, np.linalg.det(jac)[:, None] * n[None, :])
     return w
 
 
