@@ -230,11 +230,22 @@ void SolidProblem::import_to_column(const Vector& u, Vector& u_column) const {
   u_column.doImport(u, *importer_, Tpetra::INSERT);
 }
 
-bool SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
+bool SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K,
+                            const Vector* u_start) const {
   Vector u_column(column_map_);
   u_column.doImport(u, *importer_, Tpetra::INSERT);
   const auto u_view =
       Kokkos::subview(u_column.getLocalViewHost(Tpetra::Access::ReadOnly), Kokkos::ALL(), 0);
+  const bool energy_momentum = u_start != nullptr;
+  Teuchos::RCP<Vector> u_start_column;  // only for energy_momentum
+  if (energy_momentum) {
+    u_start_column = Teuchos::rcp(new Vector(column_map_));
+    u_start_column->doImport(*u_start, *importer_, Tpetra::INSERT);
+  }
+  const auto u_start_view =
+      energy_momentum ? Kokkos::subview(u_start_column->getLocalViewHost(Tpetra::Access::ReadOnly),
+                                        Kokkos::ALL(), 0)
+                      : u_view;
   f_int.putScalar(0.0);
   auto f_view =
       Kokkos::subview(f_int.getLocalViewHost(Tpetra::Access::ReadWrite), Kokkos::ALL(), 0);
@@ -269,6 +280,7 @@ bool SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
         Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, nodes.extent(0)),
         KOKKOS_LAMBDA(const int e, GlobalIndex& bad) {
           double X[max_element_dofs], ue[max_element_dofs], fe[max_element_dofs];
+          double ue_start[max_element_dofs];
           double Ke[max_element_dofs * max_element_dofs];
           const int n = npe * dim;
           for (int a = 0; a < npe; ++a) {
@@ -276,14 +288,17 @@ bool SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K) const {
               const int k = nodes(e, a);
               X[a * dim + d] = X_all(k, d);
               ue[a * dim + d] = u_view(k * dim + d);
+              ue_start[a * dim + d] = energy_momentum ? u_start_view(k * dim + d) : 0.0;
             }
           }
           double* const Ke_or_null = with_tangent ? Ke : nullptr;
           const ElementStatus status =
-              finite_strain
-                  ? total_lagrangian_force_and_tangent(topology, dim, X, ue, law, constants, fe,
-                                                       Ke_or_null)
-                  : linear_elastic_element<double>(topology, dim, X, ue, constants, fe, Ke_or_null);
+              !finite_strain
+                  ? linear_elastic_element<double>(topology, dim, X, ue, constants, fe, Ke_or_null)
+              : energy_momentum ? energy_momentum_force_and_tangent(topology, dim, X, ue_start, ue,
+                                                                    law, constants, fe, Ke_or_null)
+                                : total_lagrangian_force_and_tangent(topology, dim, X, ue, law,
+                                                                     constants, fe, Ke_or_null);
           if (status == ElementStatus::collapsed) {
             Kokkos::atomic_increment(&collapsed());
             return;

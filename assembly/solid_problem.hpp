@@ -16,6 +16,7 @@
 #include "assembly/partition.hpp"
 #include "assembly/tpetra_types.hpp"
 #include "io/input.hpp"
+#include "kernels/energy_momentum.hpp"
 #include "kernels/linear_elastic.hpp"
 #include "kernels/total_lagrangian.hpp"
 
@@ -65,7 +66,11 @@ class SolidProblem {
   /// fill-completed on return). Throws InputError on an element inverted in the mesh.
   /// Returns false (on this rank) if u collapses an element (det F <= 0, finite strain):
   /// the iterate is inadmissible and the caller backs off.
-  bool assemble(const Vector& u, Vector& f_int, Matrix* K) const;
+  /// With u_start (the displacement at the start of a time step, scheme: energy_momentum),
+  /// the finite-strain blocks give f = 2 f_algo(u_start, u) − f_int(u_start) and its tangent
+  /// d f/d u instead (kernels/energy_momentum.hpp); small-strain blocks are unchanged (for a
+  /// linear f_int the two agree).
+  bool assemble(const Vector& u, Vector& f_int, Matrix* K, const Vector* u_start = nullptr) const;
   /// True when K does not depend on u: every block is small strain (linear elasticity,
   /// K = ∫ Bᵀ C B dV). A caller may then assemble K once and pass K = nullptr afterwards;
   /// f_int is computed by the same element loop either way, so it is the same bit for bit.

@@ -92,7 +92,7 @@ struct TimeInput {
 };
 
 /// Implicit dynamics (`grout/dynamics`); absent: quasi-static.
-enum class DynamicsScheme { newmark, hht, bossak, generalized_alpha };
+enum class DynamicsScheme { newmark, hht, bossak, generalized_alpha, energy_momentum };
 enum class MassKind { consistent, lumped };
 
 struct DynamicsInput {

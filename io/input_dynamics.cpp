@@ -38,7 +38,8 @@ void read_dynamics(const Section& grout, Input& input) {
   }
   const Section d = grout.section(
       "dynamics",
-      {Key::choice("scheme", {"newmark", "hht", "bossak", "generalized_alpha"}, "time scheme")
+      {Key::choice("scheme", {"newmark", "hht", "bossak", "generalized_alpha", "energy_momentum"},
+                   "time scheme")
            .defaults("newmark"),
        Key::number("rho_infinity").at_least(0).defaults("1"),
        Key::number("beta").above(0).defaults("0.25"),
@@ -56,13 +57,16 @@ void read_dynamics(const Section& grout, Input& input) {
   dyn.scheme = scheme == "hht"                 ? DynamicsScheme::hht
                : scheme == "bossak"            ? DynamicsScheme::bossak
                : scheme == "generalized_alpha" ? DynamicsScheme::generalized_alpha
+               : scheme == "energy_momentum"   ? DynamicsScheme::energy_momentum
                                                : DynamicsScheme::newmark;
   const bool newmark = dyn.scheme == DynamicsScheme::newmark;
-  if (newmark && d.has("rho_infinity"))
+  const bool energy_momentum = dyn.scheme == DynamicsScheme::energy_momentum;
+  if ((newmark || energy_momentum) && d.has("rho_infinity"))
     d.fail("rho_infinity", "only for the schemes hht, bossak and generalized_alpha");
   if (!newmark && (d.has("beta") || d.has("gamma")))
-    d.fail(d.has("beta") ? "beta" : "gamma",
-           "only for scheme newmark (the " + scheme + " scheme sets it from rho_infinity)");
+    d.fail(d.has("beta") ? "beta" : "gamma", "only for scheme newmark (the " + scheme +
+                                                 " scheme sets it" +
+                                                 (energy_momentum ? ")" : " from rho_infinity)"));
   dyn.rho_infinity = d.number("rho_infinity");
   if (dyn.rho_infinity > 1.0) d.fail("rho_infinity", "must be <= 1");
   if (dyn.scheme == DynamicsScheme::hht && dyn.rho_infinity < 0.5)

@@ -99,6 +99,49 @@ KOKKOS_INLINE_FUNCTION MaterialStatus first_piola_kirchhoff(HyperelasticLaw law,
   return MaterialStatus::ok;
 }
 
+/// \brief Second Piola-Kirchhoff stress S = 2 dW/dC and strain energy density W as functions of
+/// the right Cauchy-Green tensor C = F^T F (the laws of the file comment in C):
+///   Neo-Hookean: W = mu/2 (tr C - 3) - mu ln J + lambda/2 (ln J)^2, J = sqrt(det C),
+///                S = mu (I - C^-1) + lambda ln J C^-1             (Bonet & Wood eq. 6.28);
+///   St. Venant-Kirchhoff: E = (C - I)/2, W = lambda/2 (tr E)^2 + mu E:E, S = lambda tr E I + 2 mu
+///   E.
+/// The energy-momentum element evaluates the law at C_{n+1/2} = (C_n + C_{n+1})/2, which is no
+/// F^T F of a configuration (kernels/energy_momentum.hpp).
+/// \pre C symmetric; 3 x 3 (plane strain: C33 = 1, C13 = C23 = 0).
+/// \return collapsed if det C <= 0 (S and W then undefined).
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION MaterialStatus second_piola_kirchhoff(HyperelasticLaw law,
+                                                             ElasticConstants c,
+                                                             const Scalar C[3][3], Scalar S[3][3],
+                                                             Scalar& W) {
+  using std::log;
+  if (law == HyperelasticLaw::neo_hookean) {
+    Scalar C_inv[3][3];  // C symmetric: C^-T = C^-1
+    const Scalar det_C = determinant_and_inverse_transpose(C, C_inv);
+    if (!(det_C > 0.0)) return MaterialStatus::collapsed;
+    const Scalar ln_J = 0.5 * log(det_C);
+    const Scalar tr_C = C[0][0] + C[1][1] + C[2][2];
+    for (int I = 0; I < 3; ++I)
+      for (int K = 0; K < 3; ++K)
+        S[I][K] = (c.lambda * ln_J - c.mu) * C_inv[I][K] + (I == K ? c.mu : 0.0);
+    W = 0.5 * c.mu * (tr_C - 3.0) - c.mu * ln_J + 0.5 * c.lambda * ln_J * ln_J;
+    return MaterialStatus::ok;
+  }
+  if (!(determinant_and_inverse_transpose<Scalar>(C, nullptr) > 0.0))
+    return MaterialStatus::collapsed;
+  const Scalar tr_E = 0.5 * (C[0][0] + C[1][1] + C[2][2] - 3.0);
+  Scalar E_E = 0.0;
+  for (int I = 0; I < 3; ++I)
+    for (int K = 0; K < 3; ++K) {
+      const Scalar E = 0.5 * (C[I][K] - (I == K ? 1.0 : 0.0));
+      E_E += E * E;
+      S[I][K] = 2.0 * c.mu * E;
+      if (I == K) S[I][K] += c.lambda * tr_E;
+    }
+  W = 0.5 * c.lambda * tr_E * tr_E + c.mu * E_E;
+  return MaterialStatus::ok;
+}
+
 /// \brief Cauchy stress sigma = P F^T / J (Bonet & Wood eq. 5.42) from P and F.
 /// \pre det F > 0.
 template <class Scalar>

@@ -54,6 +54,10 @@ DynamicProblem::DynamicProblem(MechanicsProblem& problem, int dimension,
   }
 }
 
+DynamicProblem::~DynamicProblem() {
+  problem_.set_solid_step_start(nullptr);
+}
+
 void DynamicProblem::acceleration_of(const Vector& u, Vector& a_next) const {
   const auto uv = u.getLocalViewHost(Tpetra::Access::ReadOnly);
   const auto un = u_->getLocalViewHost(Tpetra::Access::ReadOnly);
@@ -181,6 +185,8 @@ void DynamicProblem::start(Vector& x0, LinearSolver& linear) {
   f_contact_n_->update(1.0, *f_ext_n_, 1.0);
   balance_ = EnergyBalance();
   measure_state(*u_, *v_);
+  // Energy-momentum: from now on the solid's force of a step is taken from u_n (file comment).
+  if (integrator_.scheme == TimeScheme::energy_momentum) problem_.set_solid_step_start(u_.get());
 }
 
 double DynamicProblem::give_back(const Vector& f_contact, double loss, bool sliding) {
@@ -319,6 +325,13 @@ void DynamicProblem::commit_step(const Vector& x) {
   v_->assign(v_next);
   a_->assign(a_next);
   f_static_n_->assign(f_static);
+  if (integrator_.scheme == TimeScheme::energy_momentum) {
+    // The step's solid force was 2 f_algo − f_int(u_n); the next step starts from f_int(u_{n+1})
+    // (the work terms above use the step's force: ½ (R_n + R_{n+1}) holds f_algo).
+    Vector f_int(u_map);
+    problem_.solid().assemble(u_next, f_int, nullptr);  // a converged state: no collapse
+    f_static_n_->update(1.0, f_int, -1.0, problem_.internal_force(), 1.0);
+  }
   f_ext_n_->assign(f_ext);
   f_contact_n_->assign(f_contact);
   if (stabilized_contact_ && problem_.has_contact()) {

@@ -57,6 +57,15 @@
 // facet meets its kink like a closing node) goes back along the sliding, a gain taken out by
 // a jump s < 0 (at most stopping the motion along w): the step's contact work is then zero,
 // as for a frictionless contact in continuous time.
+// Energy-momentum (TimeScheme::energy_momentum, αm = αf = ½, β = ¼, γ = ½): the solid's force
+// in F_s(u_{n+1}) is f = 2 f_algo(u_n, u_{n+1}) − f_int(u_n) (MechanicsProblem::
+// set_solid_step_start, kernels/energy_momentum.hpp), and F_s(u_n) carries f_int(u_n) (commit
+// replaces the step's f by it), so that the u rows read
+//   M (v_{n+1} − v_n)/Δt + f_algo(u_n, u_{n+1}) − ½ (f_ext,n + f_ext,n+1) + ½ f_c,n+1 − M g = 0
+// with u_{n+1} − u_n = Δt/2 (v_n + v_{n+1}): the discrete energy-momentum method of Simo &
+// Tarnow (ZAMP 43 (1992) 757) with Gonzalez's discrete gradient (CMAME 190 (2000) 1763). A free
+// hyperelastic body keeps its energy and angular momentum exactly (the average-acceleration
+// rule keeps neither under finite strain); the contact terms are those of the other schemes.
 // Jacobian: the u rows of J_s scaled by (1 − αf), plus (1 − αm)/(β Δt²) M on the free dofs.
 // Prescribed dofs stay eliminated (MechanicsProblem); g is the gravity acceleration.
 
@@ -88,6 +97,9 @@ class DynamicProblem : public NonlinearProblem {
                  const TimeIntegrator& integrator, const std::array<double, 3>& gravity,
                  const Vector& v0, bool stabilized_contact = true, bool velocity_update = false,
                  bool sliding_update = true, bool sliding_balance = false);
+  ~DynamicProblem() override;
+  DynamicProblem(const DynamicProblem&) = delete;
+  DynamicProblem& operator=(const DynamicProblem&) = delete;
 
   MechanicsProblem& quasi_static() { return problem_; }
   Teuchos::RCP<const Map> map() const override { return problem_.map(); }

@@ -254,7 +254,7 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
     // On the 2D Hertz level-3 case the tangent was 0.4 G of 3.6 G instructions of the run.
     Matrix* const K = K_solid_constant_ ? nullptr : K_solid_.get();
     // A collapsed element (finite strain) on any rank: every rank backs off together.
-    const int ok_here = solid_.assemble(*u_, *f_int_, K) ? 1 : 0;
+    const int ok_here = solid_.assemble(*u_, *f_int_, K, solid_step_start_) ? 1 : 0;
     int ok_all = 0;
     Teuchos::reduceAll(*solid_.comm(), Teuchos::REDUCE_MIN, ok_here, Teuchos::outArg(ok_all));
     if (!ok_all) return false;

@@ -87,13 +87,18 @@ class MechanicsProblem : public NonlinearProblem {
   /// Accept the state of the last residual evaluation as converged: slip increments are
   /// measured from it from now on (path dependence of friction).
   void commit_step();
+  /// Evaluate the solid's force over a time step from u_n (SolidProblem::assemble with
+  /// u_start: the energy-momentum scheme of DynamicProblem), or f_int(u) again (nullptr).
+  /// u_n (on the solid's owned map) must outlive its use.
+  void set_solid_step_start(const Vector* u_n) { solid_step_start_ = u_n; }
   /// The displacement part of x, on the solid's owned map.
   void displacement(const Vector& x, Vector& u) const;
   /// f_int − f_ext + f_c on the prescribed dofs at the last residual evaluation, 0 elsewhere.
   const Vector& reactions() const { return *reaction_; }
   /// The solid (dof maps, element assembly, stored energy).
   const SolidProblem& solid() const { return solid_; }
-  /// f_int and f_ext (owned rows) at the last residual evaluation / begin_step.
+  /// f_int and f_ext (owned rows) at the last residual evaluation / begin_step (with
+  /// set_solid_step_start: the solid's step force 2 f_algo − f_int(u_n) in place of f_int).
   const Vector& internal_force() const { return *f_int_; }
   const Vector& external_force() const { return *f_ext_; }
   /// Prescribed value of each global displacement dof at the current step (NaN where free).
@@ -143,6 +148,7 @@ class MechanicsProblem : public NonlinearProblem {
   long long entry_seq_ = 0;         ///< entries emitted for it so far
   Teuchos::RCP<Vector> u_, f_int_, f_ext_, reaction_;
   Teuchos::RCP<Matrix> K_solid_;
+  const Vector* solid_step_start_ = nullptr;  ///< set_solid_step_start
   bool K_solid_constant_ = false;   ///< K_solid_ assembled and independent of u (small strain)
   std::vector<double> prescribed_;  ///< per global u dof, NaN where free
   std::vector<GO> entry_rows_, entry_cols_;

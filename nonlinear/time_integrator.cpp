@@ -24,6 +24,9 @@ TimeIntegrator TimeIntegrator::of(TimeScheme scheme, double rho) {
       t.gamma = 0.5 - t.alpha_m + t.alpha_f;
       t.beta = 0.25 * (1.0 - t.alpha_m + t.alpha_f) * (1.0 - t.alpha_m + t.alpha_f);
       break;
+    case TimeScheme::energy_momentum:
+      t.alpha_m = t.alpha_f = 0.5;
+      break;
   }
   return t;
 }
@@ -36,6 +39,8 @@ TimeIntegrator time_integrator_from(const DynamicsInput& input) {
       return TimeIntegrator::of(TimeScheme::bossak, input.rho_infinity);
     case DynamicsScheme::generalized_alpha:
       return TimeIntegrator::of(TimeScheme::generalized_alpha, input.rho_infinity);
+    case DynamicsScheme::energy_momentum:
+      return TimeIntegrator::of(TimeScheme::energy_momentum, 1.0);
     case DynamicsScheme::newmark:
       break;
   }
@@ -55,6 +60,8 @@ const char* scheme_name(TimeScheme scheme) {
       return "bossak";
     case TimeScheme::generalized_alpha:
       return "generalized_alpha";
+    case TimeScheme::energy_momentum:
+      return "energy_momentum";
   }
   return "?";
 }

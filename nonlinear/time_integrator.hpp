@@ -14,6 +14,10 @@
 //                      γ = ½ − αm, β = ¼ (1 − αm)²;  ρ∞ ∈ [0, 1]
 //   generalized_alpha  αm = (2ρ∞ − 1)/(ρ∞ + 1), αf = ρ∞/(ρ∞ + 1), γ = ½ − αm + αf,
 //                      β = ¼ (1 − αm + αf)²;  ρ∞ ∈ [0, 1]
+//   energy_momentum    αm = αf = ½, β = ¼, γ = ½: generalized_alpha at ρ∞ = 1 (for a linear
+//                      f_int the same steps as newmark), with the finite-strain solid's
+//                      (f_{n+1} + f_n)/2 replaced by the energy-momentum force f_algo(u_n,
+//                      u_{n+1}) (kernels/energy_momentum.hpp; DynamicProblem)
 // All are second-order accurate and unconditionally stable for linear problems.
 // The integrator owns only these coefficients; DynamicProblem applies them.
 
@@ -23,7 +27,7 @@
 
 namespace grout {
 
-enum class TimeScheme { newmark, hht, bossak, generalized_alpha };
+enum class TimeScheme { newmark, hht, bossak, generalized_alpha, energy_momentum };
 
 struct TimeIntegrator {
   TimeScheme scheme = TimeScheme::newmark;
@@ -47,7 +51,7 @@ struct TimeIntegrator {
 /// The integrator the input's `dynamics` section describes.
 TimeIntegrator time_integrator_from(const DynamicsInput& input);
 
-/// "newmark", "hht", "bossak", "generalized_alpha".
+/// "newmark", "hht", "bossak", "generalized_alpha", "energy_momentum".
 const char* scheme_name(TimeScheme scheme);
 
 }  // namespace grout

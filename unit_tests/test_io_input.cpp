@@ -617,6 +617,10 @@ TEST(InputDynamics, ReadsSchemeGravityAndInitialVelocity) {
       replaced(dynamic_input, "mass: lumped", "mass: lumped, contact_treatment: standard")));
   EXPECT_FALSE(standard.dynamics.stabilized_contact);
   EXPECT_FALSE(standard.dynamics.velocity_update);
+  const Input energy_momentum = read_input(write_file(
+      "energy_momentum.yaml",
+      replaced(dynamic_input, "generalized_alpha, rho_infinity: 0.8", "energy_momentum")));
+  EXPECT_EQ(energy_momentum.dynamics.scheme, grout::DynamicsScheme::energy_momentum);
 }
 
 TEST(InputDynamics, ErrorsNameTheKey) {
@@ -630,6 +634,14 @@ TEST(InputDynamics, ErrorsNameTheKey) {
                    {"grout/initial_velocity: needs a 'dynamics' section"});
   expect_bad_input("newmark_rho", replaced(dynamic_input, "generalized_alpha", "newmark"),
                    {"grout/dynamics/rho_infinity: only for the schemes"});
+  expect_bad_input("energy_momentum_rho",
+                   replaced(dynamic_input, "generalized_alpha", "energy_momentum"),
+                   {"grout/dynamics/rho_infinity: only for the schemes"});
+  expect_bad_input("energy_momentum_gamma",
+                   replaced(dynamic_input, "generalized_alpha, rho_infinity: 0.8",
+                            "energy_momentum, gamma: 0.6"),
+                   {"grout/dynamics/gamma: only for scheme newmark (the energy_momentum scheme "
+                    "sets it)"});
   expect_bad_input(
       "hht_beta", replaced(dynamic_input, "generalized_alpha, rho_infinity: 0.8", "hht, beta: 0.3"),
       {"grout/dynamics/beta: only for scheme newmark"});

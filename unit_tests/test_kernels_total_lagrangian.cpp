@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "kernels/total_lagrangian.hpp"
+#include "unit_tests/distorted_elements.hpp"
 
 namespace {
 
@@ -21,31 +22,8 @@ using grout::Topology;
 constexpr HyperelasticLaw laws[] = {HyperelasticLaw::neo_hookean,
                                     HyperelasticLaw::saint_venant_kirchhoff};
 
-struct Element {
-  Topology t;
-  int dim;
-  std::vector<double> X;
-  int nodes() const { return grout::topology_num_nodes(t); }
-  int dofs() const { return nodes() * dim; }
-};
-
-/// Distorted elements of each topology, positively oriented.
-std::vector<Element> distorted_elements() {
-  std::vector<Element> elements = {
-      {Topology::tri3, 2, {0.1, -0.2, 2.1, 0.3, 0.4, 1.7}},
-      {Topology::quad4, 2, {0.0, 0.0, 2.0, 0.2, 2.3, 1.8, -0.2, 1.5}},
-      {Topology::tet4, 3, {0.0, 0.0, 0.0, 1.5, 0.1, 0.2, 0.3, 1.2, -0.1, 0.2, 0.3, 1.4}},
-  };
-  Element hex{Topology::hex8, 3, {}};
-  const double cube[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                             {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> jitter(-0.15, 0.15);
-  for (const auto& node : cube)
-    for (int i = 0; i < 3; ++i) hex.X.push_back((i == 0 ? 2.0 : 1.0) * node[i] + jitter(rng));
-  elements.push_back(hex);
-  return elements;
-}
+using grout_test::distorted_elements;
+using grout_test::Element;
 
 ElasticConstants constants() {
   return grout::elastic_constants(210.0, 0.3, 3, false);

@@ -92,6 +92,13 @@ TEST(TimeIntegrator, CoefficientsOfTheFamily) {
   EXPECT_DOUBLE_EQ(g.alpha_f, 0.5);
   EXPECT_DOUBLE_EQ(g.beta, 0.25);
   EXPECT_DOUBLE_EQ(g.gamma, 0.5);
+  // energy_momentum: the same coefficients (its force term differs under finite strain only).
+  const TimeIntegrator em = TimeIntegrator::of(TimeScheme::energy_momentum, 0.3);
+  EXPECT_DOUBLE_EQ(em.alpha_m, 0.5);
+  EXPECT_DOUBLE_EQ(em.alpha_f, 0.5);
+  EXPECT_DOUBLE_EQ(em.beta, 0.25);
+  EXPECT_DOUBLE_EQ(em.gamma, 0.5);
+  EXPECT_STREQ(grout::scheme_name(TimeScheme::energy_momentum), "energy_momentum");
   // HHT at ρ∞ = ½: α = −1/3 (Hilber, Hughes, Taylor 1977), γ = 5/6, β = 4/9.
   const TimeIntegrator h = TimeIntegrator::of(TimeScheme::hht, 0.5);
   EXPECT_NEAR(h.alpha_f, 1.0 / 3.0, 1e-15);
