@@ -32,8 +32,9 @@
 // (f_{n+1} + f_n)/2 with alpha_f = 1/2. Its tangent is d f / d u_{n+1} by Sacado forward AD.
 
 #include <Kokkos_Core.hpp>
-#include <Sacado.hpp>
+#include <type_traits>
 
+#include "kernels/element_tangent_ad.hpp"
 #include "kernels/hyperelastic_material.hpp"
 #include "kernels/linear_elastic.hpp"
 
@@ -125,30 +126,8 @@ KOKKOS_INLINE_FUNCTION ElementStatus energy_momentum_element(Topology topology, 
   return ElementStatus::ok;
 }
 
-namespace detail {
-
-/// energy_momentum_element on SFad<double, N> scalars seeded with the N = nodes * dim dofs of u.
-template <int N>
-KOKKOS_INLINE_FUNCTION ElementStatus energy_momentum_tangent_fad(
-    Topology topology, int dim, const double* X, const double* u_n, const double* u,
-    HyperelasticLaw law, ElasticConstants c, double* f, double* K) {
-  using Fad = Sacado::Fad::SFad<double, N>;
-  Fad u_ad[N], f_ad[N];
-  for (int k = 0; k < N; ++k) u_ad[k] = Fad(N, k, u[k]);
-  const ElementStatus status =
-      energy_momentum_element<Fad>(topology, dim, X, u_n, u_ad, law, c, f_ad);
-  if (status != ElementStatus::ok) return status;
-  for (int r = 0; r < N; ++r) {
-    f[r] = f_ad[r].val();
-    for (int k = 0; k < N; ++k) K[r * N + k] = f_ad[r].dx(k);
-  }
-  return ElementStatus::ok;
-}
-
-}  // namespace detail
-
 /// \brief f = 2 f_algo(u_n, u) - f_int(u_n) and, if K != nullptr, K = d f / d u (row-major
-/// [n * n], n = nodes * dimension) by forward AD (6, 8, 12 or 24 dofs).
+/// [n * n], n = nodes * dimension) by forward AD (force_and_tangent_by_ad).
 /// \pre as energy_momentum_element; K: room for n * n.
 /// \return as energy_momentum_element.
 KOKKOS_INLINE_FUNCTION ElementStatus energy_momentum_force_and_tangent(
@@ -157,18 +136,11 @@ KOKKOS_INLINE_FUNCTION ElementStatus energy_momentum_force_and_tangent(
   if (!K) return energy_momentum_element<double>(topology, dimension, X, u_n, u, law, c, f);
   if (dimension < 2 || dimension > 3 || topology_dimension(topology) != dimension)
     return ElementStatus::unsupported;
-  switch (topology_num_nodes(topology) * dimension) {
-    case 6:
-      return detail::energy_momentum_tangent_fad<6>(topology, dimension, X, u_n, u, law, c, f, K);
-    case 8:
-      return detail::energy_momentum_tangent_fad<8>(topology, dimension, X, u_n, u, law, c, f, K);
-    case 12:
-      return detail::energy_momentum_tangent_fad<12>(topology, dimension, X, u_n, u, law, c, f, K);
-    case 24:
-      return detail::energy_momentum_tangent_fad<24>(topology, dimension, X, u_n, u, law, c, f, K);
-    default:
-      return ElementStatus::unsupported;
-  }
+  const auto evaluate = [&](const auto* u_ad, auto* f_ad) {
+    using Fad = std::remove_pointer_t<decltype(f_ad)>;
+    return energy_momentum_element<Fad>(topology, dimension, X, u_n, u_ad, law, c, f_ad);
+  };
+  return force_and_tangent_by_ad(topology_num_nodes(topology) * dimension, u, evaluate, f, K);
 }
 
 }  // namespace grout

@@ -13,7 +13,9 @@
 
 #include <Kokkos_Core.hpp>
 #include <Sacado.hpp>
+#include <type_traits>
 
+#include "kernels/element_tangent_ad.hpp"
 #include "kernels/hyperelastic_material.hpp"
 #include "kernels/linear_elastic.hpp"
 
@@ -66,33 +68,8 @@ KOKKOS_INLINE_FUNCTION ElementStatus total_lagrangian_element(Topology topology,
   return ElementStatus::ok;
 }
 
-namespace detail {
-
-/// total_lagrangian_element on SFad<double, N> scalars seeded with the N = nodes * dim dofs.
-template <int N>
-KOKKOS_INLINE_FUNCTION ElementStatus total_lagrangian_tangent_fad(Topology topology, int dim,
-                                                                  const double* X, const double* u,
-                                                                  HyperelasticLaw law,
-                                                                  ElasticConstants c, double* f_int,
-                                                                  double* K) {
-  using Fad = Sacado::Fad::SFad<double, N>;
-  Fad u_ad[N], f_ad[N];
-  for (int k = 0; k < N; ++k) u_ad[k] = Fad(N, k, u[k]);
-  const ElementStatus status =
-      total_lagrangian_element<Fad>(topology, dim, X, u_ad, law, c, f_ad, nullptr);
-  if (status != ElementStatus::ok) return status;
-  for (int r = 0; r < N; ++r) {
-    f_int[r] = f_ad[r].val();
-    for (int k = 0; k < N; ++k) K[r * N + k] = f_ad[r].dx(k);
-  }
-  return ElementStatus::ok;
-}
-
-}  // namespace detail
-
 /// \brief Internal force and, if K != nullptr, the tangent K = d f_int / d u (row-major
-/// [n * n], n = nodes * dimension) by forward AD with a derivative array sized to the element
-/// (6, 8, 12 or 24 dofs).
+/// [n * n], n = nodes * dimension) by forward AD (force_and_tangent_by_ad: 6, 8, 12 or 24 dofs).
 /// \pre as total_lagrangian_element; K: room for n * n.
 /// \return as total_lagrangian_element.
 KOKKOS_INLINE_FUNCTION ElementStatus total_lagrangian_force_and_tangent(
@@ -102,18 +79,11 @@ KOKKOS_INLINE_FUNCTION ElementStatus total_lagrangian_force_and_tangent(
     return total_lagrangian_element<double>(topology, dimension, X, u, law, c, f_int, nullptr);
   if (dimension < 2 || dimension > 3 || topology_dimension(topology) != dimension)
     return ElementStatus::unsupported;
-  switch (topology_num_nodes(topology) * dimension) {
-    case 6:
-      return detail::total_lagrangian_tangent_fad<6>(topology, dimension, X, u, law, c, f_int, K);
-    case 8:
-      return detail::total_lagrangian_tangent_fad<8>(topology, dimension, X, u, law, c, f_int, K);
-    case 12:
-      return detail::total_lagrangian_tangent_fad<12>(topology, dimension, X, u, law, c, f_int, K);
-    case 24:
-      return detail::total_lagrangian_tangent_fad<24>(topology, dimension, X, u, law, c, f_int, K);
-    default:
-      return ElementStatus::unsupported;
-  }
+  const auto evaluate = [&](const auto* u_ad, auto* f_ad) {
+    using Fad = std::remove_pointer_t<decltype(f_ad)>;
+    return total_lagrangian_element<Fad>(topology, dimension, X, u_ad, law, c, f_ad, nullptr);
+  };
+  return force_and_tangent_by_ad(topology_num_nodes(topology) * dimension, u, evaluate, f_int, K);
 }
 
 /// \brief Volume-averaged Cauchy stress over the deformed element,
