@@ -37,6 +37,7 @@
 #include "kernels/element_tangent_ad.hpp"
 #include "kernels/hyperelastic_material.hpp"
 #include "kernels/linear_elastic.hpp"
+#include "kernels/total_lagrangian.hpp"
 
 namespace grout {
 
@@ -69,17 +70,8 @@ KOKKOS_INLINE_FUNCTION ElementStatus energy_momentum_element(Topology topology, 
 
     double F_n[3][3];
     Scalar F[3][3];
-    for (int i = 0; i < 3; ++i)
-      for (int J = 0; J < 3; ++J) {
-        F_n[i][J] = i == J ? 1.0 : 0.0;
-        F[i][J] = F_n[i][J];
-      }
-    for (int i = 0; i < dim; ++i)
-      for (int J = 0; J < dim; ++J)
-        for (int a = 0; a < nodes; ++a) {
-          F_n[i][J] += u_n[a * dim + i] * G[a * dim + J];
-          F[i][J] += u[a * dim + i] * G[a * dim + J];
-        }
+    deformation_gradient(dim, nodes, u_n, G, F_n);
+    deformation_gradient(dim, nodes, u, G, F);
     if (!(determinant_and_inverse_transpose<Scalar>(F, nullptr) > 0.0) ||
         !(determinant_and_inverse_transpose<double>(F_n, nullptr) > 0.0))
       return ElementStatus::collapsed;

@@ -21,6 +21,19 @@
 
 namespace grout {
 
+/// \brief F = I + grad_X u at a point: F_iJ = delta_iJ + sum_a u_ai G_aJ, G_aJ = dN_a/dX_J
+/// (3 x 3; plane strain: F33 = 1, F13 = F23 = F31 = F32 = 0).
+/// \pre u: [nodes * dim] node-major; G: [nodes * dim] as shape_gradients returns it.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION void deformation_gradient(int dim, int nodes, const Scalar* u,
+                                                 const double* G, Scalar F[3][3]) {
+  for (int i = 0; i < 3; ++i)
+    for (int J = 0; J < 3; ++J) F[i][J] = i == J ? 1.0 : 0.0;
+  for (int i = 0; i < dim; ++i)
+    for (int J = 0; J < dim; ++J)
+      for (int a = 0; a < nodes; ++a) F[i][J] += u[a * dim + i] * G[a * dim + J];
+}
+
 /// \brief Internal force f_int_{a i} = int P_iJ N_a,J dV and, if energy != nullptr, the
 /// stored energy int W dV (formulas in the file comment).
 /// \pre X, u: [nodes * dimension] node-major; f_int: [nodes * dimension] (overwritten).
@@ -48,11 +61,7 @@ KOKKOS_INLINE_FUNCTION ElementStatus total_lagrangian_element(Topology topology,
     const double dV = p.weight * det_J;
 
     Scalar F[3][3];
-    for (int i = 0; i < 3; ++i)
-      for (int J = 0; J < 3; ++J) F[i][J] = i == J ? 1.0 : 0.0;
-    for (int i = 0; i < dim; ++i)
-      for (int J = 0; J < dim; ++J)
-        for (int a = 0; a < nodes; ++a) F[i][J] += u[a * dim + i] * G[a * dim + J];
+    deformation_gradient(dim, nodes, u, G, F);
     Scalar P[3][3], W;
     if (first_piola_kirchhoff(law, c, F, P, W) != MaterialStatus::ok)
       return ElementStatus::collapsed;
@@ -109,10 +118,8 @@ total_lagrangian_cauchy_stress(Topology topology, int dimension, const double* X
     const ElementStatus status = shape_gradients(topology, dim, X, p.xi, nullptr, G, det_J);
     if (status != ElementStatus::ok) return status;
     const double dV = p.weight * det_J;
-    double F[3][3] = {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
-    for (int i = 0; i < dim; ++i)
-      for (int J = 0; J < dim; ++J)
-        for (int a = 0; a < nodes; ++a) F[i][J] += u[a * dim + i] * G[a * dim + J];
+    double F[3][3];
+    deformation_gradient(dim, nodes, u, G, F);
     double P[3][3], W = 0.0;
     if (first_piola_kirchhoff(law, c, F, P, W) != MaterialStatus::ok)
       return ElementStatus::collapsed;
