@@ -89,20 +89,24 @@ KOKKOS_INLINE_FUNCTION ElementStatus energy_momentum_element(Topology topology, 
         C_mid[I][K] = 0.5 * (C[I][K] + C_n[I][K]);
       }
     double S_n[3][3], W_n = 0.0;
-    Scalar S_mid[3][3], S[3][3], W_mid, W;
+    Scalar S_mid[3][3], W_mid;
     if (second_piola_kirchhoff<double>(law, c, C_n, S_n, W_n) != MaterialStatus::ok ||
-        second_piola_kirchhoff<Scalar>(law, c, C_mid, S_mid, W_mid) != MaterialStatus::ok ||
-        second_piola_kirchhoff<Scalar>(law, c, C, S, W) != MaterialStatus::ok)
+        second_piola_kirchhoff<Scalar>(law, c, C_mid, S_mid, W_mid) != MaterialStatus::ok)
       return ElementStatus::collapsed;
-    // Gonzalez's bracket: the part of dW that S(C_mid) misses, along dC.
-    Scalar dC_dC = 0.0, S_dC = 0.0;
-    for (int I = 0; I < 3; ++I)
-      for (int K = 0; K < 3; ++K) dC_dC += dC[I][K] * dC[I][K], S_dC += S_mid[I][K] * dC[I][K];
-    // Weighted by w = s²/(1 + s²), s = |dC|²/tol²: w / |dC|² = s / ((1 + s²) tol²).
-    const Scalar s = dC_dC / bracket_tol2;
-    const Scalar factor = 2.0 * (W - W_n - 0.5 * S_dC) * s / ((1.0 + s * s) * bracket_tol2);
-    for (int I = 0; I < 3; ++I)
-      for (int K = 0; K < 3; ++K) S_mid[I][K] += factor * dC[I][K];
+    if (law != HyperelasticLaw::saint_venant_kirchhoff) {  // SVK: the bracket is zero
+      // Gonzalez's bracket: the part of dW that S(C_mid) misses, along dC.
+      Scalar W;
+      if (strain_energy_of_C<Scalar>(law, c, C, W) != MaterialStatus::ok)
+        return ElementStatus::collapsed;
+      Scalar dC_dC = 0.0, S_dC = 0.0;
+      for (int I = 0; I < 3; ++I)
+        for (int K = 0; K < 3; ++K) dC_dC += dC[I][K] * dC[I][K], S_dC += S_mid[I][K] * dC[I][K];
+      // Weighted by w = s²/(1 + s²), s = |dC|²/tol²: w / |dC|² = s / ((1 + s²) tol²).
+      const Scalar s = dC_dC / bracket_tol2;
+      const Scalar factor = 2.0 * (W - W_n - 0.5 * S_dC) * s / ((1.0 + s * s) * bracket_tol2);
+      for (int I = 0; I < 3; ++I)
+        for (int K = 0; K < 3; ++K) S_mid[I][K] += factor * dC[I][K];
+    }
     // f += 2 F_mid S_algo grad N - F_n S_n grad N.
     for (int i = 0; i < dim; ++i)
       for (int J = 0; J < dim; ++J) {

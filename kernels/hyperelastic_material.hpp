@@ -142,6 +142,31 @@ KOKKOS_INLINE_FUNCTION MaterialStatus second_piola_kirchhoff(HyperelasticLaw law
   return MaterialStatus::ok;
 }
 
+/// \brief Strain energy density W(C) alone (second_piola_kirchhoff's W, without S).
+/// \pre as second_piola_kirchhoff. \return collapsed if det C <= 0 (W then undefined).
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION MaterialStatus strain_energy_of_C(HyperelasticLaw law, ElasticConstants c,
+                                                         const Scalar C[3][3], Scalar& W) {
+  using std::log;
+  const Scalar det_C = determinant_and_inverse_transpose<Scalar>(C, nullptr);
+  if (!(det_C > 0.0)) return MaterialStatus::collapsed;
+  const Scalar tr_C = C[0][0] + C[1][1] + C[2][2];
+  if (law == HyperelasticLaw::neo_hookean) {
+    const Scalar ln_J = 0.5 * log(det_C);
+    W = 0.5 * c.mu * (tr_C - 3.0) - c.mu * ln_J + 0.5 * c.lambda * ln_J * ln_J;
+    return MaterialStatus::ok;
+  }
+  const Scalar tr_E = 0.5 * (tr_C - 3.0);
+  Scalar E_E = 0.0;
+  for (int I = 0; I < 3; ++I)
+    for (int K = 0; K < 3; ++K) {
+      const Scalar E = 0.5 * (C[I][K] - (I == K ? 1.0 : 0.0));
+      E_E += E * E;
+    }
+  W = 0.5 * c.lambda * tr_E * tr_E + c.mu * E_E;
+  return MaterialStatus::ok;
+}
+
 /// \brief Cauchy stress sigma = P F^T / J (Bonet & Wood eq. 5.42) from P and F.
 /// \pre det F > 0.
 template <class Scalar>
