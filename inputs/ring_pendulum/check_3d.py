@@ -21,6 +21,8 @@ matched by x, y) within 1e-12 m and 1e-9 m/s before the first contact, 1e-5 m an
 after; contact work at the first impact within 1e-9 of T m g h; kinetic and strain energy,
 contact work, total energy against T x 2D within 2e-5 of T m g h, momenta within 1e-3 of
 T m sqrt(2 g h); 3D energy drift below 1 % of T m g h; 1 = 2 ranks within 1e-8 m.
+The same holds under finite strain (ring_3d_finite_ci against ring_finite_ci: Neo-Hookean,
+energy_momentum; the hex with u_z = 0 on its faces has F33 = 1 and the in-plane F of the quad).
 Usage: check_3d.py [stem3d] [stem2d]   (reads np1/, np2/<stem3d>.e and .csv, np1/<stem2d>.*)
 """
 import csv
