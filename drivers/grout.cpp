@@ -80,6 +80,14 @@ void run(const std::string& input_path, const std::string& output_dir,
                 mesh.num_nodes(), mesh.num_elements(), comm->getSize());
     // Said before the first step, so that a run that is killed still names its results.
     std::printf("grout: results file %s\n", input.output.file.c_str());
+    // The average-acceleration rule keeps the energy of a linear system only.
+    if (input.dynamics.enabled && input.dynamics.scheme == DynamicsScheme::newmark &&
+        input.model.strain == StrainKind::finite)
+      std::printf(
+          "grout: note: %s: dynamics/scheme newmark under strain: finite keeps neither the energy "
+          "nor the angular momentum of the bodies exactly; scheme energy_momentum does "
+          "(docs/input.md)\n",
+          input.file.c_str());
     std::fflush(stdout);
   }
 
