@@ -1,0 +1,72 @@
+"""Finite-strain drag with Coulomb friction (mu = 0.3) from a touching and from an open start
+(drag_touch_mu03.yaml, drag_gap_mu03.yaml; both with line_search: Backtrack).
+
+References and checks:
+- Both runs take the 12 steps of their input with no cut-back (the open start's landing step
+  used to cycle and be cut to 1.5e-8; it then took 42 steps).
+- Rate-independent friction: the open start reaches the touching start's indentation along the
+  same path (die top moved straight down), so at t = 1 the forces agree up to the time
+  discretisation of the stick/slip history (limit 1e-4 relative); once the die slides (every
+  slave node slips, t >= 1.25) the history is gone and the two runs solve the same problem:
+  forces equal to 1e-8 relative.
+- Coulomb while sliding: the die carries only the contact and its top support, so the
+  support's R_x / R_y is the interface's tangential over normal resultant, mu for full slip up
+  to the tilt of the contact (the die's finite block): within 3 % of mu.
+- 1 and 2 ranks: displacements within 1e-8.
+"""
+import csv
+import sys
+
+import numpy as np
+
+from grout_results import Results, relative_difference
+
+MU, STEPS = 0.3, 12
+failures = []
+
+
+def forces(stem, np_=1):
+    rows = list(csv.DictReader(open("np%d/%s.csv" % (np_, stem))))
+    t = np.array([float(r["time"]) for r in rows])
+    rx = np.array([float(r["reaction_die_top_nodes_x"]) for r in rows])
+    ry = -np.array([float(r["reaction_die_top_nodes_y"]) for r in rows])
+    return t, rx, ry
+
+
+runs = {stem: forces(stem) for stem in ("drag_touch_mu03", "drag_gap_mu03")}
+for stem, (t, rx, ry) in runs.items():
+    print("%s: %d steps to t = %g" % (stem, len(t), t[-1]))
+    if len(t) != STEPS or abs(t[-1] - 3.0) > 1e-12:
+        failures.append("%s: %d steps to t = %g (expected %d equal steps to 3: no cut-back)"
+                        % (stem, len(t), t[-1], STEPS))
+    sliding = t >= 1.25 - 1e-12
+    ratio = rx[sliding] / ry[sliding]
+    print("%s: R_x/R_y while sliding %.4f ... %.4f (mu = %g)" % (stem, ratio.min(), ratio.max(), MU))
+    if np.abs(ratio / MU - 1).max() > 0.03:
+        failures.append("%s: R_x/R_y while sliding off mu by %.2f %% (limit 3 %%)"
+                        % (stem, 100 * np.abs(ratio / MU - 1).max()))
+
+(t1, rx1, ry1), (t2, rx2, ry2) = runs["drag_touch_mu03"], runs["drag_gap_mu03"]
+for t in t1[t1 >= 1.0 - 1e-12]:
+    i, j = np.argmin(abs(t1 - t)), np.argmin(abs(t2 - t))
+    if abs(t2[j] - t) > 1e-12:
+        continue
+    scale = abs(ry1[i])
+    d = max(abs(rx2[j] - rx1[i]), abs(ry2[j] - ry1[i])) / scale
+    limit = 1e-4 if t < 1.25 - 1e-12 else 1e-8
+    print("t = %.3f: open start - touching start, forces %.2e of R_y (limit %g)" % (t, d, limit))
+    if d > limit:
+        failures.append("t = %g: the open start's forces differ from the touching start's by %.2e "
+                        "of R_y (limit %g)" % (t, d, limit))
+
+for stem in runs:
+    r1, r2 = Results("np1/%s.e" % stem), Results("np2/%s.e" % stem)
+    for name in ("displ_x", "displ_y"):
+        d = relative_difference(r1.nodal(name), r2.nodal(name))
+        if d > 1e-8:
+            failures.append("%s: %s differs between 1 and 2 ranks by %.3e" % (stem, name, d))
+
+for f in failures:
+    print("FAIL:", f)
+print("check_mu03: %s" % ("all checks passed" if not failures else "%d failure(s)" % len(failures)))
+sys.exit(1 if failures else 0)
