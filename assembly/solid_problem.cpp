@@ -9,6 +9,7 @@
 #include <Teuchos_CommHelpers.hpp>
 
 #include "io/errors.hpp"
+#include "kernels/energy_momentum.hpp"
 #include "kernels/surface_load.hpp"
 
 namespace grout {

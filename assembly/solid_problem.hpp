@@ -16,7 +16,6 @@
 #include "assembly/partition.hpp"
 #include "assembly/tpetra_types.hpp"
 #include "io/input.hpp"
-#include "kernels/energy_momentum.hpp"
 #include "kernels/linear_elastic.hpp"
 #include "kernels/total_lagrangian.hpp"
 

@@ -99,6 +99,30 @@ KOKKOS_INLINE_FUNCTION MaterialStatus first_piola_kirchhoff(HyperelasticLaw law,
   return MaterialStatus::ok;
 }
 
+namespace detail {
+
+/// W(C) of `law` given det C > 0 (the formulas of second_piola_kirchhoff).
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION Scalar strain_energy_of_C(HyperelasticLaw law, ElasticConstants c,
+                                                 const Scalar C[3][3], const Scalar& det_C) {
+  using std::log;
+  const Scalar tr_C = C[0][0] + C[1][1] + C[2][2];
+  if (law == HyperelasticLaw::neo_hookean) {
+    const Scalar ln_J = 0.5 * log(det_C);
+    return 0.5 * c.mu * (tr_C - 3.0) - c.mu * ln_J + 0.5 * c.lambda * ln_J * ln_J;
+  }
+  const Scalar tr_E = 0.5 * (tr_C - 3.0);
+  Scalar E_E = 0.0;
+  for (int I = 0; I < 3; ++I)
+    for (int K = 0; K < 3; ++K) {
+      const Scalar E = 0.5 * (C[I][K] - (I == K ? 1.0 : 0.0));
+      E_E += E * E;
+    }
+  return 0.5 * c.lambda * tr_E * tr_E + c.mu * E_E;
+}
+
+}  // namespace detail
+
 /// \brief Second Piola-Kirchhoff stress S = 2 dW/dC and strain energy density W as functions of
 /// the right Cauchy-Green tensor C = F^T F (the laws of the file comment in C):
 ///   Neo-Hookean: W = mu/2 (tr C - 3) - mu ln J + lambda/2 (ln J)^2, J = sqrt(det C),
@@ -115,30 +139,24 @@ KOKKOS_INLINE_FUNCTION MaterialStatus second_piola_kirchhoff(HyperelasticLaw law
                                                              const Scalar C[3][3], Scalar S[3][3],
                                                              Scalar& W) {
   using std::log;
-  if (law == HyperelasticLaw::neo_hookean) {
-    Scalar C_inv[3][3];  // C symmetric: C^-T = C^-1
-    const Scalar det_C = determinant_and_inverse_transpose(C, C_inv);
-    if (!(det_C > 0.0)) return MaterialStatus::collapsed;
+  const bool neo_hookean = law == HyperelasticLaw::neo_hookean;
+  Scalar C_inv[3][3];  // C symmetric: C^-T = C^-1 (Neo-Hookean only)
+  const Scalar det_C = determinant_and_inverse_transpose(C, neo_hookean ? C_inv : nullptr);
+  if (!(det_C > 0.0)) return MaterialStatus::collapsed;
+  W = detail::strain_energy_of_C(law, c, C, det_C);
+  if (neo_hookean) {
     const Scalar ln_J = 0.5 * log(det_C);
-    const Scalar tr_C = C[0][0] + C[1][1] + C[2][2];
     for (int I = 0; I < 3; ++I)
       for (int K = 0; K < 3; ++K)
         S[I][K] = (c.lambda * ln_J - c.mu) * C_inv[I][K] + (I == K ? c.mu : 0.0);
-    W = 0.5 * c.mu * (tr_C - 3.0) - c.mu * ln_J + 0.5 * c.lambda * ln_J * ln_J;
     return MaterialStatus::ok;
   }
-  if (!(determinant_and_inverse_transpose<Scalar>(C, nullptr) > 0.0))
-    return MaterialStatus::collapsed;
   const Scalar tr_E = 0.5 * (C[0][0] + C[1][1] + C[2][2] - 3.0);
-  Scalar E_E = 0.0;
   for (int I = 0; I < 3; ++I)
     for (int K = 0; K < 3; ++K) {
-      const Scalar E = 0.5 * (C[I][K] - (I == K ? 1.0 : 0.0));
-      E_E += E * E;
-      S[I][K] = 2.0 * c.mu * E;
+      S[I][K] = c.mu * (C[I][K] - (I == K ? 1.0 : 0.0));  // 2 mu E
       if (I == K) S[I][K] += c.lambda * tr_E;
     }
-  W = 0.5 * c.lambda * tr_E * tr_E + c.mu * E_E;
   return MaterialStatus::ok;
 }
 
@@ -147,23 +165,9 @@ KOKKOS_INLINE_FUNCTION MaterialStatus second_piola_kirchhoff(HyperelasticLaw law
 template <class Scalar>
 KOKKOS_INLINE_FUNCTION MaterialStatus strain_energy_of_C(HyperelasticLaw law, ElasticConstants c,
                                                          const Scalar C[3][3], Scalar& W) {
-  using std::log;
   const Scalar det_C = determinant_and_inverse_transpose<Scalar>(C, nullptr);
   if (!(det_C > 0.0)) return MaterialStatus::collapsed;
-  const Scalar tr_C = C[0][0] + C[1][1] + C[2][2];
-  if (law == HyperelasticLaw::neo_hookean) {
-    const Scalar ln_J = 0.5 * log(det_C);
-    W = 0.5 * c.mu * (tr_C - 3.0) - c.mu * ln_J + 0.5 * c.lambda * ln_J * ln_J;
-    return MaterialStatus::ok;
-  }
-  const Scalar tr_E = 0.5 * (tr_C - 3.0);
-  Scalar E_E = 0.0;
-  for (int I = 0; I < 3; ++I)
-    for (int K = 0; K < 3; ++K) {
-      const Scalar E = 0.5 * (C[I][K] - (I == K ? 1.0 : 0.0));
-      E_E += E * E;
-    }
-  W = 0.5 * c.lambda * tr_E * tr_E + c.mu * E_E;
+  W = detail::strain_energy_of_C(law, c, C, det_C);
   return MaterialStatus::ok;
 }
 
