@@ -18,7 +18,6 @@ contact while sliding, travels across >= 4 block elements, and |R_x| <= 5e-3 R_y
 sliding step (frictionless: no shear; only the asymmetry of the finite block tilts the
 contact). Writes drag_gmsh.png (R_x, R_y against t; drag_point's pressure against Hertz).
 """
-import csv
 import math
 import os
 import sys
@@ -28,18 +27,10 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "contact_common"))
 import contact_check as cc  # noqa: E402
 from grout_results import Results, relative_difference  # noqa: E402
+from drag_summary import summary  # noqa: E402
 
 E, NU, R, GAP = 1000.0, 0.3, 4.0, 0.02
 VARIANTS = ("drag_touch", "drag_gap", "drag_point")
-
-
-def summary(stem, np_):
-    rows = list(csv.DictReader(open("np%d/%s.csv" % (np_, stem))))
-    t = np.array([float(r["time"]) for r in rows])
-    rx = np.array([float(r["reaction_die_top_nodes_x"]) for r in rows])
-    ry = -np.array([float(r["reaction_die_top_nodes_y"]) for r in rows])
-    active = np.array([int(r["active_nodes"]) for r in rows])
-    return t, rx, ry, active
 
 
 def common_checks(stem, failures):
