@@ -641,6 +641,19 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
           std::numeric_limits<double>::epsilon() * std::max(c.c_hat, c.c_t_hat) * x_max;
       contact_floor2_ += dim * row * row;
     };
+    // True when component a of the slave dof is prescribed and the master dofs node j is
+    // tied to carry a share of Σ_l |M_jl| at most `free_share` D where component a is free:
+    // D u¹_ja − Σ_l M_jl u²_la then (nearly) involves prescribed values only, and λ_ja acts
+    // (nearly) on prescribed rows only, which leaves it undetermined (or determined only
+    // through that small share: λ ~ force / share, the update of an ill-conditioned row).
+    const auto component_held = [&](int a, double free_share) {
+      if (std::isnan(prescribed_[node * dim + a])) return false;
+      double free_sum = 0.0;
+      for (auto it = m_begin; it != m_end; ++it)
+        if (std::isnan(prescribed_[it->first.second * dim + a]))
+          free_sum += std::abs(it->second.value);
+      return free_sum <= free_share * D;
+    };
     if (tied) {  // ĉ (D u¹_j − Σ_l M_jl u²_l) / D = 0, per component
       c.active[q] = 1;
       add_floor();
@@ -648,16 +661,11 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
         c.pressure[q] += m.frames[j].n[a] * c.lambda[q][a];
       for (int a = 0; a < dim; ++a) {
         const GO row = c.lambda_gid(q, a);
-        // A component whose slave dof and every master dof it is tied to (|M_jl| above the
-        // round-off 1e-12 D that the integration leaves where M_jl vanishes) are prescribed:
-        // the tie constrains prescribed values only, λ acts on prescribed rows only and is not
+        // A held component (free share at the round-off 1e-12 D that the integration leaves
+        // where M_jl vanishes): the tie constrains prescribed values only, and λ is not
         // determined; λ = 0 as for a node without master (else the round-off row pins a free
         // master dof and λ ~ 1e17; condensed_solve.hpp, kind R).
-        bool all_prescribed = !std::isnan(prescribed_[node * dim + a]);
-        for (auto it = m_begin; all_prescribed && it != m_end; ++it)
-          if (std::abs(it->second.value) > 1e-12 * D)
-            all_prescribed = !std::isnan(prescribed_[it->first.second * dim + a]);
-        if (all_prescribed) {
+        if (component_held(a, 1e-12)) {
           add_F_(row, c.lambda[q][a]);
           add_entry(row, row, 1.0);
           continue;
@@ -773,8 +781,27 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
     SparseGradient dslip[2];
     weighted_slip_increment(dim, node, fr, m.D[j], m_row, objective ? &c.history[q] : nullptr,
                             position, old_position, slip, dslip);
+    // A tangent along a held Cartesian direction: a symmetry plane that cuts the contact
+    // surface, prescribed on both bodies. The slave node cannot move along it, and the
+    // master dofs it is tied to are (nearly) all prescribed along it too: the stick row
+    // c_t ū_k then constrains prescribed dofs only (a zero row: J singular), or, once the
+    // surfaces tilt off the plane by deformation, pins the few free master dofs through
+    // their small share of M_jl (λ_τk ~ force / share: updates of 1e12 and no convergence).
+    // The friction along it acts on the supports, not on the bodies, and is not determined:
+    // τ_k·λ = 0 (the minimum-norm choice, as for a held tied component), and Coulomb's law
+    // holds for the other tangent. Held: τ_k within 1e-2 rad of e_a, and the free master
+    // dofs' share of Σ|M_jl| at most 1e-2 of D (both 0 on a plane of symmetry at rest).
+    bool held[2] = {false, false};
+    for (int k = 0; k < dim - 1; ++k)
+      for (int a = 0; a < dim; ++a)
+        held[k] = held[k] || (fr.t[k][a] * fr.t[k][a] >= 1.0 - 1e-4 && component_held(a, 1e-2));
+    const auto emit_held = [&](int k) {  // τ_k·λ = 0
+      add_F_(c.lambda_gid(q, k + 1), lambda_t[k]);
+      emit(c.lambda_gid(q, k + 1), dlambda_t[k], 1.0);
+    };
     for (int k = 0; k < dim - 1; ++k) {
-      xi[k] = lambda_t[k] + c.c_t_hat * slip[k];
+      if (held[k]) slip[k] = 0.0;
+      xi[k] = held[k] ? 0.0 : lambda_t[k] + c.c_t_hat * slip[k];
       xi_norm += xi[k] * xi[k];
     }
     xi_norm = std::sqrt(xi_norm);
@@ -786,6 +813,10 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
     if (mu > 0.0 && xi_norm <= mu * (augmented + c.active_tolerance)) {  // stick
       c.active[q] = 1;
       for (int k = 0; k < dim - 1; ++k) {
+        if (held[k]) {
+          emit_held(k);
+          continue;
+        }
         add_F_(c.lambda_gid(q, k + 1), c.c_t_hat * slip[k]);
         emit(c.lambda_gid(q, k + 1), dslip[k], c.c_t_hat);
       }
@@ -802,12 +833,17 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
       if (xi_norm > 0.0)
         for (int k = 0; k < dim - 1; ++k) xi_hat[k] = xi[k] / xi_norm;
       for (int k = 0; k < dim - 1; ++k) {
+        if (held[k]) {  // ξ̂_k = 0, so the other row's P has no term of this tangent
+          emit_held(k);
+          continue;
+        }
         const GO trow = c.lambda_gid(q, k + 1);
         add_F_(trow, lambda_t[k] - mu * augmented * xi_hat[k]);
         emit(trow, dlambda_t[k], 1.0);
         emit(trow, ds, -mu * xi_hat[k]);
         if (xi_norm > 0.0 && dim == 3) {  // the direction's derivative (none in 2D)
           for (int m2 = 0; m2 < dim - 1; ++m2) {
+            if (held[m2]) continue;  // P = 0
             const double P = ((k == m2 ? 1.0 : 0.0) - xi_hat[k] * xi_hat[m2]) / xi_norm;
             emit(trow, dlambda_t[m2], -mu * augmented * P);
             emit(trow, dslip[m2], -mu * augmented * P * c.c_t_hat);

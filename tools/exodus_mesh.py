@@ -98,7 +98,8 @@ def extrude(mesh, thickness, layers):
     z_{k+1} (positive volume: the quads are counter-clockwise, orient()). Blocks keep their
     names; a 2D side set becomes the side set of the swept faces (same name); a 2D node set
     becomes its nodes on every layer (same name); node set "z_faces" holds the nodes on
-    z = 0 and z = thickness."""
+    z = 0 and z = thickness, "z0_nodes" those on z = 0 (a plane of symmetry, say) and
+    "zt_nodes" those on z = thickness."""
     if mesh.dim != 2:
         raise MeshError("extrude: the mesh is %dD (need 2D)" % mesh.dim)
     if not (thickness > 0 and layers >= 1):
@@ -126,6 +127,8 @@ def extrude(mesh, thickness, layers):
     for name, nodes in mesh.node_sets.items():
         out.node_sets[name] = np.concatenate([np.asarray(nodes) + k * n for k in range(layers + 1)])
     out.node_sets["z_faces"] = np.concatenate([np.arange(n), np.arange(n) + layers * n])
+    out.node_sets["z0_nodes"] = np.arange(n)
+    out.node_sets["zt_nodes"] = np.arange(n) + layers * n
     return out
 
 

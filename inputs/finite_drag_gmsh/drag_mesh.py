@@ -3,6 +3,7 @@
 finite-strain drag of inputs/finite_drag_gmsh.
 
 Usage: drag_mesh.py OUTPUT.exo [--size H] [--gap G] [--radius R] [--msh OUTPUT.msh]
+                    [--thickness T [--layers N]]
 
 Block [0, 8] x [0, 5] (block "block", side sets "block_top", "block_bottom"). Die of width 2
 and height 2 centred on x = 4 (block "die", side sets "die_bottom", "die_top"):
@@ -15,6 +16,9 @@ Element size H (default 0.125) on the block top within 1.5 of x in [3, 6] and on
 bottom, growing to 4 H away from the contact; gmsh meshes with twice these sizes and
 subdivides into quads (Mesh.SubdivisionAlgorithm = 1, all quads). The two meshes do not
 match (the die is meshed 0.8 times finer).
+--thickness T: the 2D mesh swept along z over [0, T] in N HEX8 layers (default 1;
+exodus_mesh.extrude): the same names, the side sets become faces, node set "z0_nodes" holds the
+nodes on z = 0, "zt_nodes" those on z = T, and "z_faces" both (with one layer, every node).
 """
 import argparse
 import math
@@ -25,7 +29,7 @@ import gmsh
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-from exodus_mesh import MeshError, write_exodus  # noqa: E402
+from exodus_mesh import MeshError, extrude, write_exodus  # noqa: E402
 from gmsh_to_exodus import generate_all_quads, model_to_mesh  # noqa: E402
 
 L, HB = 8.0, 5.0  # block
@@ -95,10 +99,15 @@ def main():
     ap.add_argument("--gap", type=float, default=0.0)
     ap.add_argument("--radius", type=float)
     ap.add_argument("--msh")
+    ap.add_argument("--thickness", type=float, help="sweep along z: a 3D HEX8 mesh")
+    ap.add_argument("--layers", type=int, default=1, help="HEX8 layers through --thickness")
     a = ap.parse_args()
     if not (a.size > 0 and a.gap >= 0 and (a.radius is None or a.radius > W / 2)):
         print("drag_mesh.py: error: need --size > 0, --gap >= 0, --radius > %g" % (W / 2),
               file=sys.stderr)
+        return 2
+    if a.thickness is not None and not (a.thickness > 0 and a.layers >= 1):
+        print("drag_mesh.py: error: need --thickness > 0 and --layers >= 1", file=sys.stderr)
         return 2
     gmsh.initialize()
     try:
@@ -110,6 +119,8 @@ def main():
         mesh = model_to_mesh("drag_mesh")
         die = next(conn for name, _, conn in mesh.blocks if name == "die")
         mesh.coords[np.unique(die), 1] += a.gap
+        if a.thickness is not None:
+            mesh = extrude(mesh, a.thickness, a.layers)
     except MeshError as e:
         print("drag_mesh.py: error: %s" % e, file=sys.stderr)
         return 2

@@ -1,0 +1,100 @@
+"""Coulomb friction across a plane of symmetry: the half model (drag_sym_half_mu03.yaml,
+u_z = 0 on z = 0 on both bodies) against the full model (drag_sym_full_mu03.yaml, twice as
+thick, no constraint on its mid-plane z = 0.25). A half-model node at z maps to the full
+model's node at z + 0.25.
+
+References and checks:
+- Both runs take the 8 steps of their input with no cut-back. (Before the rule for held
+  tangents, docs/input.md "Friction on a plane of symmetry", the half model's first step did
+  not converge: the z-stick rows of the plane's slave nodes pinned free master dofs through
+  their small share of M, with updates of 1e12.)
+- The full model is symmetric: the die's R_z and the z-multipliers of its mid-plane slave
+  nodes vanish (limit 1e-10 of R_y and of max |lambda|; round-off).
+- The half model is the full model's half: the die's R_x and R_y are half the full model's,
+  and the displacements equal the full model's at the mapped nodes. Not to round-off: the
+  half model's nodal normals on z = 0 average the faces of one side only, and tilt off the
+  plane by up to ~1e-3 rad as the bodies bulge, where the full model's are exactly in it;
+  the multipliers there show that tilt (|lambda_z| / max |lambda| up to 7e-4). Limits: 1e-5
+  of R_y and of max |u| (measured 8.5e-7 and 2.7e-6, the tilt times the plane nodes' share
+  of the contact); the plane's |lambda_z| within 2e-3 of max |lambda|.
+- Coulomb while sliding (t >= 1.25): the half model's R_x / R_y is mu within 3 %, as in
+  check_mu03.py.
+- 1 and 2 ranks (the half model): displacements within 1e-8.
+"""
+import csv
+import sys
+
+import numpy as np
+
+from drag_summary import summary
+from grout_results import Results, relative_difference
+
+MU, STEPS, T_HALF = 0.3, 8, 0.25
+failures = []
+
+
+def check(ok, message):
+    if not ok:
+        failures.append(message)
+
+
+def summary_z(stem):
+    rows = list(csv.DictReader(open("np1/%s.csv" % stem)))
+    return np.array([float(r["reaction_die_top_nodes_z"]) for r in rows])
+
+
+half, full = summary("drag_sym_half_mu03", 1), summary("drag_sym_full_mu03", 1)
+for stem, (t, _, _, _) in (("half", half), ("full", full)):
+    print("%s model: %d steps to t = %g" % (stem, len(t), t[-1]))
+    check(len(t) == STEPS and abs(t[-1] - 2.0) < 1e-12,
+          "%s model: %d steps to t = %g (expected %d equal steps to 2: no cut-back)"
+          % (stem, len(t), t[-1], STEPS))
+
+if not failures:
+    th, rxh, ryh, _ = half
+    tf, rxf, ryf, _ = full
+    rz = summary_z("drag_sym_full_mu03")
+    d_rz = np.abs(rz / ryf).max()
+    d_force = max(np.abs(rxf - 2 * rxh).max(), np.abs(ryf - 2 * ryh).max()) / np.abs(ryf).max()
+    print("full model: die R_z / R_y max %.2e (limit 1e-10)" % d_rz)
+    print("full R_x, R_y - 2 x half: %.2e of max R_y (limit 1e-5)" % d_force)
+    check(d_rz <= 1e-10, "full model: die R_z / R_y = %.2e (limit 1e-10)" % d_rz)
+    check(d_force <= 1e-5, "full R_x, R_y differ from twice the half's by %.2e of R_y" % d_force)
+    sliding = th >= 1.25 - 1e-12
+    ratio = rxh[sliding] / ryh[sliding]
+    print("half model: R_x/R_y while sliding %.4f ... %.4f (mu = %g)"
+          % (ratio.min(), ratio.max(), MU))
+    check(np.abs(ratio / MU - 1).max() <= 0.03,
+          "half model: R_x/R_y while sliding off mu by %.2f %% (limit 3 %%)"
+          % (100 * np.abs(ratio / MU - 1).max()))
+
+    rh, rf = Results("np1/drag_sym_half_mu03.e"), Results("np1/drag_sym_full_mu03.e")
+    xh, xf = rh.coordinates().T, rf.coordinates().T
+    index = {tuple(np.round(x, 9)): i for i, x in enumerate(xf)}
+    mapped = np.array([index[tuple(np.round(x + [0.0, 0.0, T_HALF], 9))] for x in xh])
+    plane = np.abs(xh[:, 2]) < 1e-12
+    d_u = d_lz = d_lz_full = 0.0
+    for step in range(STEPS):
+        uh = np.stack([rh.nodal("displ_" + c, step) for c in "xyz"], 1)
+        uf = np.stack([rf.nodal("displ_" + c, step) for c in "xyz"], 1)[mapped]
+        lh = np.stack([rh.nodal("lm_" + c, step) for c in "xyz"], 1)
+        lf = np.stack([rf.nodal("lm_" + c, step) for c in "xyz"], 1)[mapped]
+        d_u = max(d_u, np.abs(uh - uf).max() / np.abs(uf).max())
+        d_lz = max(d_lz, np.abs(lh[plane, 2]).max() / np.abs(lh).max())
+        d_lz_full = max(d_lz_full, np.abs(lf[plane, 2]).max() / np.abs(lf).max())
+    print("full model: mid-plane |lambda_z| / max |lambda| %.2e (limit 1e-10)" % d_lz_full)
+    print("half model: plane |lambda_z| / max |lambda| %.2e (limit 2e-3)" % d_lz)
+    print("displacements, half - full at the mapped nodes: %.2e of max |u| (limit 1e-5)" % d_u)
+    check(d_lz_full <= 1e-10, "full model: mid-plane lambda_z %.2e of max |lambda|" % d_lz_full)
+    check(d_lz <= 2e-3, "half model: plane lambda_z %.2e of max |lambda| (limit 2e-3)" % d_lz)
+    check(d_u <= 1e-5, "half and full displacements differ by %.2e of max |u|" % d_u)
+
+    r1, r2 = rh, Results("np2/drag_sym_half_mu03.e")
+    for name in ("displ_x", "displ_y", "displ_z"):
+        d = relative_difference(r1.nodal(name), r2.nodal(name))
+        check(d <= 1e-8, "half model: %s differs between 1 and 2 ranks by %.3e" % (name, d))
+
+for f in failures:
+    print("FAIL:", f)
+print("check_symmetry: %s" % ("all checks passed" if not failures else "%d failure(s)" % len(failures)))
+sys.exit(1 if failures else 0)
