@@ -66,7 +66,7 @@ ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidPr
     summary_.write(header + "\n");
     // <summary>_newton.csv: the residual history and active set of every Newton iteration.
     newton_log_ = CheckedTextFile(files[2].temporary, files[2].path);
-    newton_log_.write("step,time,iteration,residual,active_nodes,active_changes\n");
+    newton_log_.write("step,time,iteration,residual,active_nodes,active_changes,step_length\n");
     // <summary>_contact.csv (2D): the contact results along the interface, every step.
     if (files.size() > 3) {
       profile_ = CheckedTextFile(files[3].temporary, files[3].path);
@@ -173,8 +173,8 @@ void ResultsOutput::write(const ConvergedStep& step) {
       rows << step.step << "," << std::setprecision(17) << step.time << "," << k << ","
            << newton.residual_history[k] << ","
            << (k < newton.active_set_history.size() ? newton.active_set_history[k] : 0) << ","
-           << (k < newton.active_change_history.size() ? newton.active_change_history[k] : 0)
-           << "\n";
+           << (k < newton.active_change_history.size() ? newton.active_change_history[k] : 0) << ","
+           << (k < newton.step_length_history.size() ? newton.step_length_history[k] : 1.0) << "\n";
     }
     newton_log_.write(rows.str());
   }

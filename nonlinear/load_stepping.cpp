@@ -14,19 +14,40 @@ void march_steps(NonlinearProblem& problem, LinearSolver& linear, const NewtonOp
   const bool root = problem.map()->getComm()->getRank() == 0;
   Vector x(problem.map()), trial(problem.map());
   StepTimes times(stepping.end_time, stepping.steps);  // t = t_end·k/den, never a sum of Δt
+  // A step whose full-step Newton solve fails (the active set, or stick and slip, cycling
+  // where many nodes change at once: a frictional landing from an open gap) is retried at the
+  // same increment with newton.fallback_line_search, which its cut-backs keep; the next step
+  // starts with the full step again. With the full step every converged iterate is the one
+  // Newton proposes, so the retry changes nothing where the full step converges.
+  NewtonOptions fallback = newton;
+  const bool can_fall_back =
+      newton.line_search == "Full Step" && !newton.fallback_line_search.empty();
+  if (can_fall_back) fallback.line_search = newton.fallback_line_search;
   int step = 0, cuts = 0;
+  bool fell_back = false;
   while (!times.finished()) {
     const double t_next = times.next_time();
     trial.assign(x);
     begin_step(t_next, trial);
     std::ostringstream prefix;
     prefix << "  step " << step + 1 << " t = " << t_next;
-    const NewtonReport report = solve_newton(problem, trial, linear, newton, prefix.str());
+    const NewtonReport report =
+        solve_newton(problem, trial, linear, fell_back ? fallback : newton, prefix.str());
     if (!report.converged) {
+      if (can_fall_back && !fell_back) {
+        fell_back = true;
+        if (root) {
+          std::printf("  step %d t = %g: %s; retrying with line search %s\n", step + 1, t_next,
+                      report.reason.c_str(), fallback.line_search.c_str());
+          std::fflush(stdout);
+        }
+        continue;
+      }
       if (cuts == stepping.max_cuts) {
         std::ostringstream what;
         what << "step " << step + 1 << " (t = " << t_next << ") did not converge: " << report.reason
              << ", after " << cuts << " cut-backs of the step size";
+        if (fell_back) what << " (with line search " << fallback.line_search << ")";
         throw ConvergenceError(what.str());
       }
       ++cuts;
@@ -51,6 +72,7 @@ void march_steps(NonlinearProblem& problem, LinearSolver& linear, const NewtonOp
     accept(converged);
     times.after_success(report.iterations, stepping.step_size);
     cuts = 0;  // the budget of halvings is per step
+    fell_back = false;
   }
 }
 

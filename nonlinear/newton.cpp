@@ -6,6 +6,7 @@
 
 #include <NOX_Solver_Factory.H>
 #include <NOX_Solver_Generic.H>
+#include <NOX_Solver_LineSearchBased.H>
 #include <NOX_StatusTest_Combo.H>
 #include <NOX_StatusTest_FiniteValue.H>
 #include <NOX_StatusTest_MaxIters.H>
@@ -83,6 +84,7 @@ NewtonOptions newton_options_from(const Teuchos::ParameterList& solver_sublist,
                            "\"More'-Thuente\"");
         }
         options.line_search = *value;
+        options.fallback_line_search.clear();  // the input's choice holds for every attempt
       } else if (key == "require_unchanged_active_set") {
         if (!list.isType<bool>(key))
           throw InputError(newton_key_prefix + key + ": expected a bool");
@@ -96,7 +98,11 @@ NewtonOptions newton_options_from(const Teuchos::ParameterList& solver_sublist,
       }
     }
   }
-  if (solver_sublist.isSublist("NOX")) options.nox = solver_sublist.sublist("NOX");
+  if (solver_sublist.isSublist("NOX")) {
+    options.nox = solver_sublist.sublist("NOX");
+    if (options.nox.isSublist("Line Search") || options.nox.isParameter("Nonlinear Solver"))
+      options.fallback_line_search.clear();
+  }
   return options;
 }
 
@@ -182,7 +188,7 @@ class IterationLog : public NOX::Observer {
   void runPostIterate(const NOX::Solver::Generic& solver) override {
     const int k = solver.getNumIterations();
     if (report_.residual_history.empty() && k > 0) {
-      record(0, solver.getPreviousSolutionGroup(), 0.0, 0);
+      record(0, solver.getPreviousSolutionGroup(), 0.0, 0, 0.0);
     }
     if (k < int(report_.residual_history.size())) return;  // no new iterate (failed step)
     const auto& group = solver.getSolutionGroup();
@@ -192,25 +198,34 @@ class IterationLog : public NOX::Observer {
       step->update(-1.0, solver.getPreviousSolutionGroup().getX(), 1.0);
       dx = step->norm(NOX::Abstract::Vector::TwoNorm);
     }
-    record(k, group, dx, k > 0 ? context_.last_linear_iterations : 0);
+    double length = 0.0;
+    if (k > 0) {
+      const auto* line_search = dynamic_cast<const NOX::Solver::LineSearchBased*>(&solver);
+      length = line_search ? line_search->getStepSize() : 1.0;
+    }
+    record(k, group, dx, k > 0 ? context_.last_linear_iterations : 0, length);
   }
 
   /// After a solve that NOX abandoned by throwing before any iteration ended (e.g. no
   /// Jacobian at x0): the history still starts with iteration 0.
   void finish(const NoxGroup& group) {
-    if (report_.residual_history.empty() && group.isF()) record(0, group, 0.0, 0);
+    if (report_.residual_history.empty() && group.isF()) record(0, group, 0.0, 0, 0.0);
   }
 
  private:
-  void record(int k, const NOX::Abstract::Group& base, double dx, int linear) {
+  void record(int k, const NOX::Abstract::Group& base, double dx, int linear, double length) {
     const auto& group = dynamic_cast<const NoxGroup&>(base);
     report_.residual_history.push_back(group.getNormF());
     report_.active_set_history.push_back(group.active_set_size());
     report_.active_change_history.push_back(group.active_set_changes());
+    report_.step_length_history.push_back(length);
     if (!print_) return;
-    std::printf("%s newton %d  |F| = %.3e  |dx| = %.3e  active %d (%d changed)  linear %d\n",
+    // A damped update (line search) says so: "step 0.25" after the linear iterations.
+    char damped[32] = "";
+    if (k > 0 && length != 1.0) std::snprintf(damped, sizeof damped, "  step %.3g", length);
+    std::printf("%s newton %d  |F| = %.3e  |dx| = %.3e  active %d (%d changed)  linear %d%s\n",
                 prefix_.c_str(), k, group.getNormF(), dx, group.active_set_size(),
-                group.active_set_changes(), linear);
+                group.active_set_changes(), linear, damped);
     std::fflush(stdout);
   }
 

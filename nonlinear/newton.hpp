@@ -18,8 +18,12 @@ struct NewtonOptions {
   double absolute_tolerance = 1e-10;  ///< converged if ‖F‖₂ ≤ this ...
   double relative_tolerance = 1e-10;  ///< ... or ‖F‖₂ / ‖F(x₀)‖₂ < this
   double floor_factor = 10.0;  ///< ... or ‖F‖₂ ≤ this · residual_floor() (round-off; 0 = off)
-  double update_tolerance = 0.0;             ///< and, if > 0, ‖Δx‖_∞ < this
-  std::string line_search = "Full Step";     ///< NOX name: "Full Step", "Backtrack", "Polynomial"
+  double update_tolerance = 0.0;          ///< and, if > 0, ‖Δx‖_∞ < this
+  std::string line_search = "Full Step";  ///< NOX name: "Full Step", "Backtrack", "Polynomial"
+  /// The line search of the retries of a step whose Newton solve failed (and of its
+  /// cut-backs), when `line_search` is the default full step and the input chose none
+  /// (Newton/line_search, or NOX's Line Search sublist); empty: none (load_stepping.hpp).
+  std::string fallback_line_search = "Backtrack";
   bool require_unchanged_active_set = true;  ///< and no active-set change at the iterate
   bool verbose = true;                       ///< one log line per iteration on rank 0
   Teuchos::ParameterList nox;                ///< passed to NOX, merged over Grout's defaults
@@ -43,6 +47,9 @@ struct NewtonReport {
   std::vector<double> residual_history;  ///< ‖F‖₂ per iteration, iteration 0 included
   std::vector<int> active_set_history;
   std::vector<int> active_change_history;
+  /// The line search's step length that gave each iterate: 1 for the full Newton step, 0 at
+  /// iteration 0.
+  std::vector<double> step_length_history;
 };
 
 /// Solves F(x) = 0 from the initial guess in `x`; `x` holds the last iterate on return

@@ -11,6 +11,7 @@
 #include <limits>
 
 #include "io/errors.hpp"
+#include "nonlinear/load_stepping.hpp"
 #include "nonlinear/newton.hpp"
 
 namespace grout {
@@ -294,6 +295,47 @@ TEST(Newton, BacktrackingRescuesAnOvershootingFullStep) {
     EXPECT_TRUE(report.converged) << method << ": " << report.reason;
     EXPECT_LT(x.normInf(), 1e-9) << method;
   }
+}
+
+// march_steps (load_stepping.hpp): from x = 2 the full step overshoots atan's root (the
+// test above); the default options retry the failed step once at the same increment with
+// Backtrack, which converges, so the step passes with no cut-back and damped updates.
+TEST(MarchSteps, RetriesAFailedFullStepWithBacktrackBeforeCutting) {
+  AtanProblem problem;
+  LinearSolver linear(Teuchos::ParameterList(), "test");
+  SteppingOptions stepping;
+  stepping.max_cuts = 0;  // a cut-back would be a failure
+  const auto start_at_two = [](double, Vector& x) { x.putScalar(2.0); };
+  NewtonOptions options = quiet_options();
+  ASSERT_EQ(options.line_search, "Full Step");
+  ASSERT_EQ(options.fallback_line_search, "Backtrack");
+  int accepted = 0;
+  double min_length = 1.0;
+  march_steps(problem, linear, options, stepping, start_at_two, [&](ConvergedStep& step) {
+    ++accepted;
+    EXPECT_EQ(step.time, 1.0);
+    EXPECT_LT(step.state->normInf(), 1e-9);
+    for (std::size_t k = 1; k < step.newton->step_length_history.size(); ++k)
+      min_length = std::min(min_length, step.newton->step_length_history[k]);
+  });
+  EXPECT_EQ(accepted, 1);
+  EXPECT_LT(min_length, 1.0);  // the retry's damped updates
+
+  // A line search the input chose holds for every attempt: no retry, so the step fails.
+  options.fallback_line_search.clear();
+  EXPECT_THROW(march_steps(problem, linear, options, stepping, start_at_two,
+                           [](ConvergedStep&) { ADD_FAILURE() << "converged"; }),
+               ConvergenceError);
+}
+
+TEST(NewtonOptions, AnInputLineSearchTurnsTheRetryOff) {
+  EXPECT_EQ(newton_options_from(Teuchos::ParameterList()).fallback_line_search, "Backtrack");
+  Teuchos::ParameterList solver;
+  solver.sublist("Newton").set("line_search", std::string("Full Step"));
+  EXPECT_EQ(newton_options_from(solver).fallback_line_search, "");
+  Teuchos::ParameterList nox;
+  nox.sublist("NOX").sublist("Line Search").set("Method", std::string("Polynomial"));
+  EXPECT_EQ(newton_options_from(nox).fallback_line_search, "");
 }
 
 TEST(Newton, UpdateToleranceAddsAStepTest) {

@@ -341,8 +341,11 @@ def plot_profiles(levels, b, p0, title, path, labels=None):
 def newton_rates(path, failures, median_min):
     """Convergence order of Newton's last judged contraction in every step of a
     `<stem>_newton.csv`, p = log(|F_k+1| / |F_0|) / log(|F_k| / |F_0|) (2 = quadratic), over
-    iterates with an unchanged active set between 0.1 |F_0| and 10x the step's final
-    (round-off) residual. Required: median p >= median_min and every p >= 1.3 (superlinear:
+    Newton steps k -> k+1 that keep the active set of iterate k (no change at k+1; a change
+    at k itself is the set the step was computed with) and are taken in full (`step_length`
+    1 at k+1: a line search's damped update is not a Newton contraction), with |F_k| between
+    0.1 |F_0| and 10x the step's final (round-off) residual and |F_k+1| above the latter.
+    Required: median p >= median_min and every p >= 1.3 (superlinear:
     where the contact pairs, i.e. the segments, change between iterates the current-geometry
     linearisation is exact only piecewise). Appends to `failures`; returns the orders."""
     rows = list(csv.DictReader(open(path)))
@@ -353,8 +356,9 @@ def newton_rates(path, failures, median_min):
     for (step, t), hist in attempts.items():
         f = [float(r["residual"]) for r in hist]
         changes = [int(r["active_changes"]) for r in hist]
+        full = [float(r.get("step_length") or 1.0) == 1.0 for r in hist]
         f0, floor = f[0], 10 * f[-1]
-        pairs = [k for k in range(1, len(f) - 1) if changes[k] == 0 and changes[k + 1] == 0
+        pairs = [k for k in range(1, len(f) - 1) if changes[k + 1] == 0 and full[k + 1]
                  and 0.1 * f0 > f[k] > floor and f[k + 1] > floor]
         if pairs:
             k = pairs[-1]

@@ -13,7 +13,14 @@ References and checks:
   support's R_x / R_y is the interface's tangential over normal resultant, mu for full slip up
   to the tilt of the contact (the die's finite block): within 3 % of mu.
 - The die stays in contact while it slides; 1 and 2 ranks: displacements within 1e-8.
+- Grout's default Newton (drag_gap_mu03_default.yaml: no line_search key): the full step, and a
+  failed step retried once at the same increment with line search Backtrack. It takes the 12
+  steps with no cut-back; its Newton log shows damped updates (step_length < 1) in the landing
+  step only (t = 0.5), full steps everywhere else; and it reaches drag_gap_mu03's forces
+  (Backtrack throughout, which takes the full step wherever that decreases |F|) at every step
+  within 1e-10 of R_y (measured 1e-11).
 """
+import csv
 import sys
 
 import numpy as np
@@ -51,6 +58,24 @@ for t in t1[t1 >= 1.0 - 1e-12]:
     if d > limit:
         failures.append("t = %g: the open start's forces differ from the touching start's by %.2e "
                         "of R_y (limit %g)" % (t, d, limit))
+
+# Grout's default Newton: full step, a failed step retried with Backtrack.
+t3, rx3, ry3, _ = runs["drag_gap_mu03_default"] = summary("drag_gap_mu03_default", 1)
+if len(t3) != STEPS or abs(t3[-1] - 3.0) > 1e-12 or len(t3) != len(t2):
+    failures.append("drag_gap_mu03_default: %d steps to t = %g (expected %d: no cut-back)"
+                    % (len(t3), t3[-1], STEPS))
+else:
+    d = max(np.abs(rx3 - rx2).max(), np.abs(ry3 - ry2).max()) / np.abs(ry2).max()
+    print("default Newton - line_search Backtrack, forces at every step: %.2e of R_y (limit 1e-10)"
+          % d)
+    if d > 1e-10:
+        failures.append("the default Newton's forces differ from drag_gap_mu03's by %.2e of R_y" % d)
+damped = sorted({float(r["time"]) for r in csv.DictReader(open("np1/drag_gap_mu03_default_newton.csv"))
+                 if 0.0 < float(r["step_length"]) < 1.0})
+print("default Newton: damped updates in the steps ending at t = %s" % damped)
+if damped != [0.5]:
+    failures.append("default Newton: damped updates at t = %s (expected the landing step, 0.5, only)"
+                    % damped)
 
 for stem in runs:
     r1, r2 = Results("np1/%s.e" % stem), Results("np2/%s.e" % stem)
