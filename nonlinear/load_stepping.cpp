@@ -34,7 +34,9 @@ void march_steps(NonlinearProblem& problem, LinearSolver& linear, const NewtonOp
     const NewtonReport report =
         solve_newton(problem, trial, linear, fell_back ? fallback : newton, prefix.str());
     if (!report.converged) {
-      if (can_fall_back && !fell_back) {
+      // Only after an iterate: a failure at the start point (its residual, or the first
+      // Jacobian's solve) would repeat itself, as the line search acts after the first solve.
+      if (can_fall_back && !fell_back && report.residual_history.size() > 1) {
         fell_back = true;
         if (root) {
           std::printf("  step %d t = %g: %s; retrying with line search %s\n", step + 1, t_next,
