@@ -328,6 +328,22 @@ TEST(MarchSteps, RetriesAFailedFullStepWithBacktrackBeforeCutting) {
                ConvergenceError);
 }
 
+// A failure at the step's start point (here its residual) is not retried: the line search
+// acts after the first solve, so the retry would fail the same way. With no cut-back allowed
+// the step ends at once, after one residual evaluation.
+TEST(MarchSteps, AFailureAtTheStartPointIsNotRetried) {
+  CubicProblem problem;
+  problem.fail_from_call = 1;
+  LinearSolver linear(Teuchos::ParameterList(), "test");
+  SteppingOptions stepping;
+  stepping.max_cuts = 0;
+  EXPECT_THROW(march_steps(
+                   problem, linear, quiet_options(), stepping, [](double, Vector&) {},
+                   [](ConvergedStep&) { ADD_FAILURE() << "converged"; }),
+               ConvergenceError);
+  EXPECT_EQ(problem.residual_calls, 1);
+}
+
 TEST(NewtonOptions, AnInputLineSearchTurnsTheRetryOff) {
   EXPECT_EQ(newton_options_from(Teuchos::ParameterList()).fallback_line_search, "Backtrack");
   Teuchos::ParameterList solver;
