@@ -17,8 +17,7 @@ void march_steps(NonlinearProblem& problem, LinearSolver& linear, const NewtonOp
   // A step whose full-step Newton solve fails (the active set, or stick and slip, cycling
   // where many nodes change at once: a frictional landing from an open gap) is retried at the
   // same increment with newton.fallback_line_search, which its cut-backs keep; the next step
-  // starts with the full step again. With the full step every converged iterate is the one
-  // Newton proposes, so the retry changes nothing where the full step converges.
+  // starts with the full step again. Where the full step converges nothing changes.
   NewtonOptions fallback = newton;
   const bool can_fall_back =
       newton.line_search == "Full Step" && !newton.fallback_line_search.empty();
