@@ -70,6 +70,15 @@ class Results:
             raise KeyError("%s: no global variable '%s' (has %s)" % (self.path, name, self.global_names))
         return float(self.ds.variables["vals_glo_var"][step, self.global_names.index(name)])
 
+    def node_blocks(self):
+        """Per node, the 1-based index of the (last) block whose elements use it; 0 for a node
+        of no element. Bodies in contact have their own nodes at the same coordinates: key a
+        node by (block, coordinates) to match it across two meshes."""
+        blocks = np.zeros(self.ds.dimensions["num_nodes"].size, dtype=int)
+        for b in range(1, self.num_blocks + 1):
+            blocks[np.unique(self.connectivity(b))] = b
+        return blocks
+
     def element_centroids(self):
         xyz = self.coordinates()
         parts = []
