@@ -40,8 +40,8 @@ class ConvergenceError : public ExitCodeError {
 /// solved by Newton; a step that fails with the default full step after at least one update
 /// is first retried at the same increment with newton.fallback_line_search (kept for its
 /// cut-backs; docs/input.md "Failed steps"); a failed step is retried with half the
-/// increment, up to max_cuts times per step, then ConvergenceError; a converged one goes to `accept` (its state is the
-/// converged x, which accept may evaluate and commit).
+/// increment, up to max_cuts times per step, then ConvergenceError; a converged one goes to
+/// `accept` (its state is the converged x, which accept may evaluate and commit).
 void march_steps(NonlinearProblem& problem, LinearSolver& linear, const NewtonOptions& newton,
                  const SteppingOptions& stepping,
                  const std::function<void(double t, Vector& x)>& begin_step,

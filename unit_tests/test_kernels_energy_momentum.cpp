@@ -42,19 +42,26 @@ std::vector<double> moved(const Element& e, std::mt19937& rng, double angle, dou
   return u;
 }
 
+/// f_int(u) of the total-Lagrangian element.
+std::vector<double> internal_force(const Element& e, HyperelasticLaw law,
+                                   const std::vector<double>& u) {
+  std::vector<double> f(e.dofs());
+  EXPECT_EQ(grout::total_lagrangian_element<double>(e.t, e.dim, e.X.data(), u.data(), law,
+                                                    constants(), f.data(), nullptr),
+            ElementStatus::ok);
+  return f;
+}
+
 /// f_algo = (f + f_int(u_n)) / 2 from the element's f = 2 f_algo - f_int(u_n).
 std::vector<double> algorithmic_force(const Element& e, HyperelasticLaw law,
                                       const std::vector<double>& u_n,
                                       const std::vector<double>& u) {
-  const int n = e.dofs();
-  std::vector<double> f(n), f_n(n);
+  std::vector<double> f(e.dofs());
   EXPECT_EQ(grout::energy_momentum_element<double>(e.t, e.dim, e.X.data(), u_n.data(), u.data(),
                                                    law, constants(), f.data()),
             ElementStatus::ok);
-  EXPECT_EQ(grout::total_lagrangian_element<double>(e.t, e.dim, e.X.data(), u_n.data(), law,
-                                                    constants(), f_n.data(), nullptr),
-            ElementStatus::ok);
-  for (int k = 0; k < n; ++k) f[k] = 0.5 * (f[k] + f_n[k]);
+  const std::vector<double> f_n = internal_force(e, law, u_n);
+  for (int k = 0; k < e.dofs(); ++k) f[k] = 0.5 * (f[k] + f_n[k]);
   return f;
 }
 
@@ -106,12 +113,11 @@ TEST(EnergyMomentum, EqualStatesGiveTheInternalForce) {
   for (HyperelasticLaw law : laws)
     for (const Element& e : distorted_elements()) {
       const auto u = moved(e, rng, 0.7, 0.2);
-      std::vector<double> f(e.dofs()), f_int(e.dofs());
+      std::vector<double> f(e.dofs());
       ASSERT_EQ(grout::energy_momentum_element<double>(e.t, e.dim, e.X.data(), u.data(), u.data(),
                                                        law, constants(), f.data()),
                 ElementStatus::ok);
-      grout::total_lagrangian_element<double>(e.t, e.dim, e.X.data(), u.data(), law, constants(),
-                                              f_int.data(), nullptr);
+      const std::vector<double> f_int = internal_force(e, law, u);
       for (int k = 0; k < e.dofs(); ++k) EXPECT_NEAR(f[k], f_int[k], 1e-12 * max_abs(f_int));
     }
 }
@@ -126,11 +132,7 @@ TEST(EnergyMomentum, WorkOverTheStepIsTheEnergyChange) {
       const auto u_n = moved(e, rng, 0.3, 0.1);
       const auto u = moved(e, rng, 1.1, 0.1);
       const auto f = algorithmic_force(e, law, u_n, u);
-      std::vector<double> f0(e.dofs()), f1(e.dofs());
-      grout::total_lagrangian_element<double>(e.t, e.dim, e.X.data(), u_n.data(), law, constants(),
-                                              f0.data(), nullptr);
-      grout::total_lagrangian_element<double>(e.t, e.dim, e.X.data(), u.data(), law, constants(),
-                                              f1.data(), nullptr);
+      const std::vector<double> f0 = internal_force(e, law, u_n), f1 = internal_force(e, law, u);
       double work = 0.0, trapezoid = 0.0;
       for (int k = 0; k < e.dofs(); ++k) {
         work += f[k] * (u[k] - u_n[k]);
@@ -152,9 +154,7 @@ TEST(EnergyMomentum, NoResultantAndNoMomentAboutTheMidpointConfiguration) {
       const auto u_n = moved(e, rng, 0.2, 0.1);
       const auto u = moved(e, rng, 1.3, 0.1);
       const auto f = algorithmic_force(e, law, u_n, u);
-      std::vector<double> f1(e.dofs());
-      grout::total_lagrangian_element<double>(e.t, e.dim, e.X.data(), u.data(), law, constants(),
-                                              f1.data(), nullptr);
+      const std::vector<double> f1 = internal_force(e, law, u);
       double resultant[3] = {0.0, 0.0, 0.0}, moment[3] = {0.0, 0.0, 0.0};
       double moment_end[3] = {0.0, 0.0, 0.0}, size = 0.0;
       for (int a = 0; a < e.nodes(); ++a) {

@@ -3,40 +3,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 #include <vector>
 
 #include "kernels/mass_matrix.hpp"
+#include "unit_tests/distorted_elements.hpp"
 
 namespace {
 
 using grout::ElementStatus;
 using grout::Topology;
-
-struct Element {
-  Topology t;
-  int dim;
-  std::vector<double> X;
-  int nodes() const { return grout::topology_num_nodes(t); }
-};
-
-/// Distorted elements of each topology, positively oriented (the hex8 is a jittered cube).
-std::vector<Element> distorted_elements() {
-  std::vector<Element> elements = {
-      {Topology::tri3, 2, {0.1, -0.2, 2.1, 0.3, 0.4, 1.7}},
-      {Topology::quad4, 2, {0.0, 0.0, 2.0, 0.2, 2.3, 1.8, -0.2, 1.5}},
-      {Topology::tet4, 3, {0.0, 0.0, 0.0, 1.5, 0.1, 0.2, 0.3, 1.2, -0.1, 0.2, 0.3, 1.4}},
-  };
-  Element hex{Topology::hex8, 3, {}};
-  const double cube[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                             {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> jitter(-0.15, 0.15);
-  for (const auto& p : cube)
-    for (double c : p) hex.X.push_back(c + jitter(rng));
-  elements.push_back(hex);
-  return elements;
-}
+using grout_test::distorted_elements;
+using grout_test::Element;
 
 TEST(MassMatrix, UnitSquareAndTriangleClosedForms) {
   // Unit square, ρ = 3: M = ρ/36 [4 2 1 2; 2 4 2 1; 1 2 4 2; 2 1 2 4] (Hughes, eq. 7.2.6 form).
@@ -70,7 +47,9 @@ TEST(MassMatrix, TotalMassRowSumsAndSymmetryOnDistortedElements) {
       for (int b = 0; b < n; ++b) {
         row += M[a * n + b];
         EXPECT_NEAR(M[a * n + b], M[b * n + a], 1e-15 * volume);
-        if (a != b) EXPECT_EQ(L[a * n + b], 0.0);
+        if (a != b) {
+          EXPECT_EQ(L[a * n + b], 0.0);
+        }
       }
       EXPECT_NEAR(L[a * n + a], row, 1e-14 * volume) << "lumped = row sum, node " << a;
       EXPECT_GT(L[a * n + a], 0.0);
