@@ -99,10 +99,41 @@ class Body:
         return faces.shape[1] if faces.size else 0
 
 
-def neo_hookean_piola(u, sfx):
-    """GWFL: first Piola stress of variable u with Lame data lam_<sfx>, mu_<sfx>."""
-    f = "(Id(2)+Grad_%s)" % u
+def neo_hookean_piola(u, sfx, dim=2):
+    """GWFL: first Piola stress of variable u (dim = 2: plane strain, F33 = 1; 3: full 3D)
+    with Lame data lam_<sfx>, mu_<sfx>."""
+    f = "(Id(%d)+Grad_%s)" % (dim, u)
     return "(mu_%s*(%s-Inv(%s)')+lam_%s*log(Det(%s))*Inv(%s)')" % (sfx, f, f, sfx, f, f)
+
+
+def equilibrium_rows(md, supports):
+    """The model's rows where equilibrium holds: every dof of the variables in `supports`
+    [(variable, MeshFem, supported region)] but those on their supported region. Returns them
+    and, per variable, its supported dofs (numbered within the variable)."""
+    free, supported = [], {}
+    for var, mf, region in supports:
+        i0, n = md.interval_of_variable(var)
+        keep = np.ones(n, bool)
+        supported[var] = np.asarray(mf.basic_dof_on_region(region), int)
+        keep[supported[var]] = False
+        free.append(i0 + np.nonzero(keep)[0])
+    return np.concatenate(free), supported
+
+
+def add_stepping_arguments(ap, steps, t_end, release, max_res):
+    """The command-line options shared by the ironing checks: the load path (--times, --steps,
+    --t-end), the contact brick (--r, --r-factor, --release), Newton (--max-res), --csv,
+    --noisy."""
+    ap.add_argument("--times", default="", help="take the steps of this Grout summary CSV")
+    ap.add_argument("--steps", type=int, default=steps, help="equal steps (without --times)")
+    ap.add_argument("--t-end", type=float, default=t_end, help="last time")
+    ap.add_argument("--r", type=float, default=None, help="augmentation (Pa/m)")
+    ap.add_argument("--r-factor", type=float, default=1.0, help="multiplies E_block / h")
+    ap.add_argument("--release", type=float, default=release, help="release distance")
+    ap.add_argument("--max-res", type=float, default=max_res,
+                    help="Newton: max |residual| (N) on the equilibrium rows")
+    ap.add_argument("--csv", default="")
+    ap.add_argument("--noisy", action="store_true")
 
 
 def add_neo_hookean(gf, md, body, u, mim, sfx, moduli):

@@ -41,11 +41,11 @@ stepping and CSV writer are shared):
   die's internal force summed over the die-top nodes (asm of P : Grad_Test_u over the die; the
   z = 0 multiplier acts along z only, the contact on the arc only).
 Measured (2 cores, shared, nice 5), at Grout's 39 steps + t = 1.0: 40 steps, 376 Newton
-iterations, 19 min CPU (15 to 25 s a step; 1 or 2 cut-backs on the sliding steps of 0.0425
-up to t = 1.23, and at t = 1.68); F_y within 0.2 % of Grout's at each of Grout's steps from t = 0.255 on (-0.6 % and
--0.4 % at the first two), plateau 1.3 <= t <= 1.7 3.541e8 N (Grout 3.538e8, +0.09 %;
-published 3.376e8). --r-factor 10 (to t = 1.38) moves F_y by at most 0.35 % (first steps),
-0.04 % while sliding, and needs 2 to 4 cut-backs per sliding step.
+iterations, 19 min CPU (15 to 25 s a step; 1 or 2 cut-backs on the sliding steps of 0.0425 up
+to t = 1.23, and at t = 1.68); F_y within 0.2 % of Grout's at each of Grout's steps from t =
+0.255 on (-0.6 % and -0.4 % at the first two), plateau 1.3 <= t <= 1.7 3.541e8 N (Grout
+3.538e8, +0.09 %; published 3.376e8). --r-factor 10 (to t = 1.38) moves F_y by at most 0.35 %
+(first steps), 0.04 % while sliding, and needs 2 to 4 cut-backs per sliding step.
 
 How to run (from build/ironing_kratos3d, which holds kratos3d.exo and Grout's
 np1/kratos3d_frictionless.csv; 3 x 15 876 displacement dofs; about 20 min):
@@ -65,7 +65,8 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
-from getfem_model import advance, import_getfem, lame, names, write_csv  # noqa: E402
+from getfem_model import (Body, add_stepping_arguments, advance, equilibrium_rows,  # noqa: E402
+                          import_getfem, lame, names, neo_hookean_piola, write_csv)
 
 DIE, BLOCK = "parts_parts_auto1", "parts_parts_auto2"
 MODULI = {DIE: (6.896e9, 0.32), BLOCK: (6.896e8, 0.32)}
@@ -131,8 +132,8 @@ def min_corner_jacobian(p):
     return worst
 
 
-class Body3D:
-    """One GetFEM mesh (GT_QK(3,1)) built from one Exodus HEX8 block."""
+class Body3D(Body):
+    """One GetFEM mesh (GT_QK(3,1)) built from one Exodus HEX8 block (pids, face_region: Body's)."""
 
     def __init__(self, gf, x, conn, name):
         self.mesh = gf.Mesh("empty", 3)
@@ -144,43 +145,13 @@ class Body3D:
         self.mesh.add_convex(gf.GeoTrans("GT_QK(3,1)"), np.transpose(pts, (2, 1, 0)))
         self.name = name
 
-    def pids(self, nodes, x):
-        """GetFEM point ids of Exodus nodes (-1: not in this body)."""
-        return np.asarray(self.mesh.pid_from_coords(x[nodes].T, 1e-9), dtype=int)
-
-    def face_region(self, rid, nodes, x):
-        """The outer faces of this mesh whose vertices are all among the Exodus nodes
-        `nodes`; returns their number."""
-        p = self.pids(nodes, x)
-        p = p[p >= 0]
-        faces = self.mesh.faces_from_pid(p)
-        keep = set(map(tuple, self.mesh.outer_faces().T))
-        faces = np.array([f for f in faces.T if tuple(f) in keep]).T
-        self.mesh.set_region(rid, faces)
-        return faces.shape[1] if faces.size else 0
-
-
-def neo_hookean_piola(u, sfx):
-    """GWFL: first Piola stress (3D) of variable u with Lame data lam_<sfx>, mu_<sfx>."""
-    f = "(Id(3)+Grad_%s)" % u
-    return "(mu_%s*(%s-Inv(%s)')+lam_%s*log(Det(%s))*Inv(%s)')" % (sfx, f, f, sfx, f, f)
-
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--mesh", default="kratos3d.exo")
-    ap.add_argument("--times", default="", help="take the steps of this Grout summary CSV")
+    add_stepping_arguments(ap, steps=34, t_end=1.7, release=0.2, max_res=1.0)
     ap.add_argument("--add-times", type=float, nargs="*", default=[],
                     help="extra step times (merged with --times / --steps)")
-    ap.add_argument("--steps", type=int, default=34, help="equal steps (without --times)")
-    ap.add_argument("--t-end", type=float, default=1.7, help="last time")
-    ap.add_argument("--r", type=float, default=None, help="augmentation (Pa/m)")
-    ap.add_argument("--r-factor", type=float, default=1.0, help="multiplies E_block / h")
-    ap.add_argument("--release", type=float, default=0.2, help="release distance")
-    ap.add_argument("--max-res", type=float, default=1.0,
-                    help="Newton: max |residual| (N) on the equilibrium rows")
-    ap.add_argument("--csv", default="")
-    ap.add_argument("--noisy", action="store_true")
     a = ap.parse_args()
     gf = import_getfem("getfem_ironing_3d.py")
     if gf is None:
@@ -231,7 +202,7 @@ def main():
         lam, mu = lame(*MODULI[body.name])
         md.add_initialized_data("lam_" + sfx, [lam])
         md.add_initialized_data("mu_" + sfx, [mu])
-        md.add_nonlinear_term(mim, neo_hookean_piola(var, sfx) + ":Grad_Test_" + var)
+        md.add_nonlinear_term(mim, neo_hookean_piola(var, sfx, 3) + ":Grad_Test_" + var)
     md.add_initialized_data("zero", [0.0, 0.0, 0.0])
     md.add_initialized_data("top", [0.0, 0.0, 0.0])
     md.add_Dirichlet_condition_with_simplification("ub", BOTTOM, "zero")
@@ -272,23 +243,15 @@ def main():
 
     # Equilibrium rows: all displacement dofs but the supported ones (the z = 0 rows hold the
     # multiplier's reaction, so they are in); the die top's dofs (x, y, z interleaved).
-    free, top_dofs = [], None
-    for var, mf, fixed in (("ud", mfd, TOP), ("ub", mfb, BOTTOM)):
-        i0, n = md.interval_of_variable(var)
-        keep = np.ones(n, bool)
-        dofs = np.asarray(mf.basic_dof_on_region(fixed), int)
-        keep[dofs] = False
-        free.append(i0 + np.nonzero(keep)[0])
-        if var == "ud":
-            top_dofs = dofs
-    free = np.concatenate(free)
+    free, supported = equilibrium_rows(md, (("ud", mfd, TOP), ("ub", mfb, BOTTOM)))
+    top_dofs = supported["ud"]
     print("dofs: %d in all, %d equilibrium rows" % (md.nbdof(), len(free)))
     i0d = md.interval_of_variable("ud")[0]
     if len(top_dofs) != 3 * len(nsets[TOP_NODES]):
         raise SystemExit("die top: %d dofs for %d nodes" % (len(top_dofs),
                                                             len(nsets[TOP_NODES])))
     top_c = [top_dofs[top_dofs % 3 == c] for c in range(3)]
-    internal = "(%s):Grad_Test_ud" % neo_hookean_piola("ud", "d")
+    internal = "(%s):Grad_Test_ud" % neo_hookean_piola("ud", "d", 3)
     gauss = [(var, gf.MeshImData(mim, -1, [])) for var, mim in (("ud", mimd), ("ub", mimb))]
 
     def min_jacobian():

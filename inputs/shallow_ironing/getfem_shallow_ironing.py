@@ -47,8 +47,9 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
-from getfem_model import (Body, add_large_sliding_contact, add_neo_hookean, advance,  # noqa: E402
-                          neo_hookean_piola, import_getfem, read_mesh, side_nodes, write_csv)
+from getfem_model import (Body, add_large_sliding_contact, add_neo_hookean,  # noqa: E402
+                          add_stepping_arguments, advance, equilibrium_rows, neo_hookean_piola,
+                          import_getfem, read_mesh, side_nodes, write_csv)
 
 MODULI = {"die": (6.896e9, 0.32), "block": (6.896e8, 0.32)}
 
@@ -62,16 +63,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--mesh", default="shallow_ci.exo")
     ap.add_argument("--mu", type=float, default=0.3, help="Coulomb coefficient (0: frictionless)")
-    ap.add_argument("--times", default="", help="take the steps of this Grout summary CSV")
-    ap.add_argument("--steps", type=int, default=56, help="equal steps (without --times)")
-    ap.add_argument("--t-end", type=float, default=1.4)
-    ap.add_argument("--r", type=float, default=None, help="augmentation (Pa/m)")
-    ap.add_argument("--r-factor", type=float, default=1.0, help="multiplies E_block / h")
-    ap.add_argument("--release", type=float, default=0.2, help="release distance")
-    ap.add_argument("--max-res", type=float, default=1.0,
-                    help="Newton: max |residual| (N) on the equilibrium rows")
-    ap.add_argument("--csv", default="")
-    ap.add_argument("--noisy", action="store_true")
+    add_stepping_arguments(ap, steps=56, t_end=1.4, release=0.2, max_res=1.0)
     a = ap.parse_args()
     gf = import_getfem("getfem_shallow_ironing.py")
     if gf is None:
@@ -118,16 +110,8 @@ def main():
                                        ("ub", mfb, mimb, MASTER))
 
     # Equilibrium rows: all but the supported dofs; the die top's dofs (x, y interleaved).
-    free, top_dofs = [], None
-    for var, mf, fixed in (("ud", mfd, TOP), ("ub", mfb, BOTTOM)):
-        i0, n = md.interval_of_variable(var)
-        keep = np.ones(n, bool)
-        dofs = np.asarray(mf.basic_dof_on_region(fixed), int)
-        keep[dofs] = False
-        free.append(i0 + np.nonzero(keep)[0])
-        if var == "ud":
-            top_dofs = dofs
-    free = np.concatenate(free)
+    free, supported = equilibrium_rows(md, (("ud", mfd, TOP), ("ub", mfb, BOTTOM)))
+    top_dofs = supported["ud"]
     i0d = md.interval_of_variable("ud")[0]
     if len(top_dofs) != 2 * len(nsets["die_top_nodes"]):
         raise SystemExit("die top: %d dofs for %d nodes" % (len(top_dofs),
