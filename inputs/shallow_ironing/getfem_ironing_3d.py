@@ -4,7 +4,8 @@ whether Grout's 3D F_y plateau (about 5 % above the published curve) comes from 
 from Grout (docs/verification.md, "Shallow ironing", "The reference's own 3D model").
 
 What: the same 3D frictionless problem as kratos3d_frictionless.yaml, on the same Exodus mesh
-(kratos3d.exo: Kratos' shallow_ironing3D.mdpa converted by tools/mdpa_to_exodus.py), read with
+(kratos3d.exo: Kratos' shallow_ironing3D.mdpa converted by tools/mdpa_to_exodus.py; or, with
+--layout slab, an ironing_mesh.py --layers mesh, as slab_ci_frictionless.yaml), read with
 netCDF4 here (../contact_common/getfem_model.py reads QUAD4 meshes only; its Newton, load
 stepping and CSV writer are shared):
 - two bodies, each its own GetFEM mesh: the die (block parts_parts_auto1, E = 6.896e9) and the
@@ -52,8 +53,15 @@ np1/kratos3d_frictionless.csv; 3 x 15 876 displacement dofs; about 20 min):
   nice -n 5 /usr/bin/python3 ../../inputs/shallow_ironing/getfem_ironing_3d.py \
       --mesh kratos3d.exo --times np1/kratos3d_frictionless.csv --add-times 1.0 \
       --csv getfem_kratos3d_frictionless.csv
-(--t-end 0.34 with --times stops there: a sanity check.) Needs python3-getfem (Debian), numpy,
-netCDF4. Exit code 77 when GetFEM is missing, 1 when a step does not converge.
+(--t-end 0.34 with --times stops there: a sanity check.) The CI check (ctest
+shallow_ironing/getfem_3d, 9 s), on the CI mesh extruded in one layer (1 064 nodes):
+  getfem_ironing_3d.py --layout slab --mesh slab_ci.exo --times np1/slab_ci_frictionless.csv \
+      --t-end 1.2 --compare np1/slab_ci_frictionless.csv np2/slab_ci_frictionless.csv
+--compare: F_x and F_y against Grout's at every step, max difference over the path relative
+to Grout's largest F_y within --tol (0.5 %; measured 0.24 % and 0.33 %), and the Grout runs
+against each other to 1e-8; --nu 0.34 (GetFEM only) gives 0.71 % and fails.
+Needs python3-getfem (Debian), numpy, netCDF4. Exit code 77 when GetFEM is missing, 1 when a
+step does not converge or a comparison fails.
 """
 import argparse
 import csv
@@ -68,13 +76,21 @@ sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
 from getfem_model import (Body, add_stepping_arguments, advance, equilibrium_rows,  # noqa: E402
                           import_getfem, lame, names, neo_hookean_piola, write_csv)
 
-DIE, BLOCK = "parts_parts_auto1", "parts_parts_auto2"
-MODULI = {DIE: (6.896e9, 0.32), BLOCK: (6.896e8, 0.32)}
-BOTTOM_NODES = "displacement_displacement_auto1"   # block bottom: clamped
-TOP_NODES = "displacement_displacement_auto2"      # die top: prescribed
-Z0_NODES = "displacement_displacement_auto3"       # z = 0 of both bodies: u_z = 0
-SLAVE_SIDES = "contact_contact_auto1_auto1"        # die arc
-MASTER_SIDES = "contact_contact_auto1_auto2"       # block top
+E_DIE, E_BLOCK, NU = 6.896e9, 6.896e8, 0.32
+# The mesh's names (--layout): element blocks die, block; node sets of the block's bottom
+# (clamped), the die's top (prescribed) and z = 0 (u_z = 0); side sets of the die's arc
+# (slave) and the block's top (master).
+LAYOUTS = {
+    # Kratos' shallow_ironing3D.mdpa through tools/mdpa_to_exodus.py
+    "kratos": dict(die="parts_parts_auto1", block="parts_parts_auto2",
+                   bottom="displacement_displacement_auto1",
+                   top="displacement_displacement_auto2",
+                   z0=("displacement_displacement_auto3",),
+                   slave="contact_contact_auto1_auto1", master="contact_contact_auto1_auto2"),
+    # ironing_mesh.py --thickness T --layers N (the slab3d_*.yaml meshes)
+    "slab": dict(die="die", block="block", bottom="block_bottom_nodes", top="die_top_nodes",
+                 z0=("block_z0_nodes", "die_z0_nodes"), slave="die_bottom", master="block_top"),
+}
 # Exodus HEX8 sides (1-based nodes); GetFEM QK(3,1) vertex k is Exodus node EXO_OF_GF[k] + 1.
 HEX_SIDES = ((1, 2, 6, 5), (2, 3, 7, 6), (3, 4, 8, 7), (1, 5, 8, 4), (1, 4, 3, 2), (5, 6, 7, 8))
 EXO_OF_GF = [0, 1, 3, 2, 4, 5, 7, 6]
@@ -85,7 +101,7 @@ def die_top(t):
     return np.array([0.0 if t <= 1 else 10 * (t - 1), -0.8 * t if t <= 1 else -0.8, 0.0])
 
 
-def read_exodus_3d(path):
+def read_exodus_3d(path, names_of):
     """Nodes (n x 3), blocks {name: HEX8 connectivity, 0-based}, node sets, side sets
     {name: [(element, 0-based over all blocks in file order, side 1..6)]}, all connectivity."""
     import netCDF4
@@ -104,9 +120,10 @@ def read_exodus_3d(path):
                          np.asarray(d.variables["side_ss%d" % (i + 1)][:])))
              for i, n in enumerate(names(d.variables["ss_names"]))}
     conn_all = np.concatenate([blocks[n] for n in names(d.variables["eb_names"])])
-    for need in (DIE, BLOCK, BOTTOM_NODES, TOP_NODES, Z0_NODES, SLAVE_SIDES, MASTER_SIDES):
+    for need in (names_of["die"], names_of["block"], names_of["bottom"], names_of["top"],
+                 *names_of["z0"], names_of["slave"], names_of["master"]):
         if need not in blocks and need not in nsets and need not in ssets:
-            raise SystemExit("%s: %s missing" % (path, need))
+            raise SystemExit("%s: %s missing (--layout?)" % (path, need))
     return x, blocks, nsets, ssets, conn_all
 
 
@@ -149,9 +166,16 @@ class Body3D(Body):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--mesh", default="kratos3d.exo")
+    ap.add_argument("--layout", default="kratos", choices=sorted(LAYOUTS),
+                    help="the mesh's block and set names")
     add_stepping_arguments(ap, steps=34, t_end=1.7, release=0.2, max_res=1.0)
     ap.add_argument("--add-times", type=float, nargs="*", default=[],
                     help="extra step times (merged with --times / --steps)")
+    ap.add_argument("--nu", type=float, default=NU, help="Poisson's ratio of both bodies")
+    ap.add_argument("--compare", nargs="*", default=[], metavar="GROUT_CSV",
+                    help="Grout summary CSVs of the same run, compared step by step")
+    ap.add_argument("--tol", type=float, default=5e-3,
+                    help="--compare: max |F difference| / Grout's max F_y, over the path")
     a = ap.parse_args()
     gf = import_getfem("getfem_ironing_3d.py")
     if gf is None:
@@ -161,27 +185,30 @@ def main():
     # point); --noisy shows them.
     gf.util_warning_level(1 if a.noisy else 0)
     t0 = time.process_time()
-    x, blocks, nsets, ssets, conn_all = read_exodus_3d(a.mesh)
-    die, blk = Body3D(gf, x, blocks[DIE], DIE), Body3D(gf, x, blocks[BLOCK], BLOCK)
-    slave_faces = side_faces(ssets, conn_all, SLAVE_SIDES)
-    master_faces = side_faces(ssets, conn_all, MASTER_SIDES)
+    n = LAYOUTS[a.layout]
+    x, blocks, nsets, ssets, conn_all = read_exodus_3d(a.mesh, n)
+    die, blk = Body3D(gf, x, blocks[n["die"]], "die"), Body3D(gf, x, blocks[n["block"]], "block")
+    slave_faces = side_faces(ssets, conn_all, n["slave"])
+    master_faces = side_faces(ssets, conn_all, n["master"])
+    top_nodes, bottom_nodes = nsets[n["top"]], nsets[n["bottom"]]
+    z0 = np.unique(np.concatenate([nsets[name] for name in n["z0"]]))
     TOP, BOTTOM, SLAVE, MASTER, Z0D, Z0B = 1, 2, 3, 4, 5, 6
-    counts = (die.face_region(TOP, nsets[TOP_NODES], x),
-              blk.face_region(BOTTOM, nsets[BOTTOM_NODES], x),
+    counts = (die.face_region(TOP, top_nodes, x),
+              blk.face_region(BOTTOM, bottom_nodes, x),
               die.face_region(SLAVE, np.unique(slave_faces), x),
               blk.face_region(MASTER, np.unique(master_faces), x),
-              die.face_region(Z0D, nsets[Z0_NODES], x),
-              blk.face_region(Z0B, nsets[Z0_NODES], x))
+              die.face_region(Z0D, z0, x),
+              blk.face_region(Z0B, z0, x))
 
     def exodus_faces(conn, nodes):
         """Element sides (Exodus HEX8 sides) of `conn` with all 4 nodes among `nodes`."""
         inside = np.isin(conn, nodes)
         return sum(int(inside[:, np.array(sd) - 1].all(axis=1).sum()) for sd in HEX_SIDES)
-    z0 = nsets[Z0_NODES]
     z0_in = (die.pids(z0, x) >= 0).sum() + (blk.pids(z0, x) >= 0).sum()
-    expect = (exodus_faces(blocks[DIE], nsets[TOP_NODES]),
-              exodus_faces(blocks[BLOCK], nsets[BOTTOM_NODES]), len(slave_faces),
-              len(master_faces), exodus_faces(blocks[DIE], z0), exodus_faces(blocks[BLOCK], z0))
+    expect = (exodus_faces(blocks[n["die"]], top_nodes),
+              exodus_faces(blocks[n["block"]], bottom_nodes), len(slave_faces),
+              len(master_faces), exodus_faces(blocks[n["die"]], z0),
+              exodus_faces(blocks[n["block"]], z0))
     print("mesh %s: die %d nodes %d hexes, block %d nodes %d hexes; smallest corner Jacobians "
           "%.3g, %.3g" % (a.mesh, die.mesh.nbpts(), die.mesh.nbcvs(), blk.mesh.nbpts(),
                           blk.mesh.nbcvs(), die.jmin, blk.jmin))
@@ -199,7 +226,7 @@ def main():
     md.add_fem_variable("ud", mfd)
     md.add_fem_variable("ub", mfb)
     for var, body, mim, sfx in (("ud", die, mimd, "d"), ("ub", blk, mimb, "b")):
-        lam, mu = lame(*MODULI[body.name])
+        lam, mu = lame(E_DIE if body.name == "die" else E_BLOCK, a.nu)
         md.add_initialized_data("lam_" + sfx, [lam])
         md.add_initialized_data("mu_" + sfx, [mu])
         md.add_nonlinear_term(mim, neo_hookean_piola(var, sfx, 3) + ":Grad_Test_" + var)
@@ -228,7 +255,7 @@ def main():
               % (var, len(zdofs[var]), len(keep), len(zdofs[var]) - len(keep)))
 
     h = np.linalg.norm(x[np.roll(slave_faces, -1, axis=1)] - x[slave_faces], axis=2).mean()
-    r = a.r if a.r is not None else a.r_factor * MODULI[BLOCK][0] / h
+    r = a.r if a.r is not None else a.r_factor * E_BLOCK / h
     print("contact: r = %.4g Pa/m (h = %.4g), release distance %.3g, frictionless"
           % (r, h, a.release))
     md.add_initialized_data("r", [r])
@@ -247,9 +274,8 @@ def main():
     top_dofs = supported["ud"]
     print("dofs: %d in all, %d equilibrium rows" % (md.nbdof(), len(free)))
     i0d = md.interval_of_variable("ud")[0]
-    if len(top_dofs) != 3 * len(nsets[TOP_NODES]):
-        raise SystemExit("die top: %d dofs for %d nodes" % (len(top_dofs),
-                                                            len(nsets[TOP_NODES])))
+    if len(top_dofs) != 3 * len(top_nodes):
+        raise SystemExit("die top: %d dofs for %d nodes" % (len(top_dofs), len(top_nodes)))
     top_c = [top_dofs[top_dofs % 3 == c] for c in range(3)]
     internal = "(%s):Grad_Test_ud" % neo_hookean_piola("ud", "d", 3)
     gauss = [(var, gf.MeshImData(mim, -1, [])) for var, mim in (("ud", mimd), ("ub", mimb))]
@@ -310,7 +336,40 @@ def main():
         t_prev = t_target
     write(a.csv, rows)
     print("getfem_ironing_3d.py: %d steps, %.1f s CPU" % (len(rows), time.process_time() - t0))
-    return 0
+    return compare(rows, a.compare, n["top"], a.tol)
+
+
+def compare(rows, grout_csvs, top, tol):
+    """GetFEM's F_x, F_y against each Grout summary CSV at the same times: the largest
+    differences over the path relative to Grout's largest F_y, within tol; the Grout CSVs
+    (1 and 2 ranks) against each other to 1e-8. Returns the exit code (1: a difference above
+    its tolerance, or other times)."""
+    failed = False
+    t, fx, fy = (np.array([r[i] for r in rows]) for i in (0, 1, 2))
+    first = None
+    for path in grout_csvs:
+        g = list(csv.DictReader(open(path)))
+        tg = np.array([float(r["time"]) for r in g])
+        if len(tg) != len(t) or np.abs(tg - t).max() > 1e-12:
+            print("%s: other times than GetFEM's" % path)
+            failed = True
+            continue
+        gx = np.array([float(r["reaction_%s_x" % top]) for r in g])
+        gy = -np.array([float(r["reaction_%s_y" % top]) for r in g])
+        dy, dx = np.abs(fy - gy).max() / gy.max(), np.abs(fx - gx).max() / gy.max()
+        print("GetFEM - Grout (%s), %d steps, relative to Grout's max F_y %.4g N: max |F_y "
+              "difference| %.2e, max |F_x difference| %.2e (tolerance %g)"
+              % (path, len(t), gy.max(), dy, dx, tol))
+        failed = failed or not (dy <= tol and dx <= tol)
+        if first is None:
+            first = (path, gx, gy)
+        else:  # Grout on another number of ranks: the same answer to round-off
+            d = max(np.abs(gx - first[1]).max(), np.abs(gy - first[2]).max()) / gy.max()
+            print("Grout %s against %s: %.2e (tolerance 1e-8)" % (path, first[0], d))
+            failed = failed or not d <= 1e-8
+    if grout_csvs:
+        print("getfem_ironing_3d.py: %s" % ("FAILED" if failed else "GetFEM agrees with Grout"))
+    return 1 if failed else 0
 
 
 def write(path, rows):
