@@ -200,11 +200,11 @@ def advance(gf, md, free, apply, s_from, s_to, w, max_res, noisy=False, max_cuts
     return total, cuts, True, s_try
 
 
-def add_large_sliding_contact(gf, md, r, release, mu, slave, master, order=1):
+def add_large_sliding_contact(gf, md, r, release, mu, slave, master, order=1, dim=2):
     """Poulios & Renard's integral large-sliding contact brick (raytracing): augmentation r,
     release distance `release`, Coulomb mu (0: frictionless). slave = (variable, MeshFem,
     mesh, MeshIm, region), master = (variable, MeshFem, MeshIm, region); the multiplier lam_c
-    is QK(2, order) on the slave's mesh, filtered to its region. With mu > 0 each body's slip is
+    is QK(dim, order) on the slave's mesh, filtered to its region. With mu > 0 each body's slip is
     measured from its copy w_<variable>, the start-of-step state (`advance` sets it).
     Returns (brick index, {variable: its copy's name})."""
     md.add_initialized_data("r", [r])
@@ -218,8 +218,8 @@ def add_large_sliding_contact(gf, md, r, release, mu, slave, master, order=1):
         for var, mf in ((s_var, s_mf), (m_var, m_mf)):
             md.add_fem_data("w_" + var, mf)
             w[var] = "w_" + var
-    mfl = gf.MeshFem(s_mesh, 2)
-    mfl.set_fem(gf.Fem("FEM_QK(2,%d)" % order))
+    mfl = gf.MeshFem(s_mesh, dim)
+    mfl.set_fem(gf.Fem("FEM_QK(%d,%d)" % (dim, order)))
     md.add_filtered_fem_variable("lam_c", mfl, s_region)
     md.add_slave_contact_boundary_to_large_sliding_contact_brick(
         ind, s_mim, s_region, s_var, "lam_c", *([w[s_var]] if w else []))
