@@ -200,6 +200,20 @@ def advance(gf, md, free, apply, s_from, s_to, w, max_res, noisy=False, max_cuts
     return total, cuts, True, s_try
 
 
+def advance_step(gf, md, free, apply, step, s_from, s_to, w, max_res, noisy=False, name="t",
+                 failed=None):
+    """advance() over load step `step`; when it fails after its cut-backs, says so and calls
+    failed() (the scripts write the steps done so far). Returns (Newton iterations, cut-backs,
+    converged)."""
+    total, cuts, converged, s_try = advance(gf, md, free, apply, s_from, s_to, w, max_res, noisy)
+    if not converged:
+        print("step %d: no convergence at %s = %.5f after %d cut-backs"
+              % (step, name, s_try, cuts - 1))
+        if failed:
+            failed()
+    return total, cuts, converged
+
+
 def add_large_sliding_contact(gf, md, r, release, mu, slave, master, order=1, dim=2):
     """Poulios & Renard's integral large-sliding contact brick (raytracing): augmentation r,
     release distance `release`, Coulomb mu (0: frictionless). slave = (variable, MeshFem,

@@ -56,8 +56,9 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
-from getfem_model import (Body, add_large_sliding_contact, add_neo_hookean, advance,  # noqa: E402
-                          neo_hookean_piola, import_getfem, read_mesh, side_nodes, write_csv)
+from getfem_model import (Body, add_large_sliding_contact, add_neo_hookean,  # noqa: E402
+                          advance_step, neo_hookean_piola, import_getfem, read_mesh, side_nodes,
+                          write_csv)
 NU = 0.3
 E = {"base": 3.0e8, "ring_inner": 1.0e11, "ring_outer": 1.0e9}
 RING = [(0.085, 0.09, 1e11, 0.3), (0.09, 0.095, 1e9, 0.3)]  # (r_in, r_out, E, nu): arch_theory
@@ -184,12 +185,10 @@ def main():
     dd0 = a.d_max / a.steps
     for step in range(1, a.steps + 1):
         d_target = min(a.d_max, step * dd0)
-        total_it, cuts, conv, d_try = advance(
-            gf, md, free, lambda d: md.set_variable("dend", [0.0, -d]), d_prev, d_target, w,
-            a.max_res, a.noisy)
+        total_it, cuts, conv = advance_step(
+            gf, md, free, lambda d: md.set_variable("dend", [0.0, -d]), step, d_prev, d_target,
+            w, a.max_res, a.noisy, name="d", failed=lambda: write(a.csv, rows))
         if not conv:
-            print("step %d: no convergence at d = %.5f after 6 cut-backs" % (step, d_try))
-            write(a.csv, rows)
             return 1
         u = md.variable("ur")
         fy = end_force()

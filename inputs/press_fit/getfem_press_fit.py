@@ -48,8 +48,8 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
-from getfem_model import (Body, add_large_sliding_contact, add_neo_hookean, advance,  # noqa: E402
-                          import_getfem, read_mesh, side_nodes, write_csv)
+from getfem_model import (Body, add_large_sliding_contact, add_neo_hookean,  # noqa: E402
+                          advance_step, import_getfem, read_mesh, side_nodes, write_csv)
 
 MODULI = {"parts_solid_auto1": (2.1e10, 0.3), "parts_solid_auto2": (1.0e9, 0.47)}
 T_END, T_PRESS = 1.3, 0.01
@@ -161,12 +161,10 @@ def main():
     nsteps = int(round(a.t_end / dt0))
     for step in range(1, nsteps + 1):
         t_target = step * dt0
-        total_it, cuts, conv, t_try = advance(
-            gf, md, free, lambda t: md.set_variable("sup_vals", values(t)), t_prev, t_target, w,
-            a.max_res, a.noisy)
+        total_it, cuts, conv = advance_step(
+            gf, md, free, lambda t: md.set_variable("sup_vals", values(t)), step, t_prev, t_target,
+            w, a.max_res, a.noisy, failed=lambda: write(a.csv, rows))
         if not conv:
-            print("step %d: no convergence at t = %.5f after 6 cut-backs" % (step, t_try))
-            write(a.csv, rows)
             return 1
         ub = np.asarray(md.variable("ub"))
         err = np.abs(sup_displacements(mfb, ub, pts, dirs) - values(t_target)).max()

@@ -35,7 +35,7 @@ stepping and CSV writer are shared):
   die's equilibrium in x, y (contact resultant + support force = 0);
 - load path: the times of --times (a Grout summary CSV: its column "time", i.e. the steps
   Grout took) and of --add-times, or --steps equal steps to --t-end; Newton from the previous
-  state, a step that does not converge is halved (up to 6 times: getfem_model.advance);
+  state, a step that does not converge is halved (up to 6 times: getfem_model.advance_step);
 - output (--csv), one row per step: time, F_x, F_y (N, the force the die's top support puts
   on the die, with the signs of check.py: F_x = reaction_displacement_displacement_auto2_x,
   F_y = -reaction_displacement_displacement_auto2_y), F_z, the contact multiplier's resultant
@@ -77,7 +77,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
 from getfem_model import (Body, add_large_sliding_contact, add_stepping_arguments,  # noqa: E402
-                          advance, equilibrium_rows, import_getfem, lame, names,
+                          advance_step, equilibrium_rows, import_getfem, lame, names,
                           neo_hookean_piola, write_csv)
 
 E_DIE, E_BLOCK, NU = 6.896e9, 6.896e8, 0.32
@@ -305,12 +305,10 @@ def main():
     t_prev = 0.0
     for step, t_target in enumerate(tt, 1):
         c0 = time.process_time()
-        total_it, cuts, conv, t_try = advance(
-            gf, md, free, lambda t: md.set_variable("top", die_top(t)), t_prev, t_target, w,
-            a.max_res, a.noisy)
+        total_it, cuts, conv = advance_step(
+            gf, md, free, lambda t: md.set_variable("top", die_top(t)), step, t_prev, t_target,
+            w, a.max_res, a.noisy, failed=lambda: write(a.csv, rows))
         if not conv:
-            print("step %d: no convergence at t = %.5f after 6 cut-backs" % (step, t_try))
-            write(a.csv, rows)
             return 1
         ud, ub = np.asarray(md.variable("ud")), np.asarray(md.variable("ub"))
         err = max(np.abs(ud[top_c[c]] - die_top(t_target)[c]).max() for c in range(3))

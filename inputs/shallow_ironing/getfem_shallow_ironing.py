@@ -22,7 +22,7 @@ press fit's GetFEM checks):
   distance --release (default 0.2: with 0.1 the frictionless run stops at t = 0.7);
 - load path: the times of --times (a Grout summary CSV: its column "time", i.e. the steps
   Grout took) or --steps equal steps to --t-end; Newton from the previous state, a step that
-  does not converge is halved (up to 6 times: getfem_model.advance);
+  does not converge is halved (up to 6 times: getfem_model.advance_step);
 - output (--csv), one row per step: time, F_x, F_y (N per unit thickness, the force the die's
   top support puts on the die, with the signs of check.py: F_x = reaction_die_top_nodes_x,
   F_y = -reaction_die_top_nodes_y), the contact resultants on the die from the multiplier
@@ -48,8 +48,8 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
 from getfem_model import (Body, add_large_sliding_contact, add_neo_hookean,  # noqa: E402
-                          add_stepping_arguments, advance, equilibrium_rows, neo_hookean_piola,
-                          import_getfem, read_mesh, side_nodes, write_csv)
+                          add_stepping_arguments, advance_step, equilibrium_rows,
+                          neo_hookean_piola, import_getfem, read_mesh, side_nodes, write_csv)
 
 MODULI = {"die": (6.896e9, 0.32), "block": (6.896e8, 0.32)}
 
@@ -145,12 +145,10 @@ def main():
     rows = []
     t_prev = 0.0
     for step, t_target in enumerate(tt, 1):
-        total_it, cuts, conv, t_try = advance(
-            gf, md, free, lambda t: md.set_variable("top", die_top(t)), t_prev, t_target, w,
-            a.max_res, a.noisy)
+        total_it, cuts, conv = advance_step(
+            gf, md, free, lambda t: md.set_variable("top", die_top(t)), step, t_prev, t_target,
+            w, a.max_res, a.noisy, failed=lambda: write(a.csv, rows))
         if not conv:
-            print("step %d: no convergence at t = %.5f after 6 cut-backs" % (step, t_try))
-            write(a.csv, rows)
             return 1
         ud = np.asarray(md.variable("ud"))
         err = np.abs(ud[top_x] - die_top(t_target)[0]).max() + \
