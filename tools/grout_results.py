@@ -79,6 +79,17 @@ class Results:
             blocks[np.unique(self.connectivity(b))] = b
         return blocks
 
+    def node_map(self, other, move=lambda x: x):
+        """For each node of this mesh, the index of the node of `other` in the same block at
+        move(its coordinates) (matched to 1e-9: half and full models, mirror images). The
+        block is part of the key: bodies in contact have their own nodes at the same place."""
+        def key(block, x):
+            return (block,) + tuple(np.round(x, 9))
+        index = {key(b, x): i for i, (x, b) in enumerate(zip(other.coordinates().T,
+                                                             other.node_blocks()))}
+        return np.array([index[key(b, move(x))]
+                         for x, b in zip(self.coordinates().T, self.node_blocks())])
+
     def element_centroids(self):
         xyz = self.coordinates()
         parts = []

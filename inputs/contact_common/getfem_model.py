@@ -36,18 +36,19 @@ def names(var):
     return out
 
 
-def read_exodus(path):
-    """Nodes, blocks {name: connectivity (0-based, counter-clockwise)}, node sets, side sets
-    {name: [(element, 0-based in block order, side 1..4)]}, and all blocks' connectivity."""
+def read_exodus(path, dim=2):
+    """Nodes (n x dim), blocks {name: connectivity (0-based; QUAD4 counter-clockwise in 2D,
+    HEX8 in 3D)}, node sets, side sets {name: [(element, 0-based in block order, side)]}, and
+    all blocks' connectivity."""
     import netCDF4
     d = netCDF4.Dataset(path)
     d.set_auto_mask(False)
-    x = np.stack([d.variables["coordx"][:], d.variables["coordy"][:]], axis=1)
+    x = np.stack([d.variables["coord" + c][:] for c in "xyz"[:dim]], axis=1)
     blocks = {}
     for i, n in enumerate(names(d.variables["eb_names"])):
         conn = np.asarray(d.variables["connect%d" % (i + 1)][:]) - 1
-        if conn.shape[1] != 4:
-            raise SystemExit("%s: block %s is not QUAD4" % (path, n))
+        if conn.shape[1] != (4 if dim == 2 else 8):
+            raise SystemExit("%s: block %s is not %s" % (path, n, "QUAD4" if dim == 2 else "HEX8"))
         blocks[n] = conn
     nsets = {n: np.asarray(d.variables["node_ns%d" % (i + 1)][:]) - 1
              for i, n in enumerate(names(d.variables["ns_names"]))}

@@ -69,11 +69,8 @@ if not failures:
           % (100 * np.abs(ratio / MU - 1).max()))
 
     rh, rf = Results("np1/drag_sym_half_mu03.e"), Results("np1/drag_sym_full_mu03.e")
-    xh, xf = rh.coordinates().T, rf.coordinates().T
-    # (block, coordinates): the die's and the block's nodes may share coordinates
-    index = {(b,) + tuple(np.round(x, 9)): i for i, (x, b) in enumerate(zip(xf, rf.node_blocks()))}
-    mapped = np.array([index[(b,) + tuple(np.round(x + [0.0, 0.0, T_HALF], 9))]
-                       for x, b in zip(xh, rh.node_blocks())])
+    xh = rh.coordinates().T
+    mapped = rh.node_map(rf, lambda x: x + [0.0, 0.0, T_HALF])
     plane = np.abs(xh[:, 2]) < 1e-12
     d_u = d_lz = d_lz_full = 0.0
     for step in range(STEPS):

@@ -32,16 +32,10 @@ def check(ok, message):
         failures.append(message)
 
 
-def keyed(results):
-    x, blocks = results.coordinates().T, results.node_blocks()
-    return x, blocks, {(b,) + tuple(np.round(p, 9)): i for i, (p, b) in enumerate(zip(x, blocks))}
-
-
 half, full = Results("np1/symmetry_half_2d.e"), Results("np1/symmetry_full_2d.e")
-xh, bh, _ = keyed(half)
-xf, bf, index = keyed(full)
-mapped = np.array([index[(b,) + tuple(np.round(p + [1.0, 0.0], 9))] for p, b in zip(xh, bh)])
-mirror = np.array([index[(b,) + tuple(np.round([2.0 - p[0], p[1]], 9))] for p, b in zip(xf, bf)])
+xh, bh = half.coordinates().T, half.node_blocks()
+mapped = half.node_map(full, lambda p: p + [1.0, 0.0])
+mirror = full.node_map(full, lambda p: [2.0 - p[0], p[1]])
 check(len(half.times()) == STEPS and len(full.times()) == STEPS,
       "steps: half %d, full %d (expected %d)" % (len(half.times()), len(full.times()), STEPS))
 
@@ -88,5 +82,6 @@ for name in ("displ_x", "displ_y"):
 
 for f in failures:
     print("FAIL:", f)
-print("check_symmetry_2d: %s" % ("all checks passed" if not failures else "%d failure(s)" % len(failures)))
+print("check_symmetry_2d: %s"
+      % ("all checks passed" if not failures else "%d failure(s)" % len(failures)))
 sys.exit(1 if failures else 0)

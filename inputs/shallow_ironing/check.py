@@ -56,7 +56,6 @@ in_ref = (t_ref >= a.plateau[0]) & (t_ref <= a.plateau[1])
 fy_ref_plateau = fy_ref[in_ref].mean()
 
 
-
 def slave_nodes(np_, steps):
     """(step, contact_status, contact_pressure, |lambda|^2) of every slave node at every step:
     from np<r>/CASE_contact.csv (2D), else from the Exodus file np<r>/CASE.e (3D writes no

@@ -5,9 +5,9 @@ from Grout (docs/verification.md, "Shallow ironing", "The reference's own 3D mod
 
 What: the same 3D frictionless problem as kratos3d_frictionless.yaml, on the same Exodus mesh
 (kratos3d.exo: Kratos' shallow_ironing3D.mdpa converted by tools/mdpa_to_exodus.py; or, with
---layout slab, an ironing_mesh.py --layers mesh, as slab_ci_frictionless.yaml), read with
-netCDF4 here (../contact_common/getfem_model.py reads QUAD4 meshes only; its Newton, load
-stepping and CSV writer are shared):
+--layout slab, an ironing_mesh.py --layers mesh, as slab_ci_frictionless.yaml), read by
+../contact_common/getfem_model.py (shared with the 2D checks, as are its Newton, load stepping
+and CSV writer):
 - two bodies, each its own GetFEM mesh: the die (block parts_parts_auto1, E = 6.896e9) and the
   block (parts_parts_auto2, E = 6.896e8), nu = 0.32 both; trilinear QK(3,1) with 2x2x2 Gauss,
   as Grout's HEX8 (GetFEM's vertex order is lexicographic, (0,0,0), (1,0,0), (0,1,0), (1,1,0),
@@ -77,7 +77,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_common"))
 from getfem_model import (Body, add_large_sliding_contact, add_stepping_arguments,  # noqa: E402
-                          advance_step, equilibrium_rows, import_getfem, lame, names,
+                          advance_step, equilibrium_rows, import_getfem, lame, read_exodus,
                           neo_hookean_piola, write_csv)
 
 E_DIE, E_BLOCK, NU = 6.896e9, 6.896e8, 0.32
@@ -106,24 +106,8 @@ def die_top(t):
 
 
 def read_exodus_3d(path, names_of):
-    """Nodes (n x 3), blocks {name: HEX8 connectivity, 0-based}, node sets, side sets
-    {name: [(element, 0-based over all blocks in file order, side 1..6)]}, all connectivity."""
-    import netCDF4
-    d = netCDF4.Dataset(path)
-    d.set_auto_mask(False)
-    x = np.stack([d.variables[c][:] for c in ("coordx", "coordy", "coordz")], axis=1)
-    blocks = {}
-    for i, n in enumerate(names(d.variables["eb_names"])):
-        v = d.variables["connect%d" % (i + 1)]
-        if v.shape[1] != 8 or not v.getncattr("elem_type").upper().startswith("HEX"):
-            raise SystemExit("%s: block %s is not HEX8" % (path, n))
-        blocks[n] = np.asarray(v[:]) - 1
-    nsets = {n: np.asarray(d.variables["node_ns%d" % (i + 1)][:]) - 1
-             for i, n in enumerate(names(d.variables["ns_names"]))}
-    ssets = {n: list(zip(np.asarray(d.variables["elem_ss%d" % (i + 1)][:]) - 1,
-                         np.asarray(d.variables["side_ss%d" % (i + 1)][:])))
-             for i, n in enumerate(names(d.variables["ss_names"]))}
-    conn_all = np.concatenate([blocks[n] for n in names(d.variables["eb_names"])])
+    """getfem_model.read_exodus in 3D (HEX8), refusing a mesh without the layout's names."""
+    x, blocks, nsets, ssets, conn_all = read_exodus(path, dim=3)
     for need in (names_of["die"], names_of["block"], names_of["bottom"], names_of["top"],
                  *names_of["z0"], names_of["slave"], names_of["master"]):
         if need not in blocks and need not in nsets and need not in ssets:
