@@ -18,7 +18,8 @@ and CSV writer):
 - supports as the yaml's (nodal, as Grout's dirichlet): the block bottom
   (displacement_displacement_auto1) clamped by simplification; the die top
   (displacement_displacement_auto2) u = (0, -0.8 t, 0) for t <= 1, then (10 (t - 1), -0.8, 0),
-  by simplification; u_z = 0 on z = 0 of both bodies (displacement_displacement_auto3) with a
+  by simplification; u_z = 0 on z = 0 of both bodies (displacement_displacement_auto3; none
+  with --layout slab_full, the slab's full model mirrored about its mid-plane) with a
   scalar multiplier per z = 0 node that is not already clamped (a QK(3,1) field restricted to
   those nodes, coupled to u_z on the z = 0 faces: u_z = 0 at exactly those nodes, u_x, u_y
   free; GetFEM's generalized Dirichlet condition with multipliers would also constrain the
@@ -58,13 +59,22 @@ np1/kratos3d_frictionless.csv; 3 x 15 876 displacement dofs; about 20 min):
 shallow_ironing/getfem_3d, 9 s), on the CI mesh extruded in one layer (1 064 nodes):
   getfem_ironing_3d.py --layout slab --mesh slab_ci.exo --times np1/slab_ci_frictionless.csv \
       --t-end 1.2 --compare np1/slab_ci_frictionless.csv np2/slab_ci_frictionless.csv
-(With --mu 0.3 on that one-layer mesh neither code gets past t = 0.72 while pressing: Grout's
-step at t = 0.72 fails after 6 cut-backs, GetFEM's at t = 0.69; the 2-layer slab and Kratos'
-mesh run through.) --compare: F_x and F_y against Grout's at every step, max difference over
-the path relative to Grout's largest F_y within --tol (0.5 %; measured 0.24 % and 0.33 %), and
-the Grout runs against each other to 1e-8; --nu 0.34 (GetFEM only) gives 0.71 % and fails.
-Needs python3-getfem (Debian), numpy, netCDF4. Exit code 77 when GetFEM is missing, 1 when a
-step does not converge or a comparison fails.
+With --mu 0.3 on that one-layer mesh GetFEM stops at t = 0.69 while pressing (the
+z-friction of the slave nodes on z = 0, held in z on both sides, acts on the supports only;
+Grout writes tau.lambda = 0 for that tangent, docs/input.md "Friction on a plane of
+symmetry"). Its full model, mirrored about z = 0 with nothing held there, runs through: the
+frictional CI check (ctest shallow_ironing/getfem_3d_frictional, 18 s CPU) is
+  getfem_ironing_3d.py --layout slab_full --mesh slab_ci_full.exo --mu 0.3 \
+      --times np1/slab_ci_full_frictional.csv --t-end 1.2 \
+      --compare np1/slab_ci_full_frictional.csv
+on ironing_mesh.py slab_ci_full.exo --nx-block 48 --ny-block 8 --n-die 12 --thickness 2
+--layers 2 (slab_ci_full_frictional.yaml): 240 Newton iterations, 5 cut-backs (t = 1.08 to
+1.2); F_y within 0.20 %, F_x within 0.31 % of Grout's largest F_y; F_z at round-off.
+--compare: F_x and F_y against Grout's at every step, max difference over the path relative
+to Grout's largest F_y within --tol (0.5 %; frictionless one-layer slab: measured 0.24 % and
+0.33 %), and the Grout runs against each other to 1e-8; --nu 0.34 (GetFEM only) gives 0.71 %
+and fails. Needs python3-getfem (Debian), numpy, netCDF4. Exit code 77
+when GetFEM is missing, 1 when a step does not converge or a comparison fails.
 """
 import argparse
 import csv
@@ -94,6 +104,10 @@ LAYOUTS = {
     # ironing_mesh.py --thickness T --layers N (the slab3d_*.yaml meshes)
     "slab": dict(die="die", block="block", bottom="block_bottom_nodes", top="die_top_nodes",
                  z0=("block_z0_nodes", "die_z0_nodes"), slave="die_bottom", master="block_top"),
+    # the same names, the full model (the slab mirrored about its mid-plane, as
+    # slab_ci_full_frictional.yaml): nothing held on z = 0
+    "slab_full": dict(die="die", block="block", bottom="block_bottom_nodes",
+                      top="die_top_nodes", z0=(), slave="die_bottom", master="block_top"),
 }
 # Exodus HEX8 sides (1-based nodes); GetFEM QK(3,1) vertex k is Exodus node EXO_OF_GF[k] + 1.
 HEX_SIDES = ((1, 2, 6, 5), (2, 3, 7, 6), (3, 4, 8, 7), (1, 5, 8, 4), (1, 4, 3, 2), (5, 6, 7, 8))
@@ -180,30 +194,34 @@ def main():
     slave_faces = side_faces(ssets, conn_all, n["slave"])
     master_faces = side_faces(ssets, conn_all, n["master"])
     top_nodes, bottom_nodes = nsets[n["top"]], nsets[n["bottom"]]
-    z0 = np.unique(np.concatenate([nsets[name] for name in n["z0"]]))
+    has_z0 = len(n["z0"]) > 0  # slab_full: no z = 0 sets, no regions Z0D, Z0B, no multiplier
+    z0 = np.unique(np.concatenate([nsets[name] for name in n["z0"]])) if has_z0 else None
     TOP, BOTTOM, SLAVE, MASTER, Z0D, Z0B = 1, 2, 3, 4, 5, 6
     counts = (die.face_region(TOP, top_nodes, x),
               blk.face_region(BOTTOM, bottom_nodes, x),
               die.face_region(SLAVE, np.unique(slave_faces), x),
-              blk.face_region(MASTER, np.unique(master_faces), x),
-              die.face_region(Z0D, z0, x),
-              blk.face_region(Z0B, z0, x))
+              blk.face_region(MASTER, np.unique(master_faces), x))
+    if has_z0:
+        counts += (die.face_region(Z0D, z0, x), blk.face_region(Z0B, z0, x))
 
     def exodus_faces(conn, nodes):
         """Element sides (Exodus HEX8 sides) of `conn` with all 4 nodes among `nodes`."""
         inside = np.isin(conn, nodes)
         return sum(int(inside[:, np.array(sd) - 1].all(axis=1).sum()) for sd in HEX_SIDES)
-    z0_in = (die.pids(z0, x) >= 0).sum() + (blk.pids(z0, x) >= 0).sum()
     expect = (exodus_faces(blocks[n["die"]], top_nodes),
               exodus_faces(blocks[n["block"]], bottom_nodes), len(slave_faces),
-              len(master_faces), exodus_faces(blocks[n["die"]], z0),
-              exodus_faces(blocks[n["block"]], z0))
+              len(master_faces))
+    z0_ok = True
+    if has_z0:
+        z0_in = (die.pids(z0, x) >= 0).sum() + (blk.pids(z0, x) >= 0).sum()
+        expect += (exodus_faces(blocks[n["die"]], z0), exodus_faces(blocks[n["block"]], z0))
+        z0_ok = z0_in == len(z0) and not np.abs(x[z0, 2]).max() > 0
     print("mesh %s: die %d nodes %d hexes, block %d nodes %d hexes; smallest corner Jacobians "
           "%.3g, %.3g" % (a.mesh, die.mesh.nbpts(), die.mesh.nbcvs(), blk.mesh.nbpts(),
                           blk.mesh.nbcvs(), die.jmin, blk.jmin))
-    print("faces: die top %d, block bottom %d, die arc %d, block top %d, z = 0: die %d, block %d"
-          % counts)
-    if counts != expect or z0_in != len(z0) or np.abs(x[z0, 2]).max() > 0:
+    print(("faces: die top %d, block bottom %d, die arc %d, block top %d"
+           + (", z = 0: die %d, block %d" if has_z0 else " (nothing held on z = 0)")) % counts)
+    if counts != expect or not z0_ok:
         raise SystemExit("%s: faces found %s, expected %s" % (a.mesh, counts, expect))
 
     im = gf.Integ("IM_GAUSS_PARALLELEPIPED(3,3)")  # 2x2x2 Gauss
@@ -227,9 +245,10 @@ def main():
 
     # u_z = 0 on z = 0: a multiplier z_<var> per z = 0 node not already clamped (a partial
     # QK(3,1) field), int_{z = 0} (z_v u_z + u_z* z_v) da: the face mass matrix restricted to
-    # those nodes is regular, so u_z = 0 at each of them.
+    # those nodes is regular, so u_z = 0 at each of them. None without z = 0 sets (slab_full).
+    held = (("ud", mfd, mimd, Z0D, TOP), ("ub", mfb, mimb, Z0B, BOTTOM)) if has_z0 else ()
     zdofs, keep_alive = {}, []  # (the partial MeshFem needs its parent alive)
-    for var, mf, mim, z0r, fixed in (("ud", mfd, mimd, Z0D, TOP), ("ub", mfb, mimb, Z0B, BOTTOM)):
+    for var, mf, mim, z0r, fixed in held:
         mfs = gf.MeshFem(mf.linked_mesh(), 1)
         mfs.set_fem(gf.Fem("FEM_QK(3,1)"))
         if not np.allclose(mfs.basic_dof_nodes(), mf.basic_dof_nodes()[:, ::3]):
@@ -298,10 +317,14 @@ def main():
         err = max(np.abs(ud[top_c[c]] - die_top(t_target)[c]).max() for c in range(3))
         if err > 1e-9:
             raise SystemExit("step %d: the die's top is off by %.2e" % (step, err))
-        uz = max(np.abs(ud[3 * zdofs["ud"] + 2]).max(), np.abs(ub[3 * zdofs["ub"] + 2]).max())
-        uxy = np.abs(ub[np.concatenate([3 * zdofs["ub"], 3 * zdofs["ub"] + 1])]).max()
-        if uz > 1e-10:
-            raise SystemExit("step %d: |u_z| = %.2e on z = 0" % (step, uz))
+        z0_note = ""
+        if has_z0:
+            uz = max(np.abs(ud[3 * zdofs["ud"] + 2]).max(),
+                     np.abs(ub[3 * zdofs["ub"] + 2]).max())
+            uxy = np.abs(ub[np.concatenate([3 * zdofs["ub"], 3 * zdofs["ub"] + 1])]).max()
+            if uz > 1e-10:
+                raise SystemExit("step %d: |u_z| = %.2e on z = 0" % (step, uz))
+            z0_note = "; z = 0: |u_z| %.1e, max |u_x|, |u_y| %.3g" % (uz, uxy)
         jmin = min_jacobian()
         if not jmin > 0:
             raise SystemExit("step %d: det F = %.3g at a Gauss point" % (step, jmin))
@@ -310,10 +333,9 @@ def main():
         cpu = time.process_time() - c0
         rows.append((t_target, fx, -fy, fz, lx, ly, lz, total_it, cpu))
         print("step %3d  t = %.5f  F_x = %+.5e  F_y = %+.5e  F_z = %+.3e  newton %d%s  "
-              "(|contact + support|_xy %.1e N; z = 0: |u_z| %.1e, max |u_x|, |u_y| %.3g; "
-              "min det F %.3f)  %.0f s"
+              "(|contact + support|_xy %.1e N%s; min det F %.3f)  %.0f s"
               % (step, t_target, fx, -fy, fz, total_it, " (%d cut-backs)" % cuts if cuts else "",
-                 np.hypot(lx + fx, ly + fy), uz, uxy, jmin, cpu), flush=True)
+                 np.hypot(lx + fx, ly + fy), z0_note, jmin, cpu), flush=True)
         t_prev = t_target
     write(a.csv, rows)
     print("getfem_ironing_3d.py: %d steps, %.1f s CPU" % (len(rows), time.process_time() - t0))
