@@ -788,8 +788,11 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
     // surfaces tilt off the plane by deformation, pins the few free master dofs through
     // their small share of M_jl (λ_τk ~ force / share: updates of 1e12 and no convergence).
     // The friction along it acts on the supports, not on the bodies, and is not determined:
-    // τ_k·λ = 0 (the minimum-norm choice, as for a held tied component), and Coulomb's law
-    // holds for the other tangent. Held: τ_k within 0.1 rad of e_a (|τ_k·e_a|² ≥ 0.99), and
+    // e_a·λ = 0 in τ_k's row, the traction the full model's mirror symmetry gives on its
+    // mid-plane, and Coulomb's law holds for the other tangent. (τ_k·λ = 0 instead leaves
+    // λ_a = −tan θ λ·τ' where the one-sided normal tilts by θ; that λ_a acts on the free
+    // master nodes off the plane: twice the difference to the full model while sliding,
+    // docs/verification.md.) Held: τ_k within 0.1 rad of e_a (|τ_k·e_a|² ≥ 0.99), and
     // the free master dofs' share of Σ|M_jl| at most 0.25 of D. Both are 0 on a plane of
     // symmetry at rest, and both grow there with the deformation alone: the plane's nodal
     // normals average the faces of one side (they tilt as the bodies bulge), and faces that
@@ -801,13 +804,18 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
     // A master free along e_a, a real frictional contact, has a share near 1 (Σ_l M_jl = D).
     constexpr double held_tangent = 0.99, held_free_share = 0.25;
     bool held[2] = {false, false};
+    int held_axis[2] = {-1, -1};
     for (int k = 0; k < dim - 1; ++k)
       for (int a = 0; a < dim; ++a)
-        held[k] = held[k] ||
-                  (fr.t[k][a] * fr.t[k][a] >= held_tangent && component_held(a, held_free_share));
-    const auto emit_held = [&](int k) {  // τ_k·λ = 0
-      add_F_(c.lambda_gid(q, k + 1), lambda_t[k]);
-      emit(c.lambda_gid(q, k + 1), dlambda_t[k], 1.0);
+        if (!held[k] && fr.t[k][a] * fr.t[k][a] >= held_tangent &&
+            component_held(a, held_free_share)) {
+          held[k] = true;
+          held_axis[k] = a;
+        }
+    const auto emit_held = [&](int k) {  // e_a·λ = 0 in τ_k's row
+      const GO row = c.lambda_gid(q, k + 1);
+      add_F_(row, c.lambda[q][held_axis[k]]);
+      add_entry(row, c.lambda_gid(q, held_axis[k]), 1.0);
     };
     for (int k = 0; k < dim - 1; ++k) {
       if (held[k]) slip[k] = 0.0;

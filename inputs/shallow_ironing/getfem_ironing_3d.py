@@ -61,7 +61,7 @@ shallow_ironing/getfem_3d, 9 s), on the CI mesh extruded in one layer (1 064 nod
       --t-end 1.2 --compare np1/slab_ci_frictionless.csv np2/slab_ci_frictionless.csv
 With --mu 0.3 on that one-layer mesh GetFEM stops at t = 0.69 while pressing (the
 z-friction of the slave nodes on z = 0, held in z on both sides, acts on the supports only;
-Grout writes tau.lambda = 0 for that tangent, docs/input.md "Friction on a plane of
+Grout writes e_z.lambda = 0 in that tangent's row, docs/input.md "Friction on a plane of
 symmetry"). Its full model, mirrored about z = 0 with nothing held there, runs through: the
 frictional CI check (ctest shallow_ironing/getfem_3d_frictional, 18 s CPU) is
   getfem_ironing_3d.py --layout slab_full --mesh slab_ci_full.exo --mu 0.3 \
