@@ -15,7 +15,11 @@ count:
 - MU > 0: at every step of the plateau in which every active slave node slips (at least half
   of the plateau's steps; the nodes from CASE_contact.csv, or from CASE.e in 3D), Coulomb's
   law at each slave node, |lambda_t| = sqrt(|lambda|^2 - lambda_n^2) = MU lambda_n (to 1e-6
-  lambda_n; lambda with its z component in 3D), and the mean F_x / F_y over those steps
+  lambda_n; lambda with its z component in 3D; to 1e-4 at the 3D slave nodes on z = 0, the
+  plane held in z on both bodies, where Grout writes lambda_z = 0 for the tangent along z and
+  Coulomb's law for the other: the plane's nodal normal tilts off it by some 1e-3 rad, and
+  |lambda_t| then exceeds MU lambda_n by the square of that tilt, docs/input.md "Friction on a
+  plane of symmetry"), and the mean F_x / F_y over those steps
   within RATIO_TOL (default 0.1) of MU. F_x / F_y is not MU exactly: the block presses on
   the front of the die's arc (ploughing, +7 % measured in plane strain, +4 % on the 3D
   slab; the 3D reference has +1 %), see docs/verification.md;
@@ -57,25 +61,28 @@ fy_ref_plateau = fy_ref[in_ref].mean()
 
 
 def slave_nodes(np_, steps):
-    """(step, contact_status, contact_pressure, |lambda|^2) of every slave node at every step:
-    from np<r>/CASE_contact.csv (2D), else from the Exodus file np<r>/CASE.e (3D writes no
-    contact CSV; its Exodus time k is the summary's k-th step)."""
+    """(step, contact_status, contact_pressure, |lambda|^2, on the plane z = 0) of every slave
+    node at every step: from np<r>/CASE_contact.csv (2D), else from the Exodus file np<r>/CASE.e
+    (3D writes no contact CSV; its Exodus time k is the summary's k-th step)."""
     path = "np%d/%s_contact.csv" % (np_, a.case)
     if os.path.exists(path):
         for r in csv.DictReader(open(path)):
             yield (int(r["step"]), float(r["contact_status"]), float(r["contact_pressure"]),
-                   sum(float(r[c]) ** 2 for c in ("lm_x", "lm_y", "lm_z") if c in r))
+                   sum(float(r[c]) ** 2 for c in ("lm_x", "lm_y", "lm_z") if c in r), False)
         return
     sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
     from grout_results import Results
     results = Results("np%d/%s.e" % (np_, a.case))
     components = [c for c in ("lm_x", "lm_y", "lm_z") if c in results.nodal_names]
+    xyz = results.coordinates()
+    on_plane = np.abs(xyz[2]) < 1e-12 if len(xyz) == 3 else np.zeros(len(xyz[0]), bool)
     for index, k in enumerate(steps):
         st = results.nodal("contact_status", index)
         lam_n = results.nodal("contact_pressure", index)
         lam2 = sum(results.nodal(c, index) ** 2 for c in components)
         for node in np.nonzero(st != 0.0)[0]:
-            yield int(k), float(st[node]), float(lam_n[node]), float(lam2[node])
+            yield (int(k), float(st[node]), float(lam_n[node]), float(lam2[node]),
+                   bool(on_plane[node]))
 
 
 failures = []
@@ -107,28 +114,31 @@ for np_ in a.ranks:
             failures.append("np%d: frictionless |F_x|/F_y %.2e > %g"
                             % (np_, np.abs(ratio[plateau]).max(), a.fx_tolerance))
     else:
-        status, coulomb = {}, {}
-        for k, st, lam_n, lam2 in slave_nodes(np_, steps):
+        status, coulomb, coulomb_plane = {}, {}, {}
+        for k, st, lam_n, lam2, plane_node in slave_nodes(np_, steps):
             if st == 0.0:
                 continue
             status.setdefault(k, []).append(st)
             lam_t = np.sqrt(max(lam2 - lam_n ** 2, 0.0))
             if st == 2.0:
-                coulomb[k] = max(coulomb.get(k, 0.0), abs(lam_t - a.mu * lam_n) / lam_n)
+                worst_of = coulomb_plane if plane_node else coulomb
+                worst_of[k] = max(worst_of.get(k, 0.0), abs(lam_t - a.mu * lam_n) / lam_n)
         full_slip = np.array([s in status and min(status[s]) == 2.0 for s in steps])
         sel = plateau & full_slip
-        worst = max(coulomb[s] for s in steps[sel]) if sel.any() else np.inf
+        worst = max(coulomb.get(s, 0.0) for s in steps[sel]) if sel.any() else np.inf
+        worst_plane = max(coulomb_plane.get(s, 0.0) for s in steps[sel]) if sel.any() else 0.0
         mean = (ratio[sel] / a.mu).mean() if sel.any() else np.nan
         print("np%d: %d of %d plateau steps in full slip; largest | |lambda_t| - mu lambda_n |"
-              " / lambda_n at a node %.1e; F_x/F_y / mu from %.4f to %.4f, mean %.4f"
+              " / lambda_n at a node %.1e%s; F_x/F_y / mu from %.4f to %.4f, mean %.4f"
               % (np_, sel.sum(), plateau.sum(), worst,
+                 " (%.1e on the plane z = 0)" % worst_plane if coulomb_plane else "",
                  (ratio[sel] / a.mu).min() if sel.any() else 0,
                  (ratio[sel] / a.mu).max() if sel.any() else 0, mean))
         if sel.sum() < max(3, plateau.sum() // 2):
             failures.append("np%d: only %d plateau steps in full slip" % (np_, sel.sum()))
-        elif not worst <= 1e-6:
-            failures.append("np%d: slipping nodes violate |lambda_t| = mu lambda_n (%.1e)"
-                            % (np_, worst))
+        elif not (worst <= 1e-6 and worst_plane <= 1e-4):
+            failures.append("np%d: slipping nodes violate |lambda_t| = mu lambda_n (%.1e, on "
+                            "the plane z = 0 %.1e)" % (np_, worst, worst_plane))
         elif not abs(mean - 1) <= a.ratio_tolerance:
             failures.append("np%d: mean F_x/F_y = %.4f mu, not within %g of mu"
                             % (np_, mean, a.ratio_tolerance))
