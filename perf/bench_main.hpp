@@ -99,6 +99,7 @@ inline int strip_arguments(int argc, char** argv, int rank) {
 inline int run(int argc, char** argv, void (*register_benchmarks)()) {
   prefer_local_mpi_startup();
   Tpetra::ScopeGuard tpetra(&argc, &argv);
+  no_delay_on_local_launcher_sockets();
   const int rank = world_rank();
   argc = strip_arguments(argc, argv, rank);
   benchmark::Initialize(&argc, argv);

@@ -2,8 +2,14 @@
 // gets the shared-memory transports, and that a value the user set is never replaced. Each test
 // sets the launcher's variables itself and restores the whole environment it touched afterwards
 // (MPI is already initialised here, so the variables only feed the function under test).
+// Also TCP_NODELAY on loopback connections under a local mpirun (no_delay_on_local_launcher_
+// sockets), on a connection this test opens itself.
 
 #include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <map>
@@ -127,6 +133,59 @@ TEST_F(MpiStartup, TheUsersValuesWin) {
   EXPECT_EQ(get("OMPI_MCA_btl"), "self,tcp");
   EXPECT_EQ(get("OMPI_MCA_coll"), "tuned,self");
   EXPECT_EQ(get("HWLOC_COMPONENTS"), "linux");
+}
+
+// A connected pair of loopback TCP sockets (listener closed), or {-1, -1}.
+struct LoopbackPair {
+  int client = -1, server = -1;
+  LoopbackPair() {
+    const int listener = socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t length = sizeof address;
+    if (listener < 0 || bind(listener, reinterpret_cast<sockaddr*>(&address), length) != 0 ||
+        listen(listener, 1) != 0 ||
+        getsockname(listener, reinterpret_cast<sockaddr*>(&address), &length) != 0) {
+      if (listener >= 0) close(listener);
+      return;
+    }
+    client = socket(AF_INET, SOCK_STREAM, 0);
+    if (connect(client, reinterpret_cast<sockaddr*>(&address), length) == 0)
+      server = accept(listener, nullptr, nullptr);
+    close(listener);
+  }
+  ~LoopbackPair() {
+    if (client >= 0) close(client);
+    if (server >= 0) close(server);
+  }
+  static int no_delay(int fd) {
+    int value = -1;
+    socklen_t length = sizeof value;
+    getsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &value, &length);
+    return value;
+  }
+};
+
+TEST_F(MpiStartup, LocalMpirunGetsNoDelayOnLoopbackConnections) {
+  LoopbackPair pair;
+  ASSERT_GE(pair.server, 0) << "no loopback TCP connection on this machine";
+  setenv("OMPI_COMM_WORLD_SIZE", "2", 1);
+  setenv("OMPI_COMM_WORLD_LOCAL_SIZE", "2", 1);
+  EXPECT_EQ(LoopbackPair::no_delay(pair.client), 0);   // the kernel's default: Nagle on
+  EXPECT_GE(no_delay_on_local_launcher_sockets(), 2);  // both ends are this process's
+  EXPECT_EQ(LoopbackPair::no_delay(pair.client), 1);
+  EXPECT_EQ(LoopbackPair::no_delay(pair.server), 1);
+}
+
+TEST_F(MpiStartup, NoDelayOnlyUnderALocalMpirun) {
+  LoopbackPair pair;
+  ASSERT_GE(pair.server, 0) << "no loopback TCP connection on this machine";
+  EXPECT_EQ(no_delay_on_local_launcher_sockets(), 0);  // a singleton
+  setenv("OMPI_COMM_WORLD_SIZE", "4", 1);              // ranks on other machines
+  setenv("OMPI_COMM_WORLD_LOCAL_SIZE", "2", 1);
+  EXPECT_EQ(no_delay_on_local_launcher_sockets(), 0);
+  EXPECT_EQ(LoopbackPair::no_delay(pair.client), 0);
 }
 
 }  // namespace
