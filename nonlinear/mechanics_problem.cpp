@@ -803,15 +803,12 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
     // rows and no step size converged (docs/verification.md, "Friction on the slab's plane").
     // A master free along e_a, a real frictional contact, has a share near 1 (Σ_l M_jl = D).
     constexpr double held_tangent = 0.99, held_free_share = 0.25;
-    bool held[2] = {false, false};
-    int held_axis[2] = {-1, -1};
+    int held_axis[2] = {-1, -1};  // the Cartesian axis a of a held tangent τ_k, or −1
     for (int k = 0; k < dim - 1; ++k)
-      for (int a = 0; a < dim; ++a)
-        if (!held[k] && fr.t[k][a] * fr.t[k][a] >= held_tangent &&
-            component_held(a, held_free_share)) {
-          held[k] = true;
+      for (int a = 0; a < dim && held_axis[k] < 0; ++a)
+        if (fr.t[k][a] * fr.t[k][a] >= held_tangent && component_held(a, held_free_share))
           held_axis[k] = a;
-        }
+    const bool held[2] = {held_axis[0] >= 0, held_axis[1] >= 0};
     const auto emit_held = [&](int k) {  // e_a·λ = 0 in τ_k's row
       const GO row = c.lambda_gid(q, k + 1);
       add_F_(row, c.lambda[q][held_axis[k]]);
