@@ -24,14 +24,15 @@
 //   only
 // The same components do the same work, so nothing else changes (the selections above are
 // Open MPI 4.1's, Debian 12's; with them a singleton's start-up and MPI_Init/MPI_Finalize cost
-// ~15 ms less CPU: docs/performance.md, "2D level 1 whole process (start9)").
+// ~15 ms less CPU: docs/performance.md, "Process start-up").
 // Under Open MPI's mpirun with every rank on this machine (OMPI_COMM_WORLD_LOCAL_SIZE equal
 // to OMPI_COMM_WORLD_SIZE, both set by mpirun for each rank) the first two are set as well:
 // the ranks need no network transport, and a plain `mpirun -np 2` then starts in 0.22 s
 // instead of 0.44 s (bare MPI_Init + MPI_Finalize, 2 ranks, this 2-core machine under load;
-// docs/performance.md, "Open MPI start-up under mpirun"). Under any other launcher (srun, a
-// PMI/PMIx environment) and for ranks on several machines nothing is set: a run over several
-// machines needs its network transports. tools/local_mpi_env does the same for local mpirun.
+// docs/performance.md, "Running in parallel: Open MPI settings"). Under any other launcher
+// (srun, a PMI/PMIx environment) and for ranks on several machines nothing is set: a run
+// over several machines needs its network transports. tools/local_mpi_env does the same for
+// local mpirun.
 
 #include <arpa/inet.h>
 #include <dirent.h>

@@ -2,7 +2,7 @@
 // A direct solve done on rank 0 with the system gathered there (LinearSolver's 2D default,
 // `MUMPS: {gather: true}`, and `type: amesos2`): the same matrix, entry for entry and in the
 // same order, on any number of ranks, so the same answer bit for bit (docs/performance.md,
-// "2D speed and the demo on 2 ranks (demo9)").
+// "2D speed and the demo on 2 ranks").
 
 #include <mpi.h>
 #include <Teuchos_DefaultMpiComm.hpp>

@@ -7,8 +7,8 @@
 // Why: Debian builds Trilinos with BIND_NOW, so the dynamic loader resolves every symbol of
 // every loaded library before main. MueLu, Belos, Xpetra and what they pull in (Teko, Thyra,
 // Stratimikos, Ifpack2, ML, ...) were 58 % of the 312 k start-up relocations of `grout`, more
-// than a small 2D run's own work (docs/performance.md, "Start-up: the iterative path loaded on
-// demand (lazy9)"). A process that solves directly never loads them.
+// than a small 2D run's own work (docs/performance.md, "Process
+// start-up"). A process that solves directly never loads them.
 //
 // Only standard, Teuchos and Tpetra types cross the boundary: the module and the process share
 // one libstdc++, one Kokkos and one Tpetra (the same Debian shared libraries).

@@ -4,8 +4,8 @@
 // its headers, as Amesos2's KLU2 calls it on one rank: the CRS arrays passed as the CCS of
 // Kᵀ, analysed (BTF + AMD), factorised, and Kᵀᵀ x = b solved with klu_tsolve2. The answer is
 // Amesos2's bit for bit; the driver then needs neither Amesos2 nor what it pulls in (Tacho,
-// a second MUMPS): 3.3 k fewer start-up symbol relocations (docs/performance.md, "2D level 1
-// whole process (start9)").
+// a second MUMPS): 3.3 k fewer start-up symbol relocations (docs/performance.md, "Process
+// start-up").
 
 #include "assembly/tpetra_types.hpp"
 

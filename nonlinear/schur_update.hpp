@@ -1,8 +1,8 @@
 #pragma once
 // Solving a sequence of symmetric matrices that differ only in a few rows, with one sparse
 // factorisation: the dense Schur complement on those rows is updated instead
-// (MumpsSolver, MumpsOptions::schur_updates; docs/performance.md, "3D 11k on 1 rank ...
-// (pattern9)").
+// (MumpsSolver, MumpsOptions::schur_updates; docs/performance.md, "Condensed,
+// symmetric and Schur-updated direct solves").
 //
 // Split the unknowns into B (the rows that change) and I (all others). With A = [A_II A_IB;
 // A_BI A_BB], block elimination of I gives

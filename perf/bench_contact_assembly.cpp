@@ -25,7 +25,7 @@
 //                         measured directly (what `grout --timers` reports).
 // MPI: the solid and the contact are distributed (each rank evaluates the slave faces around
 // the slave nodes it owns; MechanicsProblem). Results and commands: docs/performance.md,
-// "Contact assembly" and "Distributed contact".
+// "Contact assembly".
 
 #include <Teuchos_TimeMonitor.hpp>
 #include <chrono>

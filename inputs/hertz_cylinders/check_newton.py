@@ -70,7 +70,7 @@ if abs(p_max / P_MAX - 1) > 0.05:
 # mode, and its amplitude in a converged solution is the round-off of the last linear solve
 # amplified (|F| ~ 1e-12 after it in both runs; between hertz_2 and hertz_cn_2 KLU2 left
 # 1.5e-10 rad, gathered MUMPS 6.3e-10 rad, every other node agreeing to 1e-12:
-# docs/performance.md, "2D speed and the demo on 2 ranks (demo9)"). The displacement is
+# docs/performance.md, "2D speed and the demo on 2 ranks"). The displacement is
 # compared without that rotation (least-squares fit over the upper body's nodes) to 1e-8
 # relative, and R θ to 1e-6 of the largest displacement.
 def upper_body_nodes(res):
