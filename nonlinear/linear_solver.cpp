@@ -63,8 +63,8 @@ struct LinearSolver::Impl {
   // Whether a solve of `type` condenses the multipliers: as told, else on the iterative path
   // (the point of the condensation) and on the distributed MUMPS path: on the 3D Hertz
   // spheres (10 987 nodes) the condensed system's factorisation takes 30.7 GFlop against 47.1
-  // for the (u, λ) system, 0.68x of its time (docs/performance.md, "The condensed system on
-  // the direct path"). The gathered direct solves (2D) keep the (u, λ) system.
+  // for the (u, λ) system, 0.68x of its time (docs/performance.md, "Condensed, symmetric
+  // and Schur-updated direct solves"). The gathered direct solves (2D) keep the (u, λ) system.
   bool condenses(const std::string& type) const {
     if (condense_given) return condense;
     return type == "belos" || (type == "mumps" && !mumps_options.gather);
@@ -76,7 +76,7 @@ struct LinearSolver::Impl {
 // same answer bit for bit on any number of ranks, which the 2D point-contact and Hertz cases
 // need (their nearly free modes amplify the rounding of a distributed factorisation), and
 // 0.46x the instructions of the gathered KLU2 it replaced (docs/performance.md, "2D speed and
-// the demo on 2 ranks (demo9)").
+// the demo on 2 ranks").
 std::string default_direct_type(int dim) {
   return dim == 3 ? "mumps" : "mumps_gathered";
 }
@@ -92,8 +92,8 @@ long long auto_iterative_threshold(int dim) {
 // of ranks). On such systems MUMPS's fixed costs (its analysis, scaling and redistribution)
 // outweigh its supernodes: 2D Hertz level 1 (~1.3 k unknowns, 2 solves) took 5 ms less CPU
 // with KLU2, level 2 (~4.9 k) the same, level 3 (~19.5 k) 1.4x more; stacked blocks: KLU2
-// ahead at ~1.3 k unknowns, even at ~2.7 k (docs/performance.md, "2D level 1 whole process
-// (start9)").
+// ahead at ~1.3 k unknowns, even at ~2.7 k (docs/performance.md, "2D speed and the
+// demo on 2 ranks").
 long long auto_small_direct_threshold(int dim) {
   return dim == 2 ? 2000 : 0;
 }
@@ -118,7 +118,7 @@ LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::stri
   impl_->mumps_given = params.isSublist("MUMPS");
   // The gathered solve orders with AMD unless told otherwise: on 2D Hertz (19 k and 75 k
   // unknowns) SCOTCH's nested dissection cost more in its analyses than it saved in the
-  // factorisations (docs/performance.md, "2D speed and the demo on 2 ranks (demo9)").
+  // factorisations (docs/performance.md, "2D speed and the demo on 2 ranks").
   impl_->gathered_options = impl_->mumps_options;
   impl_->gathered_options.gather = true;
   if (!mumps.isParameter("ordering")) impl_->gathered_options.ordering = "amd";
@@ -220,9 +220,9 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   // The distributed MUMPS path first tries the symmetric (null-space) reduction: for
   // frictionless or tied contact with a fixed pairing and a symmetric stiffness it gives a
   // symmetric positive (semi)definite K̃, factorised as LDLᵀ with about half the flops of the
-  // LU of the condensed system (docs/performance.md, "Symmetric reduction on the direct path
-  // (sym9)"). Anything else (slip, geometry: current) fails its checks and takes the
-  // condensation below.
+  // LU of the condensed system (docs/performance.md, "Condensed, symmetric and
+  // Schur-updated direct solves"). Anything else (slip, geometry: current) fails its checks
+  // and takes the condensation below.
   if (type == "mumps" && !impl_->mumps_options.gather) {
     SymmetricCondensation reduction(impl_->pairing, impl_->dofs_per_node);
     bool applies = false;

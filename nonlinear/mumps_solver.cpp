@@ -102,7 +102,7 @@ MUMPS_INT infog(const DMUMPS_STRUC_C& m, int i) {
 // pseudo-random generator over the whole process, so the ordering, and with it the
 // factorisation's rounding, changed from run to run and from one analysis to the next of the
 // same matrix (2D Hertz level 3: 9e-8 relative in displ_x between two identical 1-rank runs,
-// docs/performance.md "2D speed and the demo on 2 ranks (demo9)"). One SCOTCH thread (unless
+// docs/performance.md, "MUMPS as the default direct solver in 3D"). One SCOTCH thread (unless
 // the user set SCOTCH_PTHREAD_NUMBER) and the generator reset to a fixed seed before every
 // analysis make the ordering a function of the matrix alone. SCOTCH_randomSeed is looked up
 // at run time in the SCOTCH that MUMPS loaded (absent: nothing to seed).
@@ -482,7 +482,8 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   // of ranks: on 2, MUMPS's centralised Schur complement (ICNTL(19) = 1) and the dense update
   // run on rank 0 alone and the set is reused for 2 of 7 iterations on the 11.0 k-node spheres
   // (5 analyses), yet the run takes 0.86x the wall time of refactorising every time on a quiet
-  // machine (docs/performance.md, "Schur updates on 2 ranks").
+  // machine (docs/performance.md, "Condensed, symmetric and
+  // Schur-updated direct solves").
   const bool updates = s.options.symmetric && s.options.schur_updates;
   const bool have_base =
       updates && s.analysed && s.factorised && s.n == n && !s.base_values.empty();
