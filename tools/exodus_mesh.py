@@ -168,6 +168,18 @@ def write_exodus(mesh, path, title="grout mesh"):
     import netCDF4
 
     name_node_sets_apart(mesh)
+    # netCDF classic takes a dimension of length 0 for the unlimited one ("NC_UNLIMITED size
+    # already in use"), and grout refuses empty sets anyway: name the entity instead.
+    for kind, entities in (("element block", {b[0]: b[2] for b in mesh.blocks}),
+                           ("node set", mesh.node_sets), ("side set", mesh.side_sets)):
+        for name, items in entities.items():
+            if len(items) == 0:
+                raise MeshError("%s: %s '%s' would be empty (no %s)" % (
+                    path, kind, name, "elements" if kind == "element block" else kind[:4] + "s"))
+    try:
+        netCDF4.Dataset(path, "w", format="NETCDF3_64BIT_OFFSET").close()
+    except (OSError, RuntimeError) as e:
+        raise MeshError("%s: cannot write (%s)" % (path, e))
 
     def names_var(ds, var, dim, names):
         v = ds.createVariable(var, "S1", (dim, "len_name"))

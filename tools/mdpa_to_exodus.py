@@ -2,6 +2,7 @@
 """Converts a Kratos .mdpa mesh to Exodus II for grout.
 
 Usage: tools/mdpa_to_exodus.py [--layer Z] INPUT.mdpa OUTPUT.exo
+       tools/mdpa_to_exodus.py --help        (this text, exit code 0)
 
 Read: Nodes ("id x y z"), Elements ("id property n1 .. nk"; types *2D3N -> TRI3, *2D4N ->
 QUAD4, *3D4N -> TETRA4, *3D8N -> HEX8), Conditions ("id property n1 .. nk", line or face
@@ -16,10 +17,12 @@ Elements and Conditions lists; ModelPartData, Properties and tables are skipped.
     if longer than 32 characters): the block's boundary sides whose nodes all lie in the part.
 Each side set also gets a node set of its nodes, unless a part already has that name; a node
 set named like a side set is written as <name>_nodes (ParaView's IOSS reader mixes up sets of
-the same name). Nodes no element uses are dropped (the rest renumbered); elements of negative measure are
-re-ordered. Malformed input stops with "file:line: message" and exit code 2. A side set name
+the same name). Nodes no element uses are dropped (the rest renumbered); elements of negative
+measure are re-ordered. Malformed input stops with "file:line: message" and exit code 2, among
+others a byte that is not UTF-8 outside a // comment (comments may hold any bytes) and a
+SubModelPartNodes, -Elements or -Conditions block outside a SubModelPart. A side set name
 "<part>_<block>" longer than 32 characters drops every leading "parts_" of the block name
-(Kratos' "Parts_Parts_Auto1" gives "<part>_auto1") before it is skipped.
+(Kratos' "Parts_Parts_Auto1" gives "<part>_auto1") before it is skipped. See docs/meshes.md.
 
 --layer Z: a 2D (plane-strain) mesh from the z = Z layer of a 3D hexahedral mesh whose elements
 are stacked in z (Kratos' extruded 2D benchmarks, e.g. the double arch). Every HEX8 element with
@@ -57,12 +60,24 @@ def parse(path):
     nodes, elements, conditions, parts = {}, {}, {}, []
     stack = []  # open blocks: (kind, extra)
     try:
-        lines = open(path).read().splitlines()
+        with open(path, "rb") as f:
+            raw_lines = f.read().splitlines()
     except OSError as e:
         raise MeshError("%s: cannot read (%s)" % (path, e.strerror))
 
     def fail(n, msg):
         raise MeshError("%s:%d: %s" % (path, n, msg))
+
+    # Comments are dropped as bytes, so any encoding may appear in them (GiD writes Latin-1);
+    # what is left must be UTF-8 text (ids, numbers and names).
+    lines = []
+    for n, raw in enumerate(raw_lines, start=1):
+        code = raw.split(b"//")[0]
+        try:
+            lines.append(code.decode("utf-8"))
+        except UnicodeDecodeError as e:
+            fail(n, "byte 0x%02x at column %d is not UTF-8 text (outside a // comment)"
+                 % (code[e.start], e.start + 1))
 
     def ints(fields, n):
         try:
@@ -71,7 +86,7 @@ def parse(path):
             fail(n, "expected integers, got '%s'" % " ".join(fields))
 
     for n, raw in enumerate(lines, start=1):
-        text = raw.split("//")[0].strip()
+        text = raw.strip()
         if not text:
             continue
         words = text.split()
@@ -86,6 +101,12 @@ def parse(path):
                 part = Part(words[2] if parent is None else parent.name + "_" + words[2], n)
                 parts.append(part)
                 stack.append((kind, part))
+            elif kind in ("SubModelPartNodes", "SubModelPartElements", "SubModelPartConditions"):
+                if not stack or stack[-1][0] != "SubModelPart":
+                    listed = kind[len("SubModelPart"):].lower()
+                    fail(n, "'Begin %s' outside a SubModelPart (it lists the %s of the "
+                         "SubModelPart it is written in)" % (kind, listed))
+                stack.append((kind, stack[-1][1]))
             elif kind == "Elements":
                 if len(words) < 3:
                     fail(n, "Elements block without an element name")
@@ -132,7 +153,7 @@ def parse(path):
                 fail(n, "a condition line is 'id property n1 n2 ...', got '%s'" % text)
             conditions[v[0]] = (v[2:], n)
         elif kind in ("SubModelPartNodes", "SubModelPartElements", "SubModelPartConditions"):
-            part = next(x for k, x in reversed(stack) if k == "SubModelPart")
+            part = extra  # the SubModelPart the block is written in (checked at its Begin)
             target = {"SubModelPartNodes": part.nodes, "SubModelPartElements": part.elements,
                       "SubModelPartConditions": part.conditions}[kind]
             target += [(i, n) for i in ints(words, n)]
@@ -283,6 +304,9 @@ def convert(path, layer=None):
 
 
 def main(argv):
+    if len(argv) == 2 and argv[1] in ("-h", "--help"):
+        print(__doc__.strip())
+        return 0
     layer = None
     if len(argv) >= 2 and argv[1] == "--layer":
         try:
