@@ -1,6 +1,6 @@
 #pragma once
 // The weighted slip increment of one slave node over a load step, per unit D_jj, and its exact
-// derivative with respect to the displacement dofs (Coulomb friction, DESIGN.md §2).
+// derivative with respect to the displacement dofs (Coulomb friction, docs/design.md §2).
 //
 // Two measures (Gitterle, Popp, Gee, Wall, IJNME 84 (2010) 543, §3.3):
 //   standard (small sliding, reference geometry):

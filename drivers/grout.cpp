@@ -1,4 +1,4 @@
-// grout: solve the problem an input YAML describes (DESIGN.md §5) and write its results.
+// grout: solve the problem an input YAML describes (docs/design.md §5) and write its results.
 //
 //   grout input.yaml [--output-dir DIR]      on one rank
 //   mpirun -np 2 grout input.yaml

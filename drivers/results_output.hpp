@@ -1,5 +1,5 @@
 #pragma once
-// Results of every converged step: gathered to rank 0, written to Exodus (DESIGN.md §5
+// Results of every converged step: gathered to rank 0, written to Exodus (docs/design.md §5
 // field names) and to the CSV summary, both flushed at once. The files are written under
 // temporary names and moved into place at the first converged step (output_files.hpp).
 

@@ -1,5 +1,5 @@
 #pragma once
-// Two-body meshes for the contact and mesh-tying verification cases (BENCHMARKS.md rows 1, 2,
+// Two-body meshes for the contact and mesh-tying verification cases (docs/verification.md #1, #2,
 // 4, 5, 6, 8, 10, 21). Every body is its own element block; bodies share no nodes. Side sets
 // use Exodus side numbers of outward sides, and every side set has a node set of the same
 // name (the nodes of its sides). 2D elements are counter-clockwise.
@@ -76,7 +76,7 @@ struct TaylorPatch {
 Mesh taylor_patch_2d(const TaylorPatch& spec);
 Mesh taylor_patch_3d(const TaylorPatch& spec);
 
-/// Hertz cylinder-cylinder (BENCHMARKS row 8): block "upper" = lower half of the disc of
+/// Hertz cylinder-cylinder (docs/verification.md #8): block "upper" = lower half of the disc of
 /// radius R centred at (0, R + gap), block "lower" = upper half of the disc centred at
 /// (0, -R); they touch at the origin. The lower body uses a slightly different tangential
 /// grading (beta = 3.0 instead of 3.5), so the interface meshes do not match.
@@ -85,7 +85,7 @@ Mesh taylor_patch_3d(const TaylorPatch& spec);
 Mesh hertz_cylinders_mesh(int level, double radius = 8.0, double gap = 0.0,
                           double contact_width = 2.5);
 
-/// Hertz cylinder on a plane (BENCHMARKS row 10): block "cylinder" = lower half of the disc
+/// Hertz cylinder on a plane (docs/verification.md #10): block "cylinder" = lower half of the disc
 /// of radius R centred at (0, R) (touching the plane at the origin), block "plane" =
 /// [-2R, 2R] x [-2R, 0] (8 x 4 QUAD4 times 2^(level-1) per direction).
 /// Sets: "cylinder_contact" (arc sides with |x| <= contact_width), "cylinder_top" (the flat face y

@@ -1,5 +1,5 @@
 #pragma once
-// Exodus II input and output (C API of Exodus 6.02, see TOOLCHAIN.md).
+// Exodus II input and output (C API of Exodus 6.02, see docs/design.md, "Toolchain notes").
 //
 // read_exodus      mesh file -> plain-data Mesh (coordinates, blocks, side sets, node sets)
 // ExodusWriter     mesh once, then one flushed time step per write_step() call

@@ -1,5 +1,5 @@
 #pragma once
-// Two-body meshes for the frictional verification cases (BENCHMARKS.md row 7; rows 3 and 9
+// Two-body meshes for the frictional verification cases (docs/verification.md #7; #3 and #9
 // use stacked_2d/3d of contact_meshes.hpp).
 
 #include "io/mesh.hpp"
@@ -25,7 +25,7 @@ struct DongBlocks {
 };
 Mesh dong_blocks_2d(const DongBlocks& spec);
 
-/// Frictional Hertz (Cattaneo-Mindlin, BENCHMARKS row 9): hertz_cylinders_mesh (see
+/// Frictional Hertz (Cattaneo-Mindlin, docs/verification.md #9): hertz_cylinders_mesh (see
 /// contact_meshes.hpp) plus single-node node sets at the centres and the right ends of the
 /// flat faces: "upper_top_centre" (the node nearest (0, R + gap)), "upper_top_end"
 /// (R, R + gap), "lower_bottom_centre" (0, -R), "lower_bottom_end" (R, -R). Both flat faces

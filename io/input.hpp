@@ -1,5 +1,5 @@
 #pragma once
-// The validated input (DESIGN.md §5): the YAML file is read once into these plain structs;
+// The validated input (docs/design.md §5): the YAML file is read once into these plain structs;
 // nothing downstream looks a value up by string.
 
 #include <Teuchos_ParameterList.hpp>

@@ -1,6 +1,6 @@
 #pragma once
 // Coarse contact search: candidate (slave, master) face pairs whose enlarged bounding boxes
-// overlap (DESIGN.md §3 "Coarse search"), in 2D and 3D.
+// overlap (docs/design.md §3, "Coarse search"), in 2D and 3D.
 //
 //   box(e) = [min_k x_k − δ_e, max_k x_k + δ_e],  δ_e = factor · max_d (max_k x_kd − min_k x_kd)
 //

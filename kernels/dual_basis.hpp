@@ -1,6 +1,6 @@
 #pragma once
 // Dual (biorthogonal) Lagrange-multiplier basis on a slave element (Wohlmuth, SINUM 38 (2000);
-// Popp et al. 2010, eqs. 24-26; DESIGN.md §2):
+// Popp et al. 2010, eqs. 24-26; docs/design.md §2):
 //
 //   Φ_j = Σ_k a_jk N_k,   A_e = D_e M_e⁻¹,   D_e = diag(∫_e N_j dA),   M_e = [∫_e N_j N_k dA],
 //
@@ -24,7 +24,7 @@ GROUT_INLINE_FUNCTION void line2_shape(const Scalar& xi, Scalar N[2]) {
 }
 
 /// \brief LINE2 dual shape functions, closed form Φ₁ = 2N₁ − N₂ = (1 − 3ξ)/2,
-/// Φ₂ = 2N₂ − N₁ = (1 + 3ξ)/2 (Wohlmuth 2000; DESIGN.md §2).
+/// Φ₂ = 2N₂ − N₁ = (1 + 3ξ)/2 (Wohlmuth 2000; docs/design.md §2).
 template <class Scalar>
 GROUT_INLINE_FUNCTION void line2_dual_shape(const Scalar& xi, Scalar Phi[2]) {
   Phi[0] = 0.5 * (1.0 - 3.0 * xi);

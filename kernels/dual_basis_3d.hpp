@@ -4,10 +4,10 @@
 //   Φ_j = Σ_k a_jk N_k,   A_e = D_e M_e⁻¹,   D_e = diag(∫_e N_j dA),   M_e = [∫_e N_j N_k dA]
 //
 // so that ∫_e Φ_j N_k dA = δ_jk ∫_e N_j dA (Wohlmuth 2000; Popp et al. 2010;
-// DESIGN.md §2). Σ_j Φ_j = 1 follows (1ᵀD_e = 1ᵀM_e). On TRI3 the area element is constant
+// docs/design.md §2). Σ_j Φ_j = 1 follows (1ᵀD_e = 1ᵀM_e). On TRI3 the area element is constant
 // and A_e = 4I − 11ᵀ for every (distorted) triangle: Φ_i = 3N_i − N_j − N_k = 4N_i − 1
 // (Popp et al. 2010: Φ_1 = 3 − 4ξ − 4η, Φ_2 = 4ξ − 1, Φ_3 = 4η − 1). Note: "3N_i − 1"
-// (DESIGN.md §2) is not biorthogonal: ∫(3N_1 − 1)N_2 dA = −A/12. On QUAD4, D_e and
+// is not biorthogonal: ∫(3N_1 − 1)N_2 dA = −A/12. On QUAD4, D_e and
 // M_e are integrated on the actual face (distorted, possibly warped) with a 4×4 Gauss rule:
 // exact for flat faces (N_j N_k j(ξ) is of degree ≤ 3 per direction), and for warped faces
 // (j = |g_1 × g_2| is then not polynomial) accurate to far below the mortar tolerances.

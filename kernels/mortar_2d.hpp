@@ -1,6 +1,6 @@
 #pragma once
 // Segment-based mortar integration of one (slave LINE2, master LINE2) pair in 2D
-// (DESIGN.md §3; Yang, Laursen, Meng, IJNME 62 (2005) §3; Popp et al., IJNME 79 (2009) §3.1).
+// (docs/design.md §3; Yang, Laursen, Meng, IJNME 62 (2005) §3; Popp et al., IJNME 79 (2009) §3.1).
 //
 // Slave:  x¹(ξ) = N₁(ξ) x¹₁ + N₂(ξ) x¹₂,  interpolated normal n¹(ξ) = N₁ n₁ + N₂ n₂, ξ ∈ [−1, 1].
 // Master: x²(η) = N₁(η) x²₁ + N₂(η) x²₂.

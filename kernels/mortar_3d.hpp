@@ -1,6 +1,6 @@
 #pragma once
 // Exact segment-based 3D mortar integration of one (slave face, master face) pair, TRI3/QUAD4
-// × TRI3/QUAD4 (Puso & Laursen 2004; Popp, Gitterle, Gee & Wall 2010, sec. 3.2; DESIGN.md §3):
+// × TRI3/QUAD4 (Puso & Laursen 2004; Popp, Gitterle, Gee & Wall 2010, sec. 3.2; docs/design.md §3):
 //
 //  1. auxiliary plane through the slave centre x₀ with the unit centre normal n₀, in-plane
 //     orthonormal basis (t₁, t₂);

@@ -1,6 +1,6 @@
 #pragma once
 // Pair kernels with the full slave matrix D, for any multiplier basis Φ_j = Σ_k A_jk N¹_k
-// (multiplier_basis.hpp; DESIGN.md §2; Popp et al. 2010, eqs. 9-10; Puso & Laursen 2004):
+// (multiplier_basis.hpp; docs/design.md §2; Popp et al. 2010, eqs. 9-10; Puso & Laursen 2004):
 //
 //   D_jk = ∫ Φ_j N¹_k dA,   M_jl = ∫ Φ_j (N²_l ∘ χ) dA     over the pair's overlap.
 //

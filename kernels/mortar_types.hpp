@@ -4,7 +4,7 @@
 // One (slave element, master element) pair contributes, on their overlap Γ_e ∩ χ⁻¹(Γ_m):
 //   D_jk = ∫ Φ_j N¹_k dA  (diagonal for the dual basis Φ: only D_jj is stored)
 //   M_jl = ∫ Φ_j (N²_l ∘ χ) dA
-// (DESIGN.md §2; Popp et al. 2010, eqs. 9-10). A later scatter sums the pair contributions
+// (docs/design.md §2; Popp et al. 2010, eqs. 9-10). A later scatter sums the pair contributions
 // per slave node j / master node l.
 
 #include "kernels/kernel_macros.hpp"

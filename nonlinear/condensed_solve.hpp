@@ -1,6 +1,6 @@
 #pragma once
 // Static condensation of the dual-mortar multipliers (Popp et al. 2009/2010, "condensed"
-// system), done generically on an assembled (u, λ) system J x = b (DESIGN.md §2 "Solve").
+// system), done generically on an assembled (u, λ) system J x = b (docs/design.md §2, "Solve").
 //
 // Every multiplier dof t is paired with one slave displacement dof s(t), whose force row
 // holds D_t λ_t (J[s, t] = D_t ≠ 0) and no other multiplier that is not known directly.

@@ -20,10 +20,10 @@
 //   `smoother: type` replaces it;
 // - coarse solve: KLU2 on one rank. On more ranks the coarse levels are repartitioned
 //   (Zoltan2 multi-jagged on the node coordinates) onto one rank with a subcommunicator,
-//   where KLU2 is exact (Debian's KLU2 is wrong on a multi-rank communicator, TOOLCHAIN.md;
-//   relaxation as the coarse solve lets GMRES stall on the condensed 3D systems). A system
-//   no larger than `coarse: max size` (Grout's default 500, MueLu's 2000) has no coarse
-//   level: its one level is smoothed.
+//   where KLU2 is exact (Debian's KLU2 is wrong on a multi-rank communicator, docs/design.md,
+//   "Toolchain notes"; relaxation as the coarse solve lets GMRES stall on the condensed 3D
+//   systems). A system no larger than `coarse: max size` (Grout's default 500, MueLu's 2000) has no
+//   coarse level: its one level is smoothed.
 // - bodies kept apart in the aggregation: when the nodes belong to more than one body (the
 //   connected components of the mesh, io/mesh_bodies.hpp), MueLu aggregates with the
 //   distance-Laplacian graph of coordinates in which body b is moved by b·S along x

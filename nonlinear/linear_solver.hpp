@@ -12,8 +12,8 @@
 //                            system is gathered to rank 0 and factorised there on one BLAS
 //                            thread: the same answer bit for bit on any number of ranks.
 //   type: amesos2            direct KLU2 solve. Debian's KLU2 is silently wrong on a
-//                            communicator of more than one rank (TOOLCHAIN.md), so the
-//                            system is gathered to rank 0 and solved on a 1-rank
+//                            communicator of more than one rank (docs/design.md, "Toolchain
+//                            notes"), so the system is gathered to rank 0 and solved on a 1-rank
 //                            communicator, then scattered back. KLU2 is called from its
 //                            headers as Amesos2 calls it there (nonlinear/klu_solve.hpp):
 //                            the same bits, without loading Amesos2.

@@ -1,5 +1,5 @@
 #pragma once
-// Quasi-static load/time stepping with automatic cut-back (DESIGN.md §4).
+// Quasi-static load/time stepping with automatic cut-back (docs/design.md §4).
 
 #include <functional>
 

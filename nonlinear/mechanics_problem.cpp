@@ -766,7 +766,7 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
       continue;
     }
 
-    // Coulomb friction (Hüeber, Stadler, Wohlmuth 2008; DESIGN.md §2), per unit D_jj:
+    // Coulomb friction (Hüeber, Stadler, Wohlmuth 2008; docs/design.md §2), per unit D_jj:
     // ū_k the weighted slip increment since the last converged step (weighted_slip.hpp:
     // objective on the current geometry, standard on the reference one), ξ = λ_τ + c_t ū,
     // s = λ_n − ĉ g.

@@ -1,6 +1,6 @@
 #pragma once
 // The quasi-static mechanics problem F(u, λ) = 0: the small-strain solid plus the contact
-// interfaces of the input, with slave multipliers λ as extra unknowns (DESIGN.md §2).
+// interfaces of the input, with slave multipliers λ as extra unknowns (docs/design.md §2).
 //
 // Unknowns: u (node * dim + c, the solid's dofs) then, per interface, λ_j ∈ R^dim for each
 // slave node j. Residual rows:

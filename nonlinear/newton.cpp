@@ -1,5 +1,5 @@
 // Newton through NOX: a "Line Search Based" solver on a NoxGroup, with the status tests of
-// DESIGN.md §2 (residual tolerance AND unchanged active set, OR a failure test) and one
+// docs/design.md §2 (residual tolerance AND unchanged active set, OR a failure test) and one
 // log line per iteration from a NOX::Observer.
 
 #include "nonlinear/newton.hpp"
@@ -111,7 +111,7 @@ NewtonOptions newton_options_from(const Teuchos::ParameterList& solver_sublist,
 namespace {
 
 /// Converged iff the problem's active set did not change at the current iterate
-/// (semi-smooth Newton, DESIGN.md §2: the residual test alone is not enough).
+/// (semi-smooth Newton, docs/design.md §2: the residual test alone is not enough).
 class ActiveSetUnchanged : public NOX::StatusTest::Generic {
  public:
   NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver,

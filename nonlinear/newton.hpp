@@ -1,5 +1,5 @@
 #pragma once
-// Semi-smooth Newton on a NonlinearProblem, driven by NOX (DESIGN.md §2): a line-search
+// Semi-smooth Newton on a NonlinearProblem, driven by NOX (docs/design.md §2): a line-search
 // Newton whose convergence needs the residual tolerance AND an unchanged active set.
 // NOX itself stays inside nonlinear/*.cpp; this header is NOX-free.
 

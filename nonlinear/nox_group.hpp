@@ -1,6 +1,6 @@
 #pragma once
-// NOX::Abstract::Group over a NonlinearProblem (TOOLCHAIN.md, NOX route B): F and J come
-// from the problem, the Newton step J Δx = −F from LinearSolver. The Jacobian (and its
+// NOX::Abstract::Group over a NonlinearProblem (docs/design.md, "Toolchain notes": NOX route B): F
+// and J come from the problem, the Newton step J Δx = −F from LinearSolver. The Jacobian (and its
 // graph) is whatever the problem hands back at each iterate, so contact pairs and the
 // active set may change it freely. Private to nonlinear/*.cpp.
 

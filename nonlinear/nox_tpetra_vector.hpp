@@ -1,6 +1,6 @@
 #pragma once
-// NOX::Abstract::Vector over a Tpetra::Vector (TOOLCHAIN.md, NOX route B). Private to
-// nonlinear/*.cpp: NOX headers must not leak into headers other libraries include.
+// NOX::Abstract::Vector over a Tpetra::Vector (docs/design.md, "Toolchain notes": NOX route B).
+// Private to nonlinear/*.cpp: NOX headers must not leak into headers other libraries include.
 
 #include <NOX_Abstract_Vector.H>
 #include <Teuchos_RCP.hpp>

@@ -1,7 +1,7 @@
 #pragma once
 // Symmetric (null-space) reduction of an assembled dual-mortar (u, λ) system J x = b, for
 // frictionless and tied contact with fixed pairing and small strain, where the Newton system
-// is a symmetric saddle point in disguise (DESIGN.md §2 "Solve"; null-space method: Benzi,
+// is a symmetric saddle point in disguise (docs/design.md §2, "Solve"; null-space method: Benzi,
 // Golub, Liesen, "Numerical solution of saddle point problems", Acta Numerica 2005, §6;
 // master/slave elimination of the dual mortar constraints: Wohlmuth 2000, Popp et al. 2010).
 //

@@ -1,5 +1,5 @@
 // Mortar quantities of a whole contact interface (assembly/contact_mortar): the sums and
-// patch properties of DESIGN.md §3 on non-matching flat interfaces, and the derivatives
+// patch properties of docs/design.md §3 on non-matching flat interfaces, and the derivatives
 // against central finite differences.
 
 #include <gtest/gtest.h>

@@ -304,7 +304,7 @@ TEST(WeightedGap, KratosTwoMastersGapAndSlip) {
 }
 
 TEST(Mortar2D, PatchTestNonMatchingFlatInterface) {
-  // Σ_pairs Σ_l M_jl f(x²_l) = D_jj f(x¹_j) for linear f (biorthogonality, DESIGN.md §3), on a
+  // Σ_pairs Σ_l M_jl f(x²_l) = D_jj f(x¹_j) for linear f (biorthogonality, docs/design.md §3), on a
   // tilted flat interface; coincident lines for a general f, a gap for a tangential f.
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(0.0, 1.0);

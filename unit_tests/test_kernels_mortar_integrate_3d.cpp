@@ -2,7 +2,7 @@
 // flat non-matching interfaces (perf/mortar_interfaces.hpp): the per-pair results equal those
 // of a plain loop calling integrate_mortar_3d on every candidate pair (so the per-slave hoisting
 // of the dual basis and the early rejection change nothing), and the assembled D, M pass the
-// mortar checks of DESIGN.md §3: Σ D = slave area, Σ M = overlap area (the whole slave here),
+// mortar checks of docs/design.md §3: Σ D = slave area, Σ M = overlap area (the whole slave here),
 // Σ_l M_jl f(x²_l) = D_jj f(x¹_j) for linear f, and the weighted gap equals gap · D_jj. Also
 // mortar_integrate_each (pairs handed to a sink) against the stored launches, 2D and 3D.
 #include <gtest/gtest.h>

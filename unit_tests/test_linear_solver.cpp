@@ -1,8 +1,8 @@
 // Linear solves on 1 and 2 ranks (registered for both): |b − A x| must be small for the
 // direct path (Debian's KLU2 is silently wrong on a multi-rank communicator unless the
-// system is gathered to one rank, TOOLCHAIN.md) and for Belos + MueLu. MUMPS on the gathered
-// system (`MUMPS/gather`, type: auto in 2D) gives the same bits on 2 ranks as on rank 0's
-// own 1-rank communicator, and a singular system fails on every rank.
+// system is gathered to one rank, docs/design.md, "Toolchain notes") and for Belos + MueLu. MUMPS
+// on the gathered system (`MUMPS/gather`, type: auto in 2D) gives the same bits on 2 ranks as on
+// rank 0's own 1-rank communicator, and a singular system fails on every rank.
 
 #include <gtest/gtest.h>
 

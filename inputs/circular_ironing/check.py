@@ -1,4 +1,4 @@
-"""Circular ironing, plane strain (BENCHMARKS.md #20): the half-disc die of Kratos'
+"""Circular ironing, plane strain (docs/verification.md #20): the half-disc die of Kratos'
 ironing_with_die_3D against the shallow die under the same loading (pressed 1, then slid),
 frictionless.
 

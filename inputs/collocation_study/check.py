@@ -1,8 +1,8 @@
-"""Exact vs collocation mortar integration (BENCHMARKS row 6) on the 2D Taylor patch test.
+"""Exact vs collocation mortar integration (docs/verification.md #6) on the 2D Taylor patch test.
 
 Reference: the Taylor patch test's exact contact pressure is p = 10 at every slave node
 (see taylor_patch/check.py: uniform sigma_yy = -10 solves the problem for any mesh). With
-exact segment-based integration (DESIGN.md §3) the mortar integrals of the piecewise-linear
+exact segment-based integration (docs/design.md §3) the mortar integrals of the piecewise-linear
 master field are exact, so the discrete solution reproduces p to round-off. Collocation
 integrates Phi_j N_l over a slave element with a fixed rule that ignores the kinks of the
 master interpolation at the projected master nodes (here at an arbitrary point of a slave

@@ -377,7 +377,7 @@ def _self_test():
     b, p0 = hertz_line_contact(10.0, 8.0, 8.0, 200.0, 0.3, 200.0, 0.3)
     assert abs(b - 0.6808) < 5e-5, b
     assert abs(p0 - 9.35) < 5e-3, p0
-    # BENCHMARKS' form b = 2 sqrt(2 R^2 p (1 - nu^2)/(E pi)) and p_max = 4 R p/(pi b).
+    # As in docs/verification.md #8: b = 2 sqrt(2 R^2 p (1 - nu^2)/(E pi)), p_max = 4 R p/(pi b).
     R, p, E, nu = 8.0, 0.625, 200.0, 0.3
     assert abs(b - 2 * math.sqrt(2 * R**2 * p * (1 - nu**2) / (E * math.pi))) < 1e-12
     assert abs(p0 - 4 * R * p / (math.pi * b)) < 1e-12

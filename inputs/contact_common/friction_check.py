@@ -7,7 +7,7 @@ Import from a check.py with
     sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "contact_common"))
     import friction_check as fc
 
-Conventions (DESIGN.md §2, nonlinear/mechanics_problem.hpp): lm = the slave multiplier
+Conventions (docs/design.md §2, nonlinear/mechanics_problem.hpp): lm = the slave multiplier
 vector lambda_j; the traction on the slave is -lambda; lambda_n = n.lambda >= 0 in
 compression (n = outward slave normal) is `contact_pressure`; contact_status 0 open,
 1 stick, 2 slip; slip_* = accumulated slip of the slave relative to the master, sum over
@@ -435,7 +435,7 @@ def _self_test():
     # Tangential part.
     lam_n, lam_t = tangential_part(np.array([[3.0], [-10.0]]), np.array([0.0, -1.0]))
     assert lam_n[0] == 10.0 and lam_t[0, 0] == 3.0 and lam_t[1, 0] == 0.0
-    # Cattaneo-Mindlin, BENCHMARKS row 9: Q/(mu P) = 2R q/(mu 2R p) = 0.05851/0.125.
+    # Cattaneo-Mindlin, docs/verification.md #9: Q/(mu P) = 2R q/(mu 2R p) = 0.05851/0.125.
     b, p0 = cc.hertz_line_contact(10.0, 8.0, 8.0, 200.0, 0.3, 200.0, 0.3)
     cm = mindlin_stick_half_width(b, 16 * 0.05851, 0.2, 10.0)
     assert abs(cm / b - math.sqrt(1 - 0.05851 / 0.125)) < 1e-14 and abs(cm - 0.49652) < 1e-4, cm

@@ -1,4 +1,4 @@
-"""Contact patch tests, frictionless (BENCHMARKS rows 1 and 2): the computed fields equal the
+"""Contact patch tests, frictionless (docs/verification.md #1 and #2): the computed fields equal the
 analytic uniform-stress solution to 1e-8 (relative), on 1 and 2 ranks, and the runs agree to
 1e-10.
 

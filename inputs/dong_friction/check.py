@@ -1,5 +1,5 @@
-"""Friction base test after Dong (1999) (BENCHMARKS row 7) for mu = 1, 0.5, 0.25: the boundary
-force on block I's held left side against the horizontal displacement of the interface is
+"""Friction base test after Dong (1999) (docs/verification.md #7) for mu = 1, 0.5, 0.25: the
+boundary force on block I's held left side against the horizontal displacement of the interface is
 linear while the stick/slip partition of the interface is unchanged and saturates at the
 Coulomb plateau |F| = mu N once the whole interface slips; the three plateaus are in the
 ratio 1 : 0.5 : 0.25. Writes dong_curve.csv and dong_curve.png; 1 and 2 ranks agree to 1e-10.

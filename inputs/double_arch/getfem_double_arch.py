@@ -1,5 +1,5 @@
-"""Double arc (BENCHMARKS.md #14) solved independently with GetFEM 5.4 (Poulios & Renard's own
-code and contact formulation), to judge Grout's curves (docs/verification.md, "Double arc",
+"""Double arc (docs/verification.md #14) solved independently with GetFEM 5.4 (Poulios & Renard's
+own code and contact formulation), to judge Grout's curves (docs/verification.md, "Double arc",
 "Independent check with GetFEM").
 
 What: the same plane-strain problem as double_arch.yaml, on the same Exodus mesh

@@ -1,4 +1,4 @@
-"""Frictional patch tests (BENCHMARKS row 3), 2D and 3D, mu = 0, 0.001, 0.01, 1, 10: every
+"""Frictional patch tests (docs/verification.md #3), 2D and 3D, mu = 0, 0.001, 0.01, 1, 10: every
 step of every run equals the exact uniform-stress solution to 1e-8 (relative), on 1 and 2
 ranks, and the two agree to 1e-10.
 

@@ -1,4 +1,4 @@
-"""Hertz contact of two cylinders, plane strain, frictionless (BENCHMARKS row 8), on three
+"""Hertz contact of two cylinders, plane strain, frictionless (docs/verification.md #8), on three
 nested meshes: contact half-width b and peak pressure p_max against Hertz, errors decreasing
 with refinement, the finest within 3 %; equilibrium |reaction_lower_bottom_y| = P; 1 and 2
 ranks agree to 1e-10. Writes hertz_profile.csv (finest mesh: x, p computed, p analytic),
@@ -13,7 +13,7 @@ the contact is the strip |x| <= b with
 (the elliptic pressure integrates to P). Here R1 = R2 = R = 8 (R* = 4), E = 200, nu = 0.3
 (E* = E/(2(1 - nu^2)) = 109.89), and the load is p = 0.625 on the full diameter, P = 2Rp = 10:
     b = sqrt(4 * 10 * 4/(pi * 109.89)) = 0.6808,    p_max = 20/(pi * 0.6808) = 9.351.
-BENCHMARKS.md writes the same pair as b = 2 sqrt(2 R^2 p (1 - nu^2)/(E pi)) and
+docs/verification.md #8 writes the same pair as b = 2 sqrt(2 R^2 p (1 - nu^2)/(E pi)) and
 p_max = 4Rp/(pi b) = 2P/(pi b) (consistent: 4Rp = 2P).
 
 Computed b: on each side the edge between the last active slave node x_a and the first

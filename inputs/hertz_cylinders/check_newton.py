@@ -6,7 +6,7 @@
    (C ~ |J^-1| |J'|, O(1) here) and F_floor = 1e-12 (round-off of |F| ~ 1e1),
    and the solution agrees with the analytic Hertz half-width and p_max within 5 %.
 2. hertz_cn_2 (c_n = 1e5, 50 x the default E/h) gives the solution of hertz_2 (default c_n)
-   to 1e-8 relative: the augmentation only steers the active-set search (DESIGN.md §2). The
+   to 1e-8 relative: the augmentation only steers the active-set search (docs/design.md §2). The
    displacement is compared without the upper body's rigid rotation about the centre of its
    flat face, a nearly singular mode set by round-off (below), which is bounded separately.
 3. hertz_condensed_2 (multipliers condensed, displacement-only system solved by GMRES +

@@ -1,4 +1,4 @@
-"""Hertz contact of two cylinders with Coulomb friction, Cattaneo-Mindlin (BENCHMARKS row 9),
+"""Hertz contact of two cylinders with Coulomb friction, Cattaneo-Mindlin (docs/verification.md #9),
 on three nested meshes: the stick-zone half-width c and the tangential traction profile
 against the analytic solution, errors decreasing with refinement, the finest within 5 %;
 the normal traction against Hertz (finest within 5 %); the local Coulomb law at slip nodes;
@@ -12,7 +12,7 @@ friction); the same formulas are thesis eqs. (4.86), (4.87) (Mataix Ferrandiz 20
 §4.5.4.1.2.2). Two cylinders R1 = R2 = R = 8, E = 200, nu = 0.3 (elastically identical, so
 the normal and tangential problems uncouple), normal load P = 2Rp = 10 per unit length
 (p = 0.625 on a diameter), then a monotonically increasing tangential load Q = 2Rq with
-q = 0.05851, i.e. Q = 0.93616 < mu P = 2 (mu = 0.2): BENCHMARKS' q is a traction on the same
+q = 0.05851, i.e. Q = 0.93616 < mu P = 2 (mu = 0.2): the benchmark's q is a traction on the same
 face as p, so Q/(mu P) = q/(mu p) = 0.46808 either way.
     b = sqrt(4 P R*/(pi E*)) = 0.6808,  p0 = 2P/(pi b) = 9.351   (R* = R/2, E* = E/(2(1-nu^2)))
     p_n(x) = p0 sqrt(1 - x^2/b^2)
@@ -29,7 +29,7 @@ Computed quantities (final step), slave nodes sorted by x:
   - normal traction: contact_pressure; b from the Hertz edge behaviour
     (contact_check.half_width), p_max = its largest value;
   - tangential traction: the shear on the (flat, y = 0) interface = the x component of the
-    traction. The traction on the slave is -lambda (DESIGN.md §2) and Q pushes the slave
+    traction. The traction on the slave is -lambda (docs/design.md §2) and Q pushes the slave
     (upper) body in +x, so friction acts on it in -x: -lm_x < 0, i.e. p_t = +lm_x. The
     profile is compared sign-robustly (p_t = s lm_x with s the sign of the sum of lm_x over
     the contact), and s = +1 is checked separately, so a sign-convention change shows up as
@@ -104,7 +104,7 @@ def analyse(d, b=B, p0=P0, c=C, mu=MU):
     out["sign"] = sign
     if sign < 0:
         failures.append("lm_x < 0 over the contact: the traction on the slave (-lambda) does not oppose Q "
-                        "(DESIGN.md §2 convention)")
+                        "(docs/design.md §2 convention)")
     pt = sign * lm[0]
     # Stick zone: one interval around 0, slip between stick and open.
     stick_x = x[st == fc.STICK]

@@ -1,5 +1,5 @@
-"""Hertz contact of a cylinder on a rigid plane, plane strain, frictionless (BENCHMARKS row
-10), on three nested meshes: half-width b and peak pressure p_max against Hertz, errors
+"""Hertz contact of a cylinder on a rigid plane, plane strain, frictionless (docs/verification.md
+#10), on three nested meshes: half-width b and peak pressure p_max against Hertz, errors
 decreasing with refinement, the finest within 3 %; equilibrium |reaction_plane_y| = P;
 1 and 2 ranks agree to 1e-10. Writes hertz_plane_profile.csv (finest mesh: x, p computed,
 p analytic), hertz_plane_convergence.csv and hertz_plane_profile.png.

@@ -1,4 +1,4 @@
-"""L-shape with a tied circular region, Neo-Hookean (BENCHMARKS row 21; thesis App. A.3.5).
+"""L-shape with a tied circular region, Neo-Hookean (docs/verification.md #21; thesis App. A.3.5).
 
 Checks, on 1 and 2 ranks (the two agree to 1e-8):
 1. The tying constraint at every slave node and every step, on an independent transcription of

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""L-shape with a circular region at its inner corner (BENCHMARKS row 21), meshed by gmsh (all
-quads), written as Exodus.
+"""L-shape with a circular region at its inner corner (docs/verification.md #21), meshed by gmsh
+(all quads), written as Exodus.
 
 Usage: lshape.py OUTPUT.exo [--size H] [--conforming] [--msh OUTPUT.msh]
 

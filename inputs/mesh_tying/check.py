@@ -1,4 +1,4 @@
-"""Mesh tying patch tests (BENCHMARKS row 21, patches): the linear field u = A X is
+"""Mesh tying patch tests (docs/verification.md #21, patches): the linear field u = A X is
 reproduced to 1e-10 (relative) at every node of both bodies and the constant stress sigma(A)
 in every element, across a tied non-matching interface (QUAD4/TRI3 in 2D, HEX8/TET4 in 3D),
 on 1 and 2 ranks; the two runs agree to 1e-10.

@@ -1,5 +1,5 @@
-"""Press fit 2D, mu = 0.1 (BENCHMARKS row 18; Fischer & Wriggers, CMAME 195 (2006) 5020; Kratos
-validation/press_fit): the horizontal reaction on the block's pushed face against the steps,
+"""Press fit 2D, mu = 0.1 (docs/verification.md #18; Fischer & Wriggers, CMAME 195 (2006) 5020;
+Kratos validation/press_fit): the horizontal reaction on the block's pushed face against the steps,
 compared with the published figure press_fit/figures/solution_2d.png.
 
 Usage: check.py [STEM]   (default press_fit_ci: the CI run, 75 steps; press_fit: the full

@@ -1,5 +1,5 @@
 """Press fit 2D, mu = 0.1: GetFEM's horizontal reaction (getfem_press_fit.py) against Grout's
-and the published figure (docs/verification.md, "Press fit 2D, mu = 0.1", "Independent check
+and the published figure (docs/verification.md, "Press fit 2D, μ = 0.1", "Independent check
 with GetFEM").
 
 Usage:

@@ -1,6 +1,6 @@
-"""Press fit 2D, mu = 0.1 (BENCHMARKS.md #18) solved independently with GetFEM 5.4 (Poulios &
+"""Press fit 2D, mu = 0.1 (docs/verification.md #18) solved independently with GetFEM 5.4 (Poulios &
 Renard's code and large-sliding contact), to judge Grout's curve against the published figure
-(docs/verification.md, "Press fit 2D, mu = 0.1", "Independent check with GetFEM").
+(docs/verification.md, "Press fit 2D, μ = 0.1", "Independent check with GetFEM").
 
 What: the same plane-strain problem as press_fit.yaml, on the same Exodus mesh (Kratos'
 press_fit.mdpa converted by tools/mdpa_to_exodus.py), read with netCDF4

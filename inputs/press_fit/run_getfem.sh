@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The press fit solved by GetFEM 5.4 and by Grout on the same meshes, against the published
-# figure (docs/verification.md, "Press fit 2D, mu = 0.1", "Independent check with GetFEM").
+# figure (docs/verification.md, "Press fit 2D, μ = 0.1", "Independent check with GetFEM").
 # Usage: inputs/press_fit/run_getfem.sh [BUILD_DIR]   (default build/). Work folder:
 # BUILD_DIR/inputs/press_fit/getfem. Runs, 150 steps, 1 rank:
 #   Grout  press_fit.yaml on Kratos' mesh and on the structured meshes of levels 2 and 4

@@ -1,4 +1,4 @@
-"""Shallow ironing (BENCHMARKS.md #19), plane strain or 3D: the die's reaction against the
+"""Shallow ironing (docs/verification.md #19), plane strain or 3D: the die's reaction against the
 published curves of the Kratos example (Poulios & Renard 2015), digitised into reference_*.csv
 by digitize_reference.py.
 

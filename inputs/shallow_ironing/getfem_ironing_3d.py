@@ -1,5 +1,5 @@
-"""Shallow ironing on Kratos' own 3D mesh (BENCHMARKS.md #19, kratos3d_frictionless.yaml) solved
-independently with GetFEM 5.4 (Poulios & Renard's code and large-sliding contact), to judge
+"""Shallow ironing on Kratos' own 3D mesh (docs/verification.md #19, kratos3d_frictionless.yaml)
+solved independently with GetFEM 5.4 (Poulios & Renard's code and large-sliding contact), to judge
 whether Grout's 3D F_y plateau (about 5 % above the published curve) comes from the model or
 from Grout (docs/verification.md, "Shallow ironing", "The reference's own 3D model").
 

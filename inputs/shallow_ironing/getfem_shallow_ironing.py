@@ -1,6 +1,6 @@
-"""Shallow ironing, plane strain (BENCHMARKS.md #19) solved independently with GetFEM 5.4 (Poulios
-& Renard's code and large-sliding contact), to judge whether Grout's F_x/F_y > mu and its F_y
-plateau come from the model or from Grout (docs/verification.md, "Shallow ironing, plane
+"""Shallow ironing, plane strain (docs/verification.md #19) solved independently with GetFEM 5.4
+(Poulios & Renard's code and large-sliding contact), to judge whether Grout's F_x/F_y > mu and its
+F_y plateau come from the model or from Grout (docs/verification.md, "Shallow ironing, plane
 strain", "Independent check with GetFEM").
 
 What: the same plane-strain problem as ci_frictional.yaml / ci_frictionless.yaml, on the same

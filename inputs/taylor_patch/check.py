@@ -1,4 +1,4 @@
-"""Taylor patch test, frictionless, non-matching meshes (BENCHMARKS rows 4 and 5): contact
+"""Taylor patch test, frictionless, non-matching meshes (docs/verification.md #4 and #5): contact
 pressure = 10 at every slave node and the uniform stress state to 1e-8 (relative), u_y (u_z
 in 3D) continuous across the interface, on 1 and 2 ranks; the runs agree to 1e-10.
 
