@@ -1,9 +1,10 @@
 #include "assembly/distribute_mesh.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
+#include <algorithm>
 #include <cstring>
 
-#include "io/errors.hpp"
+#include "assembly/agree_on_errors.hpp"
 
 namespace grout {
 
@@ -86,33 +87,24 @@ void unpack(Buffer& b, Mesh& m) {
 }  // namespace
 
 Mesh read_and_broadcast_mesh(const Comm& comm, const std::function<Mesh()>& read) {
+  // Any error of the reading rank (an InputError, std::bad_alloc, a library's exception) ends
+  // every rank: the others would otherwise wait in the broadcast below for ever.
   Mesh mesh;
-  std::string error;
-  if (comm.getRank() == 0) {
-    try {
-      mesh = read();
-    } catch (const InputError& e) {
-      error = e.what();
-    }
-  }
-  if (comm.getSize() == 1) {
-    if (!error.empty()) throw InputError(error);
-    return mesh;
-  }
+  agree_on_errors(comm, [&] {
+    if (comm.getRank() == 0) mesh = read();
+  });
+  if (comm.getSize() == 1) return mesh;
   Buffer buffer;
-  if (comm.getRank() == 0) {
-    buffer.put(error);
-    if (error.empty()) pack(mesh, buffer);
-  }
+  if (comm.getRank() == 0) pack(mesh, buffer);
   long long size = static_cast<long long>(buffer.bytes.size());
   Teuchos::broadcast(comm, 0, &size);
-  buffer.bytes.resize(size);
-  Teuchos::broadcast(comm, 0, int(size), buffer.bytes.data());
-  if (comm.getRank() != 0) {
-    buffer.get(error);
-    if (error.empty()) unpack(buffer, mesh);
-  }
-  if (!error.empty()) throw InputError(error);
+  buffer.bytes.resize(std::size_t(size));
+  // MPI counts are int: a buffer over 2 GiB goes in pieces (one count of its size overflowed
+  // into MPI_ERR_TRUNCATE).
+  constexpr long long piece = 1LL << 30;
+  for (long long at = 0; at < size; at += piece)
+    Teuchos::broadcast(comm, 0, int(std::min(piece, size - at)), buffer.bytes.data() + at);
+  if (comm.getRank() != 0) unpack(buffer, mesh);
   return mesh;
 }
 

@@ -8,8 +8,9 @@
 
 namespace grout {
 
-/// Call `read` on rank 0 and broadcast its mesh. If it throws InputError on rank 0, every
-/// rank throws an InputError with the same message (so no rank hangs).
+/// Call `read` on rank 0 and broadcast its mesh. If it throws anything on rank 0, every rank
+/// throws (agree_on_errors: rank 0 rethrows its error, the others ErrorOnOtherRank with its
+/// exit code), so no rank waits for a mesh that will not come.
 Mesh read_and_broadcast_mesh(const Comm& comm, const std::function<Mesh()>& read);
 
 }  // namespace grout

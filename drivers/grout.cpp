@@ -110,6 +110,7 @@ void run(const std::string& input_path, const std::string& output_dir,
   stepping.steps = input.time.steps;
   stepping.step_size.adaptive = input.time.adaptive;
   stepping.step_size.max_step_size = input.time.max_step_size;
+  stepping.min_step_size = input.time.min_step_size;
 
   // Solve, writing and flushing every converged step at once.
   const auto write_step = [&](const ConvergedStep& step) {

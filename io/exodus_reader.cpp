@@ -90,10 +90,19 @@ class ReadOnlyFile {
     }
   }
 
+  /// The ids of `count` entities of `type`; each must fit in an int (ElementBlock::id and the
+  /// sets' ids are int: 2^32 + 1 would otherwise read as 1, a false "same id").
   std::vector<int64_t> ids(ex_entity_type type, int64_t count, const std::string& what) const {
     check_count(count, what);
     std::vector<int64_t> ids(static_cast<std::size_t>(count));
     if (count > 0) check(ex_get_ids(id_, type, ids.data()), "reading entity ids");
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      if (ids[i] < std::numeric_limits<int>::min() || ids[i] > std::numeric_limits<int>::max())
+        fail(path_, what + ": entry " + std::to_string(i + 1) + " has id " +
+                        std::to_string(ids[i]) + ", outside the supported range " +
+                        std::to_string(std::numeric_limits<int>::min()) + ".." +
+                        std::to_string(std::numeric_limits<int>::max()));
+    }
     return ids;
   }
 
@@ -206,6 +215,10 @@ void read_blocks(const ReadOnlyFile& file, const Counts& c, Mesh& mesh) {
     eb.name = names[b];
     eb.id = int(ids[b]);
     eb.first_element = first;
+    // Exodus writes an element block without elements with the type "NULL".
+    if (num_elements == 0)
+      fail(file.path(), block + " is empty (0 elements, element type '" + std::string(type) +
+                            "'): every block needs elements; remove it from the mesh");
     if (!parse_topology(type, eb.topology))
       fail(file.path(), block + " has unsupported element type '" + std::string(type) +
                             "' (supported: QUAD4, TRI3, HEX8, TET4)");

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <ctime>
 #include <set>
 #include <stdexcept>
@@ -17,13 +18,26 @@
 
 #include "io/errors.hpp"
 #include "io/exodus.hpp"
+#include "io/output_files.hpp"
 
 namespace grout {
 
 namespace {
 
 [[noreturn]] void fail(const std::string& path, const std::string& what) {
-  throw InputError(path + ": " + what);
+  throw InputError(output_name(path) + ": " + what);
+}
+
+/// After a failed Exodus call: its reason, from the error Exodus recorded (a netCDF code or
+/// an errno value, such as "No space left on device" or "Permission denied").
+std::string exodus_reason(int status) {
+  const char *message = nullptr, *function = nullptr;
+  int code = 0;
+  ex_get_err(&message, &function, &code);
+  if (code > 0) return std::strerror(code);  // netCDF passes system errors on as errno
+  if (code == 0 || code == EX_MSG || !message || !*message)
+    return "status " + std::to_string(status);
+  return std::string(message) + ", netCDF error " + std::to_string(code);
 }
 
 const char* exodus_element_type(Topology t) {
@@ -63,7 +77,7 @@ class WriteFile {
   WriteFile(const std::string& path, int max_name_length) : path_(path) {
     int comp_ws = sizeof(double), io_ws = sizeof(double);
     id_ = ex_create(path.c_str(), EX_CLOBBER | EX_ALL_INT64_API, &comp_ws, &io_ws);
-    if (id_ < 0) fail(path, "cannot create Exodus file");
+    if (id_ < 0) fail(path, "cannot create Exodus file (" + exodus_reason(id_) + ")");
     // Names longer than the 32-character default would be truncated.
     ex_set_max_name_length(id_, std::max(max_name_length, int(MAX_NAME_LENGTH)));
   }
@@ -79,8 +93,7 @@ class WriteFile {
   int release() { return std::exchange(id_, -1); }
   void check(int status, const std::string& what) const {
     if (status < 0)
-      fail(path_,
-           "Exodus error while writing " + what + " (status " + std::to_string(status) + ")");
+      fail(path_, "Exodus error while writing " + what + " (" + exodus_reason(status) + ")");
   }
   void put_names(ex_entity_type type, const std::vector<std::string>& names,
                  const std::string& what) const {
@@ -323,7 +336,8 @@ void ExodusWriter::write_step(double time, const std::vector<std::vector<double>
   const int step = num_steps_ + 1;
   const std::string at = " at step " + std::to_string(step);
   auto check = [&](int status, const std::string& what) {
-    if (status < 0) fail(path_, "Exodus error while writing " + what + at);
+    if (status < 0)
+      fail(path_, "Exodus error while writing " + what + at + " (" + exodus_reason(status) + ")");
   };
   check(ex_put_time(exoid_, step, &time), "the time value");
   for (std::size_t v = 0; v < nodal.size(); ++v)

@@ -334,6 +334,27 @@ std::vector<ContactInput> read_contact(const Section& grout) {
   return pairs;
 }
 
+/// `time/min_step_size` (default min_step_fraction · end): a cut-back below it ends the run
+/// (exit 3), and the first step end/steps may not be smaller, which bounds `steps`.
+void read_min_step_size(const Section& time, TimeInput& t) {
+  std::ostringstream text;
+  t.min_step_size = time.has("min_step_size") ? time.number("min_step_size")
+                                              : TimeInput::min_step_fraction * t.end;
+  if (t.min_step_size < TimeInput::min_step_floor * t.end) {
+    text << "expected at least " << TimeInput::min_step_floor
+         << " · end = " << TimeInput::min_step_floor * t.end << ", got " << t.min_step_size;
+    time.fail("min_step_size", text.str());
+  }
+  if (t.end / t.steps < t.min_step_size) {
+    text << t.steps << " steps of " << t.end / t.steps << " each, below the minimum step size "
+         << t.min_step_size << " (time/min_step_size"
+         << (time.has("min_step_size") ? "" : ", by default 1e-6 · end")
+         << "): at most end / min_step_size = " << static_cast<long long>(t.end / t.min_step_size)
+         << " steps";
+    time.fail("steps", text.str());
+  }
+}
+
 }  // namespace
 
 Input read_input(const std::string& path) {
@@ -365,7 +386,7 @@ Input read_input_text(const std::string& raw, const std::string& path) {
       "time",
       {Key::number("end").above(0).defaults("1"), Key::integer("steps").at_least(1).defaults("1"),
        Key::choice("stepping", {"fixed", "adaptive"}, "stepping").defaults("fixed"),
-       Key::number("max_step_size").above(0)});
+       Key::number("max_step_size").above(0), Key::number("min_step_size").above(0)});
   input.time.end = time.number("end");
   input.time.steps = time.integer("steps");
   input.time.adaptive = time.string("stepping") == "adaptive";
@@ -373,6 +394,7 @@ Input read_input_text(const std::string& raw, const std::string& path) {
     if (!input.time.adaptive) time.fail("max_step_size", "only with stepping: adaptive");
     input.time.max_step_size = time.number("max_step_size");
   }
+  read_min_step_size(time, input.time);
   read_dynamics(grout, input);
 
   input.solver = Teuchos::rcp(new Teuchos::ParameterList(grout.raw_section("solver")));

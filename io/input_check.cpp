@@ -56,6 +56,23 @@ class MeshCheck {
   std::string mesh_name_;
 };
 
+/// A pair and its reverse (slave and master swapped) constrain one interface twice: the two
+/// sets of multipliers are not independent and Newton stops at its iteration limit.
+void check_no_reverse_pairs(const Input& input, const Mesh& mesh, const MeshCheck& check) {
+  const auto side = [&](const std::string& name) { return mesh.find_side_set(name)->name; };
+  for (std::size_t i = 0; i < input.contact.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      const ContactInput &a = input.contact[j], &b = input.contact[i];
+      if (side(a.slave) == side(b.master) && side(a.master) == side(b.slave)) {
+        check.fail("grout/contact/" + b.name,
+                   "slave '" + b.slave + "' and master '" + b.master +
+                       "' are the master and slave of grout/contact/" + a.name +
+                       ": a pair and its reverse constrain one interface twice (keep one)");
+      }
+    }
+  }
+}
+
 }  // namespace
 
 const MaterialInput* find_material(const Input& input, const ElementBlock& block) {
@@ -125,6 +142,7 @@ void check_input_against_mesh(const Input& input, const Mesh& mesh) {
                                      " (a slave side belongs to one contact pair)");
     }
   }
+  check_no_reverse_pairs(input, mesh, check);
 }
 
 }  // namespace grout

@@ -10,6 +10,7 @@
 #include "io/mesh.hpp"
 #include "kernels/element_jacobian.hpp"
 #include "kernels/linear_elastic.hpp"
+#include "kernels/mass_matrix.hpp"
 
 namespace grout {
 
@@ -69,44 +70,66 @@ void check_side_sets(const Mesh& mesh) {
   }
 }
 
-/// Every element: finite coordinates and det J > 0 at every point of its quadrature rule,
-/// relative to its size (degenerate when |det J| ≤ 1e-10 h^dim, h its longest extent).
+/// Largest coordinate magnitude: an element's volume ~ h^3 must stay a finite double
+/// (1e100^3 = 1e300 < 1.8e308); anything larger is a unit or file error.
+constexpr double max_coordinate = 1e100;
+
+/// Every element: finite coordinates of at most max_coordinate in magnitude, and det J > 0 at
+/// every point of every quadrature rule it is integrated with (the solid's stiffness and the
+/// mass matrix of dynamics), relative to its size (degenerate when |det J| ≤ 1e-10 h^dim, h
+/// its longest extent).
 void check_elements(const Mesh& mesh) {
   const int dim = mesh.dimension;
+  if (dim != 2 && dim != 3) return;  // refused by the reader
   for (const ElementBlock& block : mesh.blocks) {
     const int npe = block.nodes_per_element;
     if (npe != topology_num_nodes(block.topology) || npe > max_element_nodes) continue;
+    const int degrees[2] = {full_integration_degree(block.topology),
+                            mass_integration_degree(block.topology)};
     for (GlobalIndex e = 0; e < block.num_elements(); ++e) {
+      const auto where = [&] {
+        return "mesh '" + mesh.file + "': block '" + block.name + "', element " +
+               std::to_string(e + 1) + " (global element " +
+               std::to_string(block.first_element + e + 1) + "): ";
+      };
       double X[max_element_nodes * 3];
       double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
       for (int a = 0; a < npe; ++a) {
         const GlobalIndex node = block.connectivity[e * npe + a];
         for (int d = 0; d < dim; ++d) {
           const double x = mesh.coordinates[node * dim + d];
+          if (!std::isfinite(x) || std::abs(x) > max_coordinate) {
+            std::ostringstream text;
+            text << where()
+                 << (std::isfinite(x) ? "a node coordinate is out of range"
+                                      : "a node coordinate is not a finite number")
+                 << " (node " << node + 1 << ", "
+                 << "xyz"[d] << " = " << x;
+            if (std::isfinite(x)) text << "; at most " << max_coordinate << " in magnitude";
+            text << ")";
+            throw InputError(text.str());
+          }
           X[a * dim + d] = x;
           lo[d] = a == 0 ? x : std::min(lo[d], x);
           hi[d] = a == 0 ? x : std::max(hi[d], x);
         }
       }
-      const auto where = [&] {
-        return "mesh '" + mesh.file + "': block '" + block.name + "', element " +
-               std::to_string(e + 1) + " (global element " +
-               std::to_string(block.first_element + e + 1) + "): ";
-      };
-      double det_min = 0.0;
-      if (!min_jacobian_determinant(block.topology, dim, X, full_integration_degree(block.topology),
-                                    det_min)) {
-        throw InputError(where() + "a node coordinate is not a finite number");
-      }
       double h = 0.0;
       for (int d = 0; d < dim; ++d) h = std::max(h, hi[d] - lo[d]);
       const double tolerance = 1e-10 * std::pow(h, dim);
-      if (det_min > tolerance) continue;
-      std::ostringstream text;
-      text << where()
-           << (det_min < -tolerance ? "inverted (det J = " : "degenerate (zero volume, det J = ")
-           << det_min << " at a quadrature point; check the node order and coordinates)";
-      throw InputError(text.str());
+      for (const int degree : degrees) {
+        double det_min = 0.0;
+        const bool finite = min_jacobian_determinant(block.topology, dim, X, degree, det_min);
+        if (!finite) throw InputError(where() + "a node coordinate is not a finite number");
+        if (det_min > tolerance) continue;
+        std::ostringstream text;
+        text << where()
+             << (det_min < -tolerance ? "inverted (det J = " : "degenerate (zero volume, det J = ")
+             << det_min << " at a point of the "
+             << (degree == degrees[0] ? "stiffness" : "mass matrix's") << " Gauss rule of degree "
+             << degree << "; check the node order and coordinates)";
+        throw InputError(text.str());
+      }
     }
   }
 }

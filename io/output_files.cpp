@@ -12,9 +12,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
+constexpr const char* temporary_suffix = ".partial";
+
 std::string temporary_name(const std::string& path) {
   const fs::path p(path);
-  return (p.parent_path() / ("." + p.filename().string() + ".partial")).string();
+  return (p.parent_path() / ("." + p.filename().string() + temporary_suffix)).string();
 }
 
 /// The same file: the same inode when both exist, else the same normalised absolute path.
@@ -26,6 +28,17 @@ bool same_file(const std::string& a, const std::string& b) {
 }
 
 }  // namespace
+
+std::string output_name(const std::string& path) {
+  const fs::path p(path);
+  const std::string name = p.filename().string(), suffix = temporary_suffix;
+  if (name.size() <= 1 + suffix.size() || name[0] != '.' ||
+      name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return path;
+  const std::string final_name = name.substr(1, name.size() - 1 - suffix.size());
+  return (p.parent_path() / final_name).string() + " (written as '" + path +
+         "' until the first step)";
+}
 
 std::vector<OutputFile> output_files(const Input& input, bool contact_profile) {
   std::vector<OutputFile> files = {{"grout/output/file", input.output.file, ""}};
@@ -55,6 +68,17 @@ void check_output_files(const Input& input, const std::vector<OutputFile>& files
     if (same_file(f.path, input.mesh_file)) fail(f, "is the mesh file (grout/mesh/file)");
     for (std::size_t j = 0; j < i; ++j) {
       if (same_file(f.path, files[j].path)) fail(f, "is also written as " + files[j].key);
+    }
+    // The temporary is truncated at the start and renamed away at the first step: it must not
+    // be an input or another output either.
+    const std::string temporary = "is written first as '" + f.temporary + "', which ";
+    if (same_file(f.temporary, input.file))
+      fail(f, temporary + "is the input file itself ('" + input.file + "')");
+    if (same_file(f.temporary, input.mesh_file))
+      fail(f, temporary + "is the mesh file '" + input.mesh_file + "' (grout/mesh/file)");
+    for (std::size_t j = 0; j < files.size(); ++j) {
+      if (j != i && same_file(f.temporary, files[j].path))
+        fail(f, temporary + "is also written as " + files[j].key + " ('" + files[j].path + "')");
     }
     std::error_code error;
     const fs::path folder =

@@ -22,9 +22,15 @@ struct OutputFile {
 /// `dir/.name.partial`.
 std::vector<OutputFile> output_files(const Input& input, bool contact_profile);
 
+/// \brief How errors name a file being written: `dir/.name.partial` (a temporary of
+/// output_files) is "dir/name (written as 'dir/.name.partial' until the first step)", so that a
+/// message names the output the user asked for; any other path is returned as it is.
+std::string output_name(const std::string& path);
+
 /// \brief Refuses (InputError naming the input file and key) an output whose folder does not
 /// exist or is not a folder, that exists and is not a regular file (a folder, a device, a
-/// pipe), or that is the same file as an input (the YAML, the mesh) or as another output.
+/// pipe), or that is the same file as an input (the YAML, the mesh) or as another output, or
+/// whose temporary is an input or another output.
 void check_output_files(const Input& input, const std::vector<OutputFile>& files);
 
 /// A text file written line by line: every write is flushed and checked (a full disk is an

@@ -23,6 +23,7 @@ void solve_time_steps(DynamicProblem& problem, LinearSolver& linear, LinearSolve
         problem.residual(y, F);  // reactions and contact results at the converged state
         problem.quasi_static().commit_step();
         problem.commit_step(y);
+        warn_of_folded(problem.quasi_static(), converged);
         const EnergyBalance& b = problem.balance();
         E_scale = std::max(E_scale, b.kinetic + b.strain);
         drift_max = std::max(drift_max, std::abs(b.total - E0));

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "assembly/folded_elements.hpp"
 #include "nonlinear/step_times.hpp"
 
 namespace grout {
@@ -22,6 +23,8 @@ void march_steps(NonlinearProblem& problem, LinearSolver& linear, const NewtonOp
   const bool can_fall_back =
       newton.line_search == "Full Step" && !newton.fallback_line_search.empty();
   if (can_fall_back) fallback.line_search = newton.fallback_line_search;
+  const double min_step_size =
+      stepping.min_step_size > 0.0 ? stepping.min_step_size : 1e-6 * stepping.end_time;
   int step = 0, cuts = 0;
   bool fell_back = false;
   while (!times.finished()) {
@@ -44,11 +47,16 @@ void march_steps(NonlinearProblem& problem, LinearSolver& linear, const NewtonOp
         }
         continue;
       }
-      if (cuts == stepping.max_cuts) {
+      const bool below_minimum = times.step_size() / 2 < min_step_size;
+      if (cuts == stepping.max_cuts || below_minimum) {
         std::ostringstream what;
         what << "step " << step + 1 << " (t = " << t_next << ") did not converge: " << report.reason
              << ", after " << cuts << " cut-backs of the step size";
         if (fell_back) what << " (with line search " << fallback.line_search << ")";
+        if (below_minimum)
+          what << "; a further cut-back to dt = " << times.step_size() / 2
+               << " would go below the minimum step size " << min_step_size
+               << " (grout/time/min_step_size)";
         throw ConvergenceError(what.str());
       }
       ++cuts;
@@ -68,6 +76,12 @@ void march_steps(NonlinearProblem& problem, LinearSolver& linear, const NewtonOp
     converged.step = step;
     converged.time = times.time();
     converged.step_size = converged.time - previous_time;
+    if (!(converged.step_size > 0.0)) {  // a repeated time: never written as a step
+      std::ostringstream what;
+      what << "step " << step << " (t = " << converged.time << ") has a step size of "
+           << converged.step_size << " (below the resolution of the time)";
+      throw ConvergenceError(what.str());
+    }
     converged.newton = &report;
     converged.state = &x;
     accept(converged);
@@ -75,6 +89,12 @@ void march_steps(NonlinearProblem& problem, LinearSolver& linear, const NewtonOp
     cuts = 0;  // the budget of halvings is per step
     fell_back = false;
   }
+}
+
+void warn_of_folded(const MechanicsProblem& problem, const ConvergedStep& converged) {
+  Vector u(problem.solid().owned_map());
+  problem.displacement(*converged.state, u);
+  warn_of_folded_elements(problem.solid(), u, converged.step, converged.time);
 }
 
 void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const NewtonOptions& newton,
@@ -86,6 +106,7 @@ void solve_load_steps(MechanicsProblem& problem, LinearSolver& linear, const New
       [&](ConvergedStep& converged) {
         problem.residual(*converged.state, F);  // reactions and contact results there
         problem.commit_step();
+        warn_of_folded(problem, converged);
         on_step(converged);
       });
 }

@@ -13,7 +13,11 @@ namespace grout {
 struct SteppingOptions {
   double end_time = 1.0;
   int steps = 1;
-  int max_cuts = 6;           ///< halvings of the step size before giving up
+  int max_cuts = 6;  ///< halvings of the step size before giving up
+  /// Smallest step a halving may make (ConvergenceError below it); 0 = 1e-6 · end_time. A
+  /// run whose steps fall to a millionth of its span needs a million more: it has stalled
+  /// (a collapsing solid cut dt down to 1e-16 and then "converged" a step of dt = 0).
+  double min_step_size = 0.0;
   StepSizeOptions step_size;  ///< fixed or adaptive increments (nonlinear/step_size.hpp)
 };
 
@@ -40,12 +44,17 @@ class ConvergenceError : public ExitCodeError {
 /// solved by Newton; a step that fails with the default full step after at least one update
 /// is first retried at the same increment with newton.fallback_line_search (kept for its
 /// cut-backs; docs/input.md "Failed steps"); a failed step is retried with half the
-/// increment, up to max_cuts times per step, then ConvergenceError; a converged one goes to
+/// increment, up to max_cuts times per step and never below stepping.min_step_size, then
+/// ConvergenceError naming the step and its time; a converged one goes to
 /// `accept` (its state is the converged x, which accept may evaluate and commit).
 void march_steps(NonlinearProblem& problem, LinearSolver& linear, const NewtonOptions& newton,
                  const SteppingOptions& stepping,
                  const std::function<void(double t, Vector& x)>& begin_step,
                  const std::function<void(ConvergedStep&)>& accept);
+
+/// After a converged step: a warning on stderr (rank 0) when an element of a finite-strain
+/// block is folded at a corner (assembly/folded_elements.hpp). Collective.
+void warn_of_folded(const MechanicsProblem& problem, const ConvergedStep& converged);
 
 /// Steps from t = 0 to end_time in `steps` equal increments (or, adaptive, starting with
 /// end_time / steps and doubling after easy steps; step_size.hpp). A step whose Newton solve

@@ -15,6 +15,7 @@
 #include "io/exodus.hpp"
 #include "io/input.hpp"
 #include "io/netcdf_header.hpp"
+#include "io/output_files.hpp"
 
 namespace grout {
 namespace {
@@ -172,6 +173,96 @@ TEST(ExodusLimits, NameLengthBeyondTheFileIsRefused) {
   expect_contains(input_error([&] { read_exodus(path); }),
                   {"name.exo: corrupt netCDF header: dimension name of 1601401957 bytes runs "
                    "past the end of the file"});
+}
+
+TEST(ExodusLimits, RepeatedVariableNameIsRefused) {
+  // One flipped bit of the seed mesh (side_ss2 -> side_ss3, inputs/hostile_input): two
+  // variables of one name made Exodus read a side set into an array of another's size.
+  const std::string path = std::string(GROUT_SOURCE_DIR) +
+                           "/fuzz/regressions/exodus/repeated_variable_name_side_ss3.exo";
+  expect_contains(input_error([&] { read_exodus(path); }),
+                  {"repeated_variable_name_side_ss3.exo: corrupt netCDF header: variable "
+                   "'side_ss3' is defined twice"});
+}
+
+/// One HEX8 on the unit cube with node 7 moved to (0.573, 0.573, 0.573): det J > 0 at the
+/// 2x2x2 Gauss points of the stiffness, < 0 at a point of the mass matrix's 3x3x3 rule
+/// (inputs/hostile_input/hostile_meshes.py finds the same node by search).
+Mesh hex_inverted_at_the_mass_points() {
+  Mesh mesh;
+  mesh.file = "hex.exo";
+  mesh.dimension = 3;
+  mesh.coordinates = {0, 0, 0, 1, 0, 0, 1,     1,     0,     0, 1, 0,
+                      0, 0, 1, 1, 0, 1, 0.573, 0.573, 0.573, 0, 1, 1};
+  ElementBlock block;
+  block.name = "body";
+  block.id = 1;
+  block.topology = Topology::hex8;
+  block.nodes_per_element = 8;
+  block.connectivity = {0, 1, 2, 3, 4, 5, 6, 7};
+  mesh.blocks.push_back(block);
+  return mesh;
+}
+
+TEST(MeshLimits, ElementInvertedOnlyAtTheMassPointsIsRefused) {
+  const Mesh mesh = hex_inverted_at_the_mass_points();
+  expect_contains(input_error([&] { check_mesh(mesh); }),
+                  {"mesh 'hex.exo': block 'body', element 1 (global element 1): inverted",
+                   "mass matrix's Gauss rule of degree 4"});
+  Mesh moved_less = mesh;  // node 7 at 0.7: positive everywhere
+  for (int d = 0; d < 3; ++d) moved_less.coordinates[6 * 3 + d] = 0.7;
+  EXPECT_NO_THROW(check_mesh(moved_less));
+}
+
+TEST(MeshLimits, HugeCoordinateIsOutOfRangeNotDegenerate) {
+  Mesh mesh = hex_inverted_at_the_mass_points();
+  mesh.coordinates[6 * 3 + 0] = mesh.coordinates[6 * 3 + 1] = mesh.coordinates[6 * 3 + 2] = 1.0;
+  mesh.coordinates[0] = 1e300;  // was "degenerate (zero volume, det J = 6.6e+298)"
+  expect_contains(input_error([&] { check_mesh(mesh); }),
+                  {"element 1 (global element 1): a node coordinate is out of range (node 1, "
+                   "x = 1e+300; at most 1e+100 in magnitude)"});
+  mesh.coordinates[0] = 1e100;  // the largest allowed: volumes stay finite, and the element
+  // (one node 1e100 away) is degenerate relative to its size
+  expect_contains(input_error([&] { check_mesh(mesh); }), {"degenerate (zero volume"});
+}
+
+TEST(OutputLimits, TemporaryOfAnOutputMayNotBeAnInput) {
+  std::filesystem::create_directories(test_dir);
+  Input input;
+  input.file = (test_dir / ".case.e.partial").string();  // the Exodus output's temporary
+  input.mesh_file = (test_dir / "mesh.exo").string();
+  input.output.file = (test_dir / "case.e").string();
+  std::ofstream(input.file) << "grout: {}\n";
+  std::ofstream(input.mesh_file) << "mesh";
+  expect_contains(input_error([&] { check_output_files(input, output_files(input, false)); }),
+                  {"grout/output/file: '" + input.output.file + "' is written first as '" +
+                   input.file + "', which is the input file itself"});
+  input.file = (test_dir / "case.yaml").string();
+  input.mesh_file = (test_dir / ".res.csv.partial").string();  // the summary's temporary
+  input.output.summary = (test_dir / "res.csv").string();
+  std::ofstream(input.mesh_file) << "mesh";
+  expect_contains(input_error([&] { check_output_files(input, output_files(input, false)); }),
+                  {"grout/output/summary: '" + input.output.summary + "' is written first as '" +
+                   input.mesh_file + "', which is the mesh file"});
+  input.mesh_file = (test_dir / "mesh.exo").string();
+  EXPECT_NO_THROW(check_output_files(input, output_files(input, false)));
+}
+
+TEST(OutputLimits, ErrorsNameTheOutputNotItsTemporary) {
+  EXPECT_EQ(output_name("out/.case.e.partial"),
+            "out/case.e (written as 'out/.case.e.partial' until the first step)");
+  EXPECT_EQ(output_name("out/case.e"), "out/case.e");
+  EXPECT_EQ(output_name(".partial"), ".partial");
+  // A folder the Exodus file cannot be created in: the output's name and the reason.
+  try {
+    Mesh mesh = hex_inverted_at_the_mass_points();
+    ExodusWriter writer("/proc/no_such_folder/.case.e.partial", mesh, {"u"}, {}, {});
+    ADD_FAILURE() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "/proc/no_such_folder/case.e (written as '/proc/no_such_folder/.case.e.partial' "
+              "until the first step): cannot create Exodus file (No such file or directory)");
+  }
 }
 
 }  // namespace
