@@ -12,6 +12,8 @@ Defects:
   empty_block             a second element block without elements (Exodus type NULL)
   huge_coordinate         node 1: x = 1e300
   copy                    the source unchanged (under another name)
+  folding_quad            (no source: pass -) one QUAD4 on the unit square, node sets held_nodes
+                          (nodes 1, 2, 4) and corner_nodes (node 3)
   mass_inverted_hex       (no source: pass -) one HEX8, det J > 0 at the stiffness's 2x2x2 Gauss
                           points and < 0 at a point of the mass matrix's 3x3x3 rule
 """
@@ -109,6 +111,15 @@ def main():
             ds.variables["coordx"][0] = 1e300
     elif defect == "copy":
         shutil.copyfile(source, target)
+    elif defect == "folding_quad":
+        sys.path.insert(0, __file__.rsplit("/", 3)[0] + "/tools")
+        import exodus_mesh
+
+        mesh = exodus_mesh.Mesh([[0, 0], [1, 0], [1, 1], [0, 1]])
+        mesh.blocks.append(("block", "QUAD4", np.arange(4, dtype=np.int64).reshape(1, 4)))
+        mesh.node_sets["held_nodes"] = np.array([0, 1, 3])
+        mesh.node_sets["corner_nodes"] = np.array([2])
+        exodus_mesh.write_exodus(mesh, target)
     elif defect == "mass_inverted_hex":
         sys.path.insert(0, __file__.rsplit("/", 3)[0] + "/tools")
         import exodus_mesh
