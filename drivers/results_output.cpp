@@ -12,6 +12,18 @@ namespace grout {
 namespace {
 const char* const axis[3] = {"x", "y", "z"};
 constexpr int first_reaction = 4;  ///< index of the first reaction sum in the globals
+
+/// \brief Element stress names as written: the solid's (2D: xx yy zz xy), and in 2D also
+/// `stress_yz` and `stress_zx`, zero in plane strain and plane stress. ParaView's IOSS reader
+/// groups `stress_xx yy zz xy yz zx` into one array `stress` (IOSS type sym_tensor_33) and
+/// ParaView 5.11 labels a 6-component array XX YY ZZ XY YZ XZ; the four components of 2D
+/// form a 4-component array (IOSS sym_tensor_31) that it labels 0 1 2 3, as it names the
+/// components of 3-, 6- and 9-component arrays only (the reader sets no names of its own).
+std::vector<std::string> output_stress_names(const SolidProblem& solid) {
+  std::vector<std::string> names = solid.stress_names();
+  if (solid.dimension() == 2) names.insert(names.end(), {"stress_yz", "stress_zx"});
+  return names;
+}
 }  // namespace
 
 ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidProblem& solid,
@@ -57,8 +69,8 @@ ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidPr
   // Provenance: QA record (code, version, date, time) and the input and mesh file names.
   ExodusProvenance provenance{"grout", GROUT_VERSION, {}};
   provenance.info = {"grout input: " + input.file, "mesh: " + input.mesh_file};
-  exodus_ = std::make_unique<ExodusWriter>(files[0].temporary, mesh, nodal, solid.stress_names(),
-                                           global_names_, provenance);
+  exodus_ = std::make_unique<ExodusWriter>(files[0].temporary, mesh, nodal,
+                                           output_stress_names(solid), global_names_, provenance);
   if (!input.output.summary.empty()) {
     summary_ = CheckedTextFile(files[1].temporary, files[1].path);
     std::string header = "step,time";
@@ -113,6 +125,7 @@ void ResultsOutput::write(const ConvergedStep& step) {
     Teuchos::reduceAll(*solid_.comm(), Teuchos::REDUCE_SUM, int(s.size()), s.data(), sum.data());
     s.swap(sum);
   }
+  stress.resize(output_stress_names(solid_).size(), std::vector<double>(n_elements, 0.0));
   const ContactFields contact = problem_.contact_fields();
 
   // Reaction sums per node set of the Dirichlet conditions (each node counted once).

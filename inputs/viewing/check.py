@@ -3,7 +3,7 @@
 - time values: step k of 10 is written as the double nearest k/10 (0.3, not
   0.30000000000000004; the last step exactly 1.0), on 1 and 2 ranks;
 - stress components in the order in which ParaView's IOSS reader groups them into one
-  tensor: 2D stress_xx yy zz xy, 3D stress_xx yy zz xy yz zx;
+  tensor: stress_xx yy zz xy yz zx in 2D (yz, zx zero) and 3D;
 - set names: no node set shares its name with a side set; side set X has node set X_nodes;
 - a QA record (grout, version, mm/dd/yy, hh:mm:ss) and an info record naming the input;
 - every name and text row is NUL-padded after its end (readers that decode whole rows, such
@@ -24,7 +24,7 @@ import contact_check as cc  # noqa: E402
 from grout_results import Results  # noqa: E402
 
 NU = 0.3
-STRESS_ORDER = {2: ["stress_xx", "stress_yy", "stress_zz", "stress_xy"],
+STRESS_ORDER = {2: ["stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_zx"],
                 3: ["stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_zx"]}
 
 
