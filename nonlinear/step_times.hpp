@@ -21,8 +21,9 @@ using UInt128 = unsigned __int128;
 /// \brief The double nearest p / q (ties to even) for integers p ≥ 0, 0 < q < 2^127, rounded
 /// once: binary long division gives the quotient to 55 significant bits Q = ⌊p · 2^s / q⌋ and
 /// a sticky bit (any remainder); rounding Q to 53 bits on its two low bits and the sticky bit
-/// is IEEE round-to-nearest-even of the exact quotient (Goldberg 1991, §1.1, guard and sticky
-/// bits), and the scaling by 2^-s is exact (ldexp, normal range).
+/// is IEEE 754 roundTiesToEven of the exact quotient (the kept bits, the first dropped bit and
+/// whether anything below it is non-zero decide it), and the scaling by 2^-s is exact (ldexp,
+/// normal range).
 inline double nearest_double_of_fraction(UInt128 p, UInt128 q) {
   if (p == 0) return 0.0;
   const UInt128 low = UInt128(1) << 54, high = UInt128(1) << 55;
@@ -132,9 +133,7 @@ class StepTimes {
       bool fits = true;
       for (int i = 0; i < std::abs(end_exponent_) && fits; ++i)
         fits = !__builtin_mul_overflow(scaled, detail::UInt128(10), &scaled);
-      fits = fits && q < (detail::UInt128(1) << 127);
-      const double t = fits ? detail::nearest_double_of_fraction(p, q) : std::nan("");
-      if (!std::isnan(t)) return t;
+      if (fits && q < (detail::UInt128(1) << 127)) return detail::nearest_double_of_fraction(p, q);
     }
     const long long g = std::gcd(k, den_);
     return end_ * double(k / g) / double(den_ / g);
