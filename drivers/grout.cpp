@@ -94,11 +94,8 @@ void run(const std::string& input_path, const std::string& output_dir,
   // Build: partition, maps, graph, contact interfaces; solvers from the `solver` sublist.
   const SolidProblem solid(mesh, input, comm);
   MechanicsProblem problem(solid, mesh, input);
-  const NewtonOptions newton = newton_options_from(*input.solver, input.file);
-  const Teuchos::ParameterList linear_params = input.solver->isSublist("Linear Solver")
-                                                   ? input.solver->sublist("Linear Solver")
-                                                   : Teuchos::ParameterList();
-  LinearSolver linear(linear_params, input.file + ": grout/solver/Linear Solver");
+  const NewtonOptions& newton = input.solver.newton;
+  LinearSolver linear(input.solver.linear);
   linear.set_multiplier_pairing(problem.multiplier_pairing(), mesh.dimension);
   linear.set_coordinates(mesh.coordinates, mesh.dimension);
   linear.set_node_bodies(node_bodies(mesh));
@@ -131,7 +128,9 @@ void run(const std::string& input_path, const std::string& output_dir,
                            *initial_velocity(solid, mesh, input), input.dynamics.stabilized_contact,
                            input.dynamics.velocity_update, input.dynamics.sliding_update,
                            input.dynamics.sliding_balance);
-    LinearSolver mass_solver(Teuchos::ParameterList(), input.file + ": mass matrix");
+    LinearSolverSettings mass_settings;  // type: auto
+    mass_settings.where = input.file + ": mass matrix";
+    LinearSolver mass_solver(mass_settings);
     // The dimension picks `auto`'s solver (MUMPS in 3D); without it a 3D mass matrix went to
     // KLU2, whose 3D factorisations are 20-80x slower (docs/performance.md).
     mass_solver.set_coordinates(mesh.coordinates, mesh.dimension);

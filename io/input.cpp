@@ -13,6 +13,7 @@
 #include "io/errors.hpp"
 #include "io/input_dynamics.hpp"
 #include "io/input_schema.hpp"
+#include "io/solver_settings.hpp"
 
 namespace grout {
 
@@ -397,21 +398,7 @@ Input read_input_text(const std::string& raw, const std::string& path) {
   read_min_step_size(time, input.time);
   read_dynamics(grout, input);
 
-  input.solver = Teuchos::rcp(new Teuchos::ParameterList(grout.raw_section("solver")));
-  input.solver->setName("solver");
-  // The solver sublists are read by the solvers (NOX and the linear solver get theirs
-  // passed through); a name not among them would be silently ignored.
-  const std::vector<std::string> solver_sublists = {"Newton", "NOX", "Linear Solver"};
-  for (auto it = input.solver->begin(); it != input.solver->end(); ++it) {
-    const std::string& name = input.solver->name(it);
-    if (std::find(solver_sublists.begin(), solver_sublists.end(), name) == solver_sublists.end()) {
-      throw InputError(path + ": grout/solver/" + name +
-                       ": unknown key (known: Newton, NOX, Linear Solver)");
-    }
-    if (!input.solver->entry(it).isList()) {
-      throw InputError(path + ": grout/solver/" + name + ": expected a section of keys");
-    }
-  }
+  input.solver = solver_settings_from(grout.raw_section("solver"), path);
 
   const Section output =
       grout.section("output", {Key::string("file").defaults(stem + ".e"),

@@ -2,8 +2,6 @@
 // The validated input (docs/design.md §5): the YAML file is read once into these plain structs;
 // nothing downstream looks a value up by string.
 
-#include <Teuchos_ParameterList.hpp>
-#include <Teuchos_RCP.hpp>
 #include <array>
 #include <cstddef>
 #include <string>
@@ -11,6 +9,7 @@
 
 #include "io/expression.hpp"
 #include "io/mesh.hpp"
+#include "io/solver_settings.hpp"
 
 namespace grout {
 
@@ -137,7 +136,7 @@ struct Input {
   DynamicsInput dynamics;
   std::array<double, 3> gravity = {0.0, 0.0, 0.0};  ///< acceleration of gravity
   std::vector<InitialVelocityInput> initial_velocity;
-  Teuchos::RCP<Teuchos::ParameterList> solver;  ///< `solver` sublist, passed through
+  SolverSettings solver;  ///< `solver`: Newton, the linear solver, NOX/Belos/MueLu sublists
   OutputInput output;
 };
 

@@ -1,6 +1,10 @@
-// check_input_against_mesh: what the input names must exist in the mesh it points to.
+// check_input_against_mesh: what the input names must exist in the mesh it points to, and
+// every set it names must hold what its role needs: faces on the boundary, nodes.
 
+#include <algorithm>
+#include <array>
 #include <map>
+#include <unordered_map>
 
 #include "io/errors.hpp"
 #include "io/input.hpp"
@@ -36,25 +40,113 @@ class MeshCheck {
     }
     return *b;
   }
-  void side_set(const std::string& key_path, const std::string& name) const {
-    if (!mesh_.find_side_set(name)) {
+  /// The side set `name` of a load or a contact surface: it exists and has faces. That its
+  /// faces lie on the boundary is checked by boundary_faces(), for every such set at once.
+  void side_set(const std::string& key_path, const std::string& name) {
+    const SideSet* set = mesh_.find_side_set(name);
+    if (!set) {
       fail(key_path,
            "no side set '" + name + "' in " + mesh_name_ + " (" + names_of(mesh_.side_sets) + ")");
     }
+    if (set->elements.empty())
+      fail(key_path, "side set '" + name + "' in " + mesh_name_ + " is empty (it has no faces)");
+    face_sets_.push_back({key_path, set});
   }
+  /// The node set `name` of a Dirichlet condition: it exists and has nodes.
   void node_set(const std::string& key_path, const std::string& name) const {
-    if (!mesh_.find_node_set(name)) {
+    const NodeSet* set = mesh_.find_node_set(name);
+    if (!set) {
       fail(key_path,
            "no node set '" + name + "' in " + mesh_name_ + " (" + names_of(mesh_.node_sets) + ")");
     }
+    if (set->nodes.empty())
+      fail(key_path, "node set '" + name + "' in " + mesh_name_ + " is empty (it has no nodes)");
   }
+  /// Every face of the side sets passed to side_set() is a face of one element only: a face
+  /// that two elements share is inside the mesh, where a pressure or a contact surface has no
+  /// meaning (its load would act inside a body).
+  void boundary_faces() const;
   const std::string& mesh_name() const { return mesh_name_; }
 
  private:
   const Input& input_;
   const Mesh& mesh_;
   std::string mesh_name_;
+  std::vector<std::pair<std::string, const SideSet*>> face_sets_;  // (key path, set)
 };
+
+using FaceKey = std::array<GlobalIndex, max_side_nodes>;  // sorted node ids, -1 padded
+
+struct FaceKeyHash {
+  std::size_t operator()(const FaceKey& key) const {
+    std::size_t h = 0;
+    for (GlobalIndex n : key) h = h * 1000003u ^ std::hash<GlobalIndex>()(n);
+    return h;
+  }
+};
+
+/// The nodes of side `side` (1-based, Exodus) of `element` (global, 0-based), sorted; false
+/// when the element is in no block or the side is not one of its faces.
+bool face_key(const Mesh& mesh, GlobalIndex element, int side, FaceKey& key) {
+  const ElementBlock* block = mesh.block_of(element);
+  if (!block) return false;
+  int local[max_side_nodes];
+  const int n = side_local_nodes(block->topology, side, local);
+  if (n < 2) return false;
+  key.fill(-1);
+  const GlobalIndex e = element - block->first_element;
+  for (int a = 0; a < n; ++a) key[a] = block->connectivity[e * block->nodes_per_element + local[a]];
+  std::sort(key.begin(), key.begin() + n);
+  return true;
+}
+
+// The faces of the named sets, then one pass over the faces of every element, counting the
+// elements that have each: a boundary face has one.
+void MeshCheck::boundary_faces() const {
+  if (face_sets_.empty()) return;
+  struct Count {
+    int elements = 0;
+    GlobalIndex first = -1, second = -1;  // the first two elements that have the face
+  };
+  std::unordered_map<FaceKey, Count, FaceKeyHash> count;
+  FaceKey key;
+  for (const auto& [key_path, set] : face_sets_) {
+    for (std::size_t i = 0; i < set->elements.size(); ++i) {
+      if (!face_key(mesh_, set->elements[i], set->sides[i], key)) {
+        fail(key_path, "side set '" + set->name + "' has side " + std::to_string(set->sides[i]) +
+                           " of element " + std::to_string(set->elements[i] + 1) +
+                           ", which is not a face of an element of " + mesh_name_);
+      }
+      count.emplace(key, Count());
+    }
+  }
+  for (const ElementBlock& block : mesh_.blocks) {
+    const int sides = topology_num_sides(block.topology);
+    for (GlobalIndex e = 0; e < block.num_elements(); ++e) {
+      for (int side = 1; side <= sides; ++side) {
+        if (!face_key(mesh_, block.first_element + e, side, key)) continue;
+        const auto it = count.find(key);
+        if (it == count.end()) continue;
+        Count& c = it->second;
+        (c.elements == 0 ? c.first : c.second) = block.first_element + e;
+        ++c.elements;
+      }
+    }
+  }
+  for (const auto& [key_path, set] : face_sets_) {
+    for (std::size_t i = 0; i < set->elements.size(); ++i) {
+      face_key(mesh_, set->elements[i], set->sides[i], key);
+      const Count& c = count.at(key);
+      if (c.elements < 2) continue;
+      const GlobalIndex other = c.first == set->elements[i] ? c.second : c.first;
+      fail(key_path, "side set '" + set->name + "' in " + mesh_name_ + " holds side " +
+                         std::to_string(set->sides[i]) + " of element " +
+                         std::to_string(set->elements[i] + 1) + ", an interior face (element " +
+                         std::to_string(other + 1) +
+                         " has it too): a load or contact side set must lie on the boundary");
+    }
+  }
+}
 
 /// A pair and its reverse (slave and master swapped) constrain one interface twice: the two
 /// sets of multipliers are not independent and Newton stops at its iteration limit.
@@ -83,7 +175,7 @@ const MaterialInput* find_material(const Input& input, const ElementBlock& block
 
 void check_input_against_mesh(const Input& input, const Mesh& mesh) {
   check_mesh(mesh);
-  const MeshCheck check(input, mesh);
+  MeshCheck check(input, mesh);
   const int dim = input.model.dimension;
   if (mesh.dimension != dim) {
     check.fail("grout/model/dimension", "the model is " + std::to_string(dim) + "D but " +
@@ -142,6 +234,7 @@ void check_input_against_mesh(const Input& input, const Mesh& mesh) {
                                      " (a slave side belongs to one contact pair)");
     }
   }
+  check.boundary_faces();
   check_no_reverse_pairs(input, mesh, check);
 }
 

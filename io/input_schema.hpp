@@ -19,7 +19,10 @@ enum class ValueType {
   integer,     ///< a YAML integer
   number,      ///< a YAML integer or floating-point number
   expression,  ///< a YAML string or number, parsed by muParser
-  section      ///< a map of keys (a Teuchos sublist)
+  section,     ///< a map of keys (a Teuchos sublist)
+  boolean,     ///< true or false
+  array,       ///< a YAML sequence [a, b, ...] (passed through to a solver package)
+  any          ///< any value or section (passed through to a solver package, which checks it)
 };
 
 /// One key of a section. Built fluently: Key::number("youngs_modulus").above(0).required().
@@ -40,6 +43,9 @@ struct Key {
   static Key number(std::string name) { return make(std::move(name), ValueType::number); }
   static Key expression(std::string name) { return make(std::move(name), ValueType::expression); }
   static Key section(std::string name) { return make(std::move(name), ValueType::section); }
+  static Key boolean(std::string name) { return make(std::move(name), ValueType::boolean); }
+  static Key array(std::string name) { return make(std::move(name), ValueType::array); }
+  static Key any(std::string name) { return make(std::move(name), ValueType::any); }
   /// A string that must be one of `values`; `noun` names it in errors.
   static Key choice(std::string name, std::vector<std::string> values, std::string noun) {
     Key k = make(std::move(name), ValueType::string);
@@ -69,8 +75,9 @@ struct Key {
 };
 
 /// A validated section of the input. The constructor checks every key against the table
-/// (unknown keys, missing required keys, types, bounds, admitted values) and throws an
-/// InputError "<file>: <path>/<key>: <what is wrong>"; the getters then cannot fail.
+/// (unknown keys, with a "did you mean" for a near miss; missing required keys, types, bounds,
+/// admitted values) and throws an InputError "<file>: <path>/<key>: <what is wrong>" (without
+/// "<file>: " when `file` is empty); the getters then cannot fail.
 class Section {
  public:
   Section(const Teuchos::ParameterList& list, std::string path, std::string file,
@@ -78,9 +85,11 @@ class Section {
 
   const std::string& path() const { return path_; }
   const std::string& file() const { return file_; }
+  const std::vector<Key>& keys() const { return keys_; }
+  const Teuchos::ParameterList& list() const { return list_; }
   /// The last component of the path: the user's name of a material, condition, pair, ...
   std::string name() const;
-  /// "<file>: <path>/<key>", the prefix of an error about `key`.
+  /// "<file>: <path>/<key>" ("<path>/<key>" without a file), the prefix of an error about `key`.
   std::string where(const std::string& key) const;
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
 
@@ -89,6 +98,7 @@ class Section {
   int integer(const std::string& key) const;
   double number(const std::string& key) const;
   Expression expression(const std::string& key) const;
+  bool boolean(const std::string& key) const;
   /// The sublist `key` (an empty list when absent) validated against `keys`.
   Section section(const std::string& key, std::vector<Key> keys) const;
   /// The sublist `key` itself, unvalidated (an empty list when absent).

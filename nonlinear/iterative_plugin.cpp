@@ -4,11 +4,13 @@
 #include <BelosSolverFactory.hpp>
 #include <BelosTpetraAdapter.hpp>
 #include <MueLu_CreateTpetraPreconditioner.hpp>
+#include <MueLu_MasterList.hpp>
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <set>
 #include <stdexcept>
 
 #include "nonlinear/elasticity_preconditioner.hpp"
@@ -57,6 +59,23 @@ class BelosMueLuSolver : public IterativeSolver {
       return e.what();
     }
     return "";
+  }
+  std::vector<std::string> belos_parameter_names() const override {
+    std::set<std::string> names;
+    for (const std::string& solver : Factory().supportedSolverNames()) {
+      try {  // a solver that cannot be built on Tpetra (STOCHASTIC CG) has no parameters here
+        const auto valid = Factory().create(solver, Teuchos::null)->getValidParameters();
+        for (auto it = valid->begin(); it != valid->end(); ++it) names.insert(valid->name(it));
+      } catch (const std::exception&) {
+      }
+    }
+    return std::vector<std::string>(names.begin(), names.end());
+  }
+  std::vector<std::string> muelu_parameter_names() const override {
+    const auto valid = MueLu::MasterList::List();
+    std::set<std::string> names;
+    for (auto it = valid->begin(); it != valid->end(); ++it) names.insert(valid->name(it));
+    return std::vector<std::string>(names.begin(), names.end());
   }
 
  private:

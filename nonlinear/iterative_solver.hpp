@@ -50,11 +50,16 @@ class IterativeSolver {
   /// Empty if Belos accepts the parameters `belos` for solver `name`, otherwise its message.
   virtual std::string belos_rejects(const std::string& name,
                                     const Teuchos::ParameterList& belos) const = 0;
+  /// The parameter names of every Belos solver (each solver manager's getValidParameters()),
+  /// and MueLu's (MueLu::MasterList::List()), sorted: what io/solver_parameters.hpp's
+  /// allow-lists are checked against.
+  virtual std::vector<std::string> belos_parameter_names() const = 0;
+  virtual std::vector<std::string> muelu_parameter_names() const = 0;
 };
 
 /// Bumped whenever IterativeSolver or IterativeSettings change: a module built from other
 /// sources refuses to create a solver (the loader then tries the next directory).
-constexpr int iterative_solver_interface_version = 1;
+constexpr int iterative_solver_interface_version = 2;
 
 }  // namespace grout
 

@@ -17,18 +17,15 @@
 namespace grout {
 
 struct LinearSolver::Impl {
-  std::string type;
-  Teuchos::ParameterList belos;
-  Teuchos::ParameterList muelu;
+  LinearSolverSettings settings;
+  std::string type;  // linear_solver_type_name(settings.type)
   std::string belos_type = "CG";
   std::unique_ptr<MumpsSolver> mumps;  // type: mumps
   // LDLᵀ of the symmetric reductions (symmetric_condensation.hpp), kept apart from `mumps` so
   // that each keeps its analysis while its pattern does not change.
   std::unique_ptr<MumpsSolver> mumps_symmetric;
   bool last_symmetric = false;
-  MumpsOptions mumps_options;
-  MumpsOptions gathered_options;  // mumps_options for the gathered solves (ordering: amd)
-  bool mumps_given = false;       // a `MUMPS` sublist was given
+  MumpsOptions gathered_options;  // settings.mumps for the gathered solves (ordering: amd)
   // Rank 0's 1-rank communicator for the gathered direct solves (split from `parent` once:
   // MUMPS keeps its analysis per communicator).
   Teuchos::RCP<const Comm> parent, self;
@@ -42,14 +39,11 @@ struct LinearSolver::Impl {
     return self;
   }
   // --- condensed multipliers ---
-  bool belos_type_given = false;
-  bool condense = false, condense_given = false;
   std::vector<std::pair<GO, GO>> pairing;
   int dofs_per_node = 1;
   // --- end condensed multipliers ---
   std::vector<double> coordinates;
   std::vector<int> bodies;  // body index per node; empty: one body
-  bool reuse_preconditioner = false;
   // The iterative path (type: belos), from the module grout_iterative loaded at the first
   // iterative solve (iterative_module.hpp); it keeps the MueLu hierarchy between solves.
   std::unique_ptr<IterativeSolver> iterative;
@@ -66,8 +60,8 @@ struct LinearSolver::Impl {
   // for the (u, λ) system, 0.68x of its time (docs/performance.md, "Condensed, symmetric
   // and Schur-updated direct solves"). The gathered direct solves (2D) keep the (u, λ) system.
   bool condenses(const std::string& type) const {
-    if (condense_given) return condense;
-    return type == "belos" || (type == "mumps" && !mumps_options.gather);
+    if (settings.condense_multipliers) return *settings.condense_multipliers;
+    return type == "belos" || (type == "mumps" && !settings.mumps.gather);
   }
 };
 
@@ -104,69 +98,42 @@ std::string auto_linear_solver_type(long long global_unknowns, int dim) {
   return default_direct_type(dim);
 }
 
-LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::string& where)
-    : impl_(std::make_unique<Impl>()) {
-  impl_->type = params.isParameter("type") ? params.get<std::string>("type") : "auto";
-  if (impl_->type != "auto" && impl_->type != "mumps" && impl_->type != "amesos2" &&
-      impl_->type != "belos") {
-    throw InputError(where + "/type: unknown linear solver '" + impl_->type +
-                     "' (expected: auto, mumps, amesos2, belos)");
-  }
-  const Teuchos::ParameterList mumps =
-      params.isSublist("MUMPS") ? params.sublist("MUMPS") : Teuchos::ParameterList();
-  impl_->mumps_options = mumps_options_from(mumps, where + "/MUMPS");
-  impl_->mumps_given = params.isSublist("MUMPS");
+LinearSolver::LinearSolver(LinearSolverSettings settings) : impl_(std::make_unique<Impl>()) {
+  impl_->settings = std::move(settings);
+  const LinearSolverSettings& s = impl_->settings;
+  impl_->type = linear_solver_type_name(s.type);
   // The gathered solve orders with AMD unless told otherwise: on 2D Hertz (19 k and 75 k
   // unknowns) SCOTCH's nested dissection cost more in its analyses than it saved in the
   // factorisations (docs/performance.md, "2D speed and the demo on 2 ranks").
-  impl_->gathered_options = impl_->mumps_options;
+  impl_->gathered_options = s.mumps;
   impl_->gathered_options.gather = true;
-  if (!mumps.isParameter("ordering")) impl_->gathered_options.ordering = "amd";
-  if (params.isSublist("Belos")) impl_->belos = params.sublist("Belos");
-  if (params.isSublist("MueLu")) impl_->muelu = params.sublist("MueLu");
-  // --- condensed multipliers ---
-  if (params.isParameter("condense_multipliers")) {
-    if (!params.isType<bool>("condense_multipliers"))
-      throw InputError(where + "/condense_multipliers: expected true or false");
-    impl_->condense = params.get<bool>("condense_multipliers");
-    impl_->condense_given = true;
-  }
-  if (params.isParameter("reuse_preconditioner")) {
-    if (!params.isType<bool>("reuse_preconditioner"))
-      throw InputError(where + "/reuse_preconditioner: expected true or false");
-    impl_->reuse_preconditioner = params.get<bool>("reuse_preconditioner");
-  }
-  impl_->belos_type_given = impl_->belos.isParameter("Solver Type");
-  // --- end condensed multipliers ---
-  if (impl_->belos_type_given && !impl_->belos.isType<std::string>("Solver Type"))
-    throw InputError(where + "/Belos/Solver Type: expected the name of a Belos solver");
-  impl_->belos_type = impl_->belos.get<std::string>("Solver Type", "CG");
-  impl_->belos.remove("Solver Type", false);
+  if (!s.mumps_ordering_given) impl_->gathered_options.ordering = "amd";
+  if (!s.belos_solver.empty()) impl_->belos_type = s.belos_solver;
   // Belos names its own solvers (case-insensitive): ask it, so that a misspelt name is an
   // input error here and not an exception from inside Belos at the first solve. Asking
   // loads the iterative module: done when the input asks for the iterative path or has Belos
   // settings to check, so that an installation without the module fails before any step.
-  if (impl_->belos_type_given || impl_->type == "belos") {
+  if (!s.belos_solver.empty() || s.type == LinearSolverType::belos) {
     IterativeSolver& belos = impl_->iterative_solver();
     if (!belos.is_belos_solver(impl_->belos_type)) {
       std::string names;
       for (const std::string& name : belos.belos_solver_names())
         names += (names.empty() ? "" : ", ") + name;
-      throw InputError(where + "/Belos/Solver Type: unknown Belos solver '" + impl_->belos_type +
+      throw InputError(s.where + "/Belos/Solver Type: unknown Belos solver '" + impl_->belos_type +
                        "' (Belos has: " + names + ")");
     }
     // Belos checks the names and values of its parameters when it sets them.
-    if (impl_->type == "belos") {
-      const std::string rejected = belos.belos_rejects(impl_->belos_type, impl_->belos);
+    if (s.type == LinearSolverType::belos) {
+      const std::string rejected = belos.belos_rejects(impl_->belos_type, s.belos);
       if (!rejected.empty())
-        throw InputError(where +
+        throw InputError(s.where +
                          "/Belos: Belos rejects these settings: " + without_source_paths(rejected));
     }
   }
-  if (!impl_->belos.isParameter("Convergence Tolerance"))
-    impl_->belos.set("Convergence Tolerance", 1e-12);
-  if (!impl_->belos.isParameter("Maximum Iterations")) impl_->belos.set("Maximum Iterations", 2000);
 }
+
+LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::string& where)
+    : LinearSolver(linear_solver_settings_from(params, where)) {}
 
 LinearSolver::~LinearSolver() = default;
 
@@ -211,19 +178,20 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
                          ? impl_->type
                          : auto_linear_solver_type((long long)K->getGlobalNumRows(), dim);
   // A `MUMPS` sublist asks for MUMPS: auto then keeps it for the smallest 2D systems too.
-  if (impl_->type == "auto" && type == "amesos2" && impl_->mumps_given)
+  if (impl_->type == "auto" && type == "amesos2" && impl_->settings.mumps_given)
     type = default_direct_type(dim);
   impl_->last_type = type;
   impl_->last_symmetric = false;
   if (!impl_->condenses(type) || impl_->pairing.empty())
-    return solve_system(K, b, x, type, impl_->belos_type_given ? impl_->belos_type : "CG");
+    return solve_system(K, b, x, type,
+                        impl_->settings.belos_solver.empty() ? "CG" : impl_->belos_type);
   // The distributed MUMPS path first tries the symmetric (null-space) reduction: for
   // frictionless or tied contact with a fixed pairing and a symmetric stiffness it gives a
   // symmetric positive (semi)definite K̃, factorised as LDLᵀ with about half the flops of the
   // LU of the condensed system (docs/performance.md, "Condensed, symmetric and
   // Schur-updated direct solves"). Anything else (slip, geometry: current) fails its checks
   // and takes the condensation below.
-  if (type == "mumps" && !impl_->mumps_options.gather) {
+  if (type == "mumps" && !impl_->settings.mumps.gather) {
     SymmetricCondensation reduction(impl_->pairing, impl_->dofs_per_node);
     bool applies = false;
     {
@@ -235,7 +203,7 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
       Teuchos::TimeMonitor solve_timer(
           *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: symmetric MUMPS"));
       if (!impl_->mumps_symmetric) {
-        MumpsOptions options = impl_->mumps_options;
+        MumpsOptions options = impl_->settings.mumps;
         options.symmetric = true;
         // K̃ is SPD and changes between Newton iterations only near the contact interface.
         options.schur_updates = true;
@@ -262,7 +230,7 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
       condensation.statistics().zero_diagonals > 0
           ? solve_system(condensation.matrix(), condensation.rhs(), y, default_direct_type(dim), "")
           : solve_system(condensation.matrix(), condensation.rhs(), y, type,
-                         impl_->belos_type_given ? impl_->belos_type : "GMRES");
+                         impl_->settings.belos_solver.empty() ? "GMRES" : impl_->belos_type);
   condensation.expand(y, x);
   return iterations;
 }
@@ -278,10 +246,10 @@ int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector
     return 1;
   }
   if (type == "mumps" || type == "mumps_gathered") {
-    const bool gather = type == "mumps_gathered" || impl_->mumps_options.gather;
+    const bool gather = type == "mumps_gathered" || impl_->settings.mumps.gather;
     if (!impl_->mumps)
       impl_->mumps =
-          std::make_unique<MumpsSolver>(gather ? impl_->gathered_options : impl_->mumps_options);
+          std::make_unique<MumpsSolver>(gather ? impl_->gathered_options : impl_->settings.mumps);
     if (!gather) {
       impl_->mumps->solve(K, b, x);
       return 1;
@@ -297,8 +265,12 @@ int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector
   }
 
   // Belos + MueLu, in the module grout_iterative (loaded here at the first iterative solve).
-  const IterativeSettings settings{impl_->belos, impl_->muelu,       impl_->reuse_preconditioner,
-                                   impl_->dim,   impl_->coordinates, impl_->bodies};
+  const IterativeSettings settings{impl_->settings.belos,
+                                   impl_->settings.muelu,
+                                   impl_->settings.reuse_preconditioner,
+                                   impl_->dim,
+                                   impl_->coordinates,
+                                   impl_->bodies};
   return impl_->iterative_solver().solve(K, b, x, belos_type, settings);
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// Linear solves K x = b, chosen by the `solver/Linear Solver` sublist:
+// Linear solves K x = b, chosen by the `solver/Linear Solver` sublist (read and validated by
+// io/solver_settings.hpp into LinearSolverSettings):
 //   type: auto (default)     the direct solver default_direct_type(dim) (MUMPS in 3D; in 2D
 //                            MUMPS on the system gathered to rank 0, "mumps_gathered") for a
 //                            system of fewer than auto_iterative_threshold(dim) global
@@ -51,6 +52,7 @@
 #include <vector>
 
 #include "assembly/tpetra_types.hpp"
+#include "io/solver_settings.hpp"
 
 namespace grout {
 
@@ -67,8 +69,12 @@ std::string auto_linear_solver_type(long long global_unknowns, int dim);
 
 class LinearSolver {
  public:
-  /// `params` is the `Linear Solver` sublist (may be empty). Throws InputError on an
-  /// unknown type.
+  /// A solver with `settings` (io/solver_settings.hpp). Asks Belos (loading the iterative
+  /// module) whether it has `belos_solver` and, with type belos, whether that solver takes the
+  /// `Belos` keys; throws InputError naming `settings.where` when not.
+  explicit LinearSolver(LinearSolverSettings settings);
+  /// The same with the settings read from a `Linear Solver` sublist (may be empty), named
+  /// `where` in errors (linear_solver_settings_from).
   LinearSolver(const Teuchos::ParameterList& params, const std::string& where);
   ~LinearSolver();
 

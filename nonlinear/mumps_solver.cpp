@@ -20,32 +20,6 @@
 
 namespace grout {
 
-MumpsOptions mumps_options_from(const Teuchos::ParameterList& params, const std::string& where) {
-  MumpsOptions options;
-  for (auto it = params.begin(); it != params.end(); ++it) {
-    const std::string& key = params.name(it);
-    if (key == "ordering") {
-      if (!params.isType<std::string>(key)) throw InputError(where + "/ordering: expected a name");
-      options.ordering = params.get<std::string>(key);
-      if (options.ordering != "scotch" && options.ordering != "ptscotch" &&
-          options.ordering != "amd" && options.ordering != "pord") {
-        throw InputError(where + "/ordering: unknown ordering '" + options.ordering +
-                         "' (expected: scotch, ptscotch, amd, pord)");
-      }
-    } else if (key == "symmetric") {
-      if (!params.isType<bool>(key)) throw InputError(where + "/symmetric: expected true or false");
-      options.symmetric = params.get<bool>(key);
-    } else if (key == "gather") {
-      if (!params.isType<bool>(key)) throw InputError(where + "/gather: expected true or false");
-      options.gather = params.get<bool>(key);
-    } else {
-      throw InputError("unknown key " + where + "/" + key +
-                       " (expected: ordering, symmetric, gather)");
-    }
-  }
-  return options;
-}
-
 namespace {
 
 bool user_set_blas_threads() {

@@ -11,40 +11,13 @@
 // pattern and reused while only the values change (Newton iterations with an unchanged active set);
 // the numeric factorisation is reused while the values do not change either.
 
-#include <Teuchos_ParameterList.hpp>
 #include <memory>
 #include <string>
 
 #include "assembly/tpetra_types.hpp"
+#include "io/solver_settings.hpp"  // MumpsOptions, read from the `MUMPS` sublist
 
 namespace grout {
-
-/// Options of the `Linear Solver/MUMPS` sublist.
-struct MumpsOptions {
-  /// Fill-reducing ordering: scotch (SCOTCH on the gathered graph, ICNTL(7) = 3), ptscotch
-  /// (parallel PT-SCOTCH, ICNTL(28) = 2, ICNTL(29) = 1; same as scotch on one rank), amd
-  /// (ICNTL(7) = 0) or pord (ICNTL(7) = 4).
-  std::string ordering = "scotch";
-  /// true: the matrix is symmetric (MUMPS sym = 2, LDLᵀ of the lower triangle, about half
-  /// the work). Only for a matrix known to be symmetric; false (sym = 0, LU) is always safe.
-  bool symmetric = false;
-  /// true: the system is gathered to rank 0 and factorised there on one BLAS thread
-  /// (LinearSolver, `gather`): MUMPS then sees the same matrix and does the same operations in
-  /// the same order on any number of ranks, so the answer is the same bit for bit. false: each
-  /// rank hands MUMPS its rows (the fronts are factorised on all ranks; rounding differs).
-  bool gather = false;
-  /// true (symmetric positive definite matrices only; LinearSolver sets it for the symmetric
-  /// reduction, it is no input key): when a new matrix differs from the last factorised one
-  /// only in rows that an analysis put into the Schur set, solve it with a dense update of
-  /// the Schur complement instead of a new factorisation (schur_update.hpp). The Schur set is
-  /// chosen at an analysis that the pattern requires anyway: the rows that changed since the
-  /// last factorisation, joined to the previous set, while its dense Cholesky factorisation
-  /// costs at most half a sparse one.
-  bool schur_updates = false;
-};
-
-/// Reads the `MUMPS` sublist; throws InputError naming `where` + key on a bad value.
-MumpsOptions mumps_options_from(const Teuchos::ParameterList& params, const std::string& where);
 
 /// Counters of what the solver did (for tests and benchmarks).
 struct MumpsStatistics {

@@ -3,39 +3,15 @@
 // Newton whose convergence needs the residual tolerance AND an unchanged active set.
 // NOX itself stays inside nonlinear/*.cpp; this header is NOX-free.
 
-#include <Teuchos_ParameterList.hpp>
 #include <string>
 #include <vector>
 
 #include "assembly/tpetra_types.hpp"
+#include "io/solver_settings.hpp"  // NewtonOptions, read from the `Newton` and `NOX` sublists
 #include "nonlinear/linear_solver.hpp"
 #include "nonlinear/nonlinear_problem.hpp"
 
 namespace grout {
-
-struct NewtonOptions {
-  int max_iterations = 25;
-  double absolute_tolerance = 1e-10;  ///< converged if ‖F‖₂ ≤ this ...
-  double relative_tolerance = 1e-10;  ///< ... or ‖F‖₂ / ‖F(x₀)‖₂ < this
-  double floor_factor = 10.0;  ///< ... or ‖F‖₂ ≤ this · residual_floor() (round-off; 0 = off)
-  double update_tolerance = 0.0;          ///< and, if > 0, ‖Δx‖_∞ < this
-  std::string line_search = "Full Step";  ///< NOX name: "Full Step", "Backtrack", "Polynomial"
-  /// The line search of the retries of a step whose Newton solve failed (and of its
-  /// cut-backs), when `line_search` is the default full step and the input chose none
-  /// (Newton/line_search, or NOX's Line Search sublist); empty: none (load_stepping.hpp).
-  std::string fallback_line_search = "Backtrack";
-  bool require_unchanged_active_set = true;  ///< and no active-set change at the iterate
-  bool verbose = true;                       ///< one log line per iteration on rank 0
-  Teuchos::ParameterList nox;                ///< passed to NOX, merged over Grout's defaults
-  std::string where = "grout/solver";        ///< "<input file>: grout/solver", for errors
-};
-
-/// Reads the optional `Newton` sublist of the `solver` sublist (keys max_iterations,
-/// absolute_tolerance, relative_tolerance, floor_factor, update_tolerance, line_search,
-/// require_unchanged_active_set) and the optional `NOX` sublist (passed through). Throws
-/// InputError naming "<file>: grout/solver/Newton/<key>" on an unknown key or a bad value.
-NewtonOptions newton_options_from(const Teuchos::ParameterList& solver_sublist,
-                                  const std::string& file = "");
 
 struct NewtonReport {
   bool converged = false;

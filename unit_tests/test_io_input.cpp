@@ -97,7 +97,8 @@ grout:
   time: {end: 2, steps: 10, stepping: adaptive, max_step_size: 0.5}
   solver:
     NOX: {Nonlinear Solver: Line Search Based}
-    Linear Solver: {type: amesos2, tolerance: 1.0e-10}
+    Newton: {max_iterations: 30, relative_tolerance: 1.0e-8}
+    Linear Solver: {type: amesos2}
   output: {file: out/patch.e, summary: /tmp/patch_summary.csv}
 ...
 )yaml";
@@ -170,10 +171,11 @@ TEST(InputRead, FullInputGivesEveryValue) {
   EXPECT_TRUE(in.time.adaptive);
   EXPECT_EQ(in.time.max_step_size, 0.5);
 
-  ASSERT_FALSE(in.solver.is_null());
-  EXPECT_EQ(in.solver->sublist("NOX").get<std::string>("Nonlinear Solver"), "Line Search Based");
-  EXPECT_EQ(in.solver->sublist("Linear Solver").get<std::string>("type"), "amesos2");
-  EXPECT_EQ(in.solver->sublist("Linear Solver").get<double>("tolerance"), 1e-10);
+  EXPECT_EQ(in.solver.newton.nox.get<std::string>("Nonlinear Solver"), "Line Search Based");
+  EXPECT_EQ(in.solver.newton.max_iterations, 30);
+  EXPECT_EQ(in.solver.newton.relative_tolerance, 1e-8);
+  EXPECT_EQ(in.solver.linear.type, LinearSolverType::amesos2);
+  EXPECT_EQ(in.solver.linear.where, path + ": grout/solver/Linear Solver");
 
   EXPECT_EQ(in.output.file, dir + "/out/patch.e");
   EXPECT_EQ(in.output.summary, "/tmp/patch_summary.csv");  // absolute paths stay
@@ -194,8 +196,10 @@ TEST(InputRead, MinimalInputGetsDefaults) {
   EXPECT_EQ(in.time.end, 1.0);
   EXPECT_EQ(in.time.steps, 1);
   EXPECT_FALSE(in.time.adaptive);
-  ASSERT_FALSE(in.solver.is_null());
-  EXPECT_EQ(in.solver->numParams(), 0);
+  EXPECT_EQ(in.solver.newton.max_iterations, 25);
+  EXPECT_EQ(in.solver.linear.type, LinearSolverType::automatic);
+  EXPECT_EQ(in.solver.newton.nox.numParams(), 0);
+  EXPECT_EQ(in.solver.linear.muelu.numParams(), 0);
   EXPECT_EQ(in.output.file, dir + "/case.e");
   EXPECT_EQ(in.output.summary, dir + "/case.csv");
 }
@@ -287,7 +291,8 @@ TEST(InputExpression, NonFiniteValuesAndAssignmentsNameTheKey) {
 
 TEST(InputErrors, SolverSublistsAndIntegerRange) {
   expect_bad_input("misspelt_solver", minimal + "  solver:\n    Newtn: {max_iterations: 3}\n",
-                   {"grout/solver/Newtn: unknown key (known: Newton, NOX, Linear Solver)"});
+                   {"grout/solver: unknown key 'Newtn' (expected one of: Newton, NOX, Linear "
+                    "Solver); did you mean 'Newton'?"});
   expect_bad_input("huge_steps", minimal + "  time: {steps: 99999999999}\n",
                    {"grout/time/steps: ", "integer '99999999999' (out of range"});
   try {
@@ -454,20 +459,37 @@ Mesh two_block_mesh() {
   Mesh mesh;
   mesh.file = "mesh.exo";
   mesh.dimension = 2;
+  // The die, element 1 (nodes 5-8), on top of the block, element 2 (nodes 1-4): unit squares.
+  mesh.coordinates = {0, 0, 1, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 2, 0, 2};
   mesh.blocks.resize(2);
   mesh.blocks[0].name = "die";
   mesh.blocks[0].id = 1;
+  mesh.blocks[0].connectivity = {4, 5, 6, 7};
   mesh.blocks[1].name = "block";
   mesh.blocks[1].id = 2;
-  for (const char* name : {"die_bottom", "block_top", "top"}) {
+  mesh.blocks[1].first_element = 1;
+  mesh.blocks[1].connectivity = {0, 1, 2, 3};
+  for (ElementBlock& b : mesh.blocks) {
+    b.topology = Topology::quad4;
+    b.nodes_per_element = 4;
+  }
+  // (element, Exodus side): quad side 1 is nodes 1-2, side 3 nodes 3-4.
+  const std::vector<std::pair<const char*, std::pair<GlobalIndex, int>>> sides = {
+      {"die_bottom", {0, 1}}, {"block_top", {1, 3}}, {"top", {0, 3}}};
+  for (const auto& [name, side] : sides) {
     mesh.side_sets.emplace_back();
     mesh.side_sets.back().name = name;
     mesh.side_sets.back().id = int(mesh.side_sets.size());
+    mesh.side_sets.back().elements = {side.first};
+    mesh.side_sets.back().sides = {side.second};
   }
-  for (const char* name : {"bottom", "left"}) {
+  const std::vector<std::pair<const char*, std::vector<GlobalIndex>>> nodes = {
+      {"bottom", {0, 1}}, {"left", {0, 3, 4, 7}}};
+  for (const auto& [name, list] : nodes) {
     mesh.node_sets.emplace_back();
     mesh.node_sets.back().name = name;
     mesh.node_sets.back().id = int(mesh.node_sets.size());
+    mesh.node_sets.back().nodes = list;
   }
   return mesh;
 }
@@ -516,6 +538,56 @@ TEST(InputMeshCheck, MissingEntitiesAreNamed) {
                      "(it has: die, block)"});
 }
 
+// A set that exists but cannot hold its role: an empty load, contact or Dirichlet set, or a
+// load or contact side set with a face inside the mesh (one check for every such set).
+TEST(InputMeshCheck, SetsHoldWhatTheirRoleNeeds) {
+  const auto emptied = [](const std::string& name) {
+    Mesh mesh = two_block_mesh();
+    for (SideSet& set : mesh.side_sets) {
+      if (set.name == name) set.elements.clear(), set.sides.clear();
+    }
+    for (NodeSet& set : mesh.node_sets) {
+      if (set.name == name) set.nodes.clear();
+    }
+    return mesh;
+  };
+  expect_mesh_error("empty_load", on_mesh, emptied("top"),
+                    {"grout/loads/top/side_set: side set 'top' in mesh 'mesh.exo' is empty (it "
+                     "has no faces)"});
+  expect_mesh_error("empty_slave", on_mesh, emptied("die_bottom"),
+                    {"grout/contact/interface/slave: side set 'die_bottom' in mesh 'mesh.exo' is "
+                     "empty (it has no faces)"});
+  expect_mesh_error("empty_master", on_mesh, emptied("block_top"),
+                    {"grout/contact/interface/master: side set 'block_top' in mesh 'mesh.exo' is "
+                     "empty"});
+  expect_mesh_error("empty_dirichlet", on_mesh, emptied("left"),
+                    {"grout/dirichlet/left_x/node_set: node set 'left' in mesh 'mesh.exo' is "
+                     "empty (it has no nodes)"});
+
+  // The die glued onto the block (it shares the block's top nodes 3 and 4): the die's bottom
+  // face is then inside one body.
+  Mesh glued = two_block_mesh();
+  glued.blocks[0].connectivity = {3, 2, 6, 7};
+  const std::string no_contact = replaced(
+      on_mesh,
+      "  contact:\n    interface: {slave: die_bottom, master: block_top, type: frictionless}\n",
+      "");
+  expect_mesh_error("interior_load", replaced(no_contact, "side_set: top", "side_set: die_bottom"),
+                    glued,
+                    {"grout/loads/top/side_set: side set 'die_bottom' in mesh 'mesh.exo' holds "
+                     "side 1 of element 1, an interior face (element 2 has it too): a load or "
+                     "contact side set must lie on the boundary"});
+  expect_mesh_error("interior_contact", on_mesh, glued,
+                    {"grout/contact/interface/slave: side set 'die_bottom' in mesh 'mesh.exo' "
+                     "holds side 1 of element 1, an interior face (element 2 has it too)"});
+  // A side number that is no face of the element.
+  Mesh bad_side = two_block_mesh();
+  bad_side.side_sets[2].sides = {7};
+  expect_mesh_error("bad_side", on_mesh, bad_side,
+                    {"grout/loads/top/side_set: side set 'top' has side 7 of element 1, which is "
+                     "not a face of an element of mesh 'mesh.exo'"});
+}
+
 TEST(InputMeshCheck, OneMaterialPerBlock) {
   const Mesh mesh = two_block_mesh();
   const std::string one = replaced(on_mesh,
@@ -530,8 +602,12 @@ TEST(InputMeshCheck, OneMaterialPerBlock) {
 }
 
 TEST(InputMeshCheck, DimensionsMustAgree) {
-  Mesh mesh3 = two_block_mesh();
+  Mesh mesh3 = two_block_mesh();  // its 2D elements and sets dropped: a 3D mesh of no elements
   mesh3.dimension = 3;
+  mesh3.coordinates.clear();
+  for (ElementBlock& b : mesh3.blocks) b.connectivity.clear();
+  mesh3.side_sets.clear();
+  mesh3.node_sets.clear();
   expect_mesh_error("dimension_mismatch", on_mesh, mesh3,
                     {"grout/model/dimension: the model is 2D but mesh 'mesh.exo' is 3D"});
 
