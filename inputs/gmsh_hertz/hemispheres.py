@@ -2,14 +2,18 @@
 """Two hemispheres touching at one point, quarter model, meshed by gmsh (TET4, graded towards
 the contact point), written as Exodus.
 
-Usage: hemispheres.py OUTPUT.exo [--contact-size H] [--far-size H]
+Usage: hemispheres.py OUTPUT.exo [--radius R] [--contact-size H] [--far-size H]
+                       [--fine-within D0] [--grade-to D1]
 
-Lower: ball of radius R = 1 centred at (0, 0, 0), z >= 0, flat face z = 0 ("lower_bottom"),
-spherical face "lower_contact". Upper: centred at (0, 0, 2), z <= 2, flat face z = 2
-("upper_top"), spherical face "upper_contact". Both apexes at (0, 0, 1). Quarter x >= 0,
-y >= 0: symmetry faces "x0" (x = 0) and "y0" (y = 0) of both bodies. Element size H (default
-0.03) within distance 0.25 of the apex, growing linearly to the far size (default 0.3) at
-distance 1. Blocks "lower", "upper".
+Lower: ball of radius R (default 1) centred at (0, 0, 0), z >= 0, flat face z = 0
+("lower_bottom"), spherical face "lower_contact". Upper: centred at (0, 0, 2R), z <= 2R, flat
+face z = 2R ("upper_top"), spherical face "upper_contact". Both apexes at (0, 0, R). Quarter
+x >= 0, y >= 0: symmetry faces "x0" (x = 0) and "y0" (y = 0) of both bodies. Element size H
+(default 0.03) within distance D0 (default 0.25 R) of the apex, growing linearly to the far
+size (default 0.3) at distance D1 (default R); with --rim-size H2 the flat faces' curved
+edges are meshed at H2, growing to the far size over a distance of the far size (a load on
+the flat face then sums to q pi R^2 / 4 to the polygon's (H2/R)^2/24). Blocks "lower",
+"upper".
 """
 import argparse
 import os
@@ -21,10 +25,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from exodus_mesh import MeshError, write_exodus  # noqa: E402
 from gmsh_to_exodus import model_to_mesh  # noqa: E402
 
-R = 1.0
-
-
-def quarter_hemisphere(zc, up):
+def quarter_hemisphere(R, zc, up):
     """Volume tag of the quarter ball of centre (0, 0, zc) with z >= zc (up) or z <= zc."""
     occ = gmsh.model.occ
     ball = occ.addSphere(0, 0, zc, R)
@@ -49,9 +50,20 @@ def classify(volume, zc, up):
     return flat, sphere, x0, y0
 
 
-def build(h_contact, h_far):
-    lower = quarter_hemisphere(0.0, True)
-    upper = quarter_hemisphere(2 * R, False)
+def rim_arcs(flat_faces):
+    """The curved edges of the flat faces (the quarter circles; the other edges are straight,
+    on x = 0 or y = 0)."""
+    arcs = []
+    for _, c in gmsh.model.getBoundary([(2, s) for s in flat_faces], oriented=False):
+        xmin, ymin, _, xmax, ymax, _ = gmsh.model.getBoundingBox(1, c)
+        if xmax - xmin > 1e-5 and ymax - ymin > 1e-5:
+            arcs.append(c)
+    return arcs
+
+
+def build(R, h_contact, h_far, d_fine, d_grade, h_rim):
+    lower = quarter_hemisphere(R, 0.0, True)
+    upper = quarter_hemisphere(R, 2 * R, False)
     gmsh.model.occ.synchronize()
     lf, ls, lx, ly = classify(lower, 0.0, True)
     uf, us, ux, uy = classify(upper, 2 * R, False)
@@ -71,8 +83,21 @@ def build(h_contact, h_far):
     f.setNumber(thr, "InField", dist)
     f.setNumber(thr, "SizeMin", h_contact)
     f.setNumber(thr, "SizeMax", h_far)
-    f.setNumber(thr, "DistMin", 0.25 * R)
-    f.setNumber(thr, "DistMax", R)
+    f.setNumber(thr, "DistMin", d_fine)
+    f.setNumber(thr, "DistMax", d_grade)
+    if h_rim:
+        rim = f.add("Distance")
+        f.setNumbers(rim, "CurvesList", rim_arcs(lf + uf))
+        f.setNumber(rim, "NumPointsPerCurve", 200)
+        rim_thr = f.add("Threshold")
+        f.setNumber(rim_thr, "InField", rim)
+        f.setNumber(rim_thr, "SizeMin", h_rim)
+        f.setNumber(rim_thr, "SizeMax", h_far)
+        f.setNumber(rim_thr, "DistMin", 0.0)
+        f.setNumber(rim_thr, "DistMax", h_far)
+        both = f.add("Min")
+        f.setNumbers(both, "FieldsList", [thr, rim_thr])
+        thr = both
     f.setAsBackgroundMesh(thr)
     gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
     gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
@@ -83,17 +108,25 @@ def build(h_contact, h_far):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("output")
+    ap.add_argument("--radius", type=float, default=1.0)
     ap.add_argument("--contact-size", type=float, default=0.03)
     ap.add_argument("--far-size", type=float, default=0.3)
+    ap.add_argument("--fine-within", type=float, help="default 0.25 R")
+    ap.add_argument("--grade-to", type=float, help="default R")
+    ap.add_argument("--rim-size", type=float, help="element size on the flat faces' curved "
+                    "edges (default: the far size)")
     a = ap.parse_args()
-    if not (a.contact_size > 0 and a.far_size >= a.contact_size):
-        print("hemispheres.py: error: need 0 < --contact-size <= --far-size", file=sys.stderr)
+    d_fine = 0.25 * a.radius if a.fine_within is None else a.fine_within
+    d_grade = a.radius if a.grade_to is None else a.grade_to
+    if not (a.radius > 0 and 0 < a.contact_size <= a.far_size and 0 < d_fine < d_grade):
+        print("hemispheres.py: error: need --radius > 0, 0 < --contact-size <= --far-size and "
+              "0 < --fine-within < --grade-to", file=sys.stderr)
         return 2
     gmsh.initialize()
     try:
         gmsh.option.setNumber("General.Terminal", 0)
         gmsh.model.add("hemispheres")
-        build(a.contact_size, a.far_size)
+        build(a.radius, a.contact_size, a.far_size, d_fine, d_grade, a.rim_size)
         mesh = model_to_mesh("hemispheres")
     except MeshError as e:
         print("hemispheres.py: error: %s" % e, file=sys.stderr)
