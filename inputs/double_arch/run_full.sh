@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The full double arc (imposed displacement to 0.075 m, frictionless and mu = 0.5) on 1 and 2
-# ranks, then check.py against the literature curves (docs/verification.md has the results).
+# ranks, then check.py: docs/verification.md #14's bands (the literature errors printed).
 # Usage: inputs/double_arch/run_full.sh [BUILD_DIR]   (default build/; about 2 x 70 s per rank
 # count on one core). Work folder: BUILD_DIR/inputs/double_arch/full. Also runs
 # double_arch_readme.yaml (the README's materials) on 1 rank for the comparison.
