@@ -13,22 +13,26 @@ Reference curve: reference_solution_2d.csv, read off the figure by digitize_refe
 (grid lines for the axes, the blue curve's pixels; +-0.5 px = +-0.15 steps, +-45 in y): peak
 3.658e4 at step 102.3, mean after step 137: 2.508e4.
 
-Checks (1 and 2 ranks agree to 1e-8):
+Checks (docs/verification.md #18: the plateau within 3 % of the plane-strain strip closed form
+and of GetFEM, peak and plateau within 10 % of the figure; 1 and 2 ranks agree to 1e-8):
 1. every step converged (the run reached t = 1.3);
 2. Coulomb's law at the slave nodes: at every slipping node of every step after the
    interference, |lambda_t| = mu lambda_n to 1e-6 (lambda_t = lambda - (n.lambda) n);
-3. closed-form estimates for the two sliding plateaus (a plane-strain strip of the block,
-   free ends, uniform stress, friction mu N): before the block reaches the ramp
-   (steps 10..35), N = E/(1 - nu^2) (0.001/0.2) 0.45 (small strain, 1 mm interference);
-   after it has passed (steps > 137), N = -sigma_yy L lambda_x of the compressed Neo-Hookean
-   strip, lambda_y = 0.149/0.2, sigma_xx = 0 (mu (lambda_x^2 - 1) + lambda ln J = 0): within
-   10 % and 5 %;
+3. closed-form plane-strain strips (the block, free ends, uniform stress, friction mu N):
+   the plateau (after the block has passed the ramp, steps > 137), N = -sigma_yy L lambda_x
+   of the compressed Neo-Hookean strip, lambda_y = 0.149/0.2, sigma_xx = 0
+   (mu (lambda_x^2 - 1) + lambda ln J = 0): within 3 % (#18; GetFEM: getfem_compare.py,
+   its own ctest). Before the block reaches the ramp (steps 10..35), the small-strain
+   estimate N = E/(1 - nu^2) (0.001/0.2) 0.45 (1 mm interference) within 10 %: a sanity check
+   of the first contact, not a #18 target (the estimate leaves out the axial compression
+   that the friction itself adds, about mu L / (2 h) nu / (1 - nu) = +10 % of sigma_yy, and the
+   channel's compliance);
 4. the rise: the block's front reaches the ramp (x = 0.8) at u = 0.35, figure step 41.5: below
    1.5x the first plateau up to step 40, above 3x from step 50 on;
-5. against the figure: peak and plateau (mean after step 137) within 10 %. The issue asks for
-   5 %: NOT met. Grout gives -8 % (peak) and -7 % (plateau) on Kratos' mesh, converged in
-   the mesh (press_fit_mesh.py, docs/verification.md); the figure's plateau is 11 % above
-   the closed-form strip estimate of check 3, Grout's 3 % above it.
+5. against the figure: peak and plateau (mean after step 137) within 10 % (#18; its time
+   axis cannot be mapped from the upstream files, so values, not steps). Grout gives -8 %
+   (peak) and -7 % (plateau) on Kratos' mesh, converged in the mesh (press_fit_mesh.py,
+   docs/verification.md); the figure's plateau is 11 % above the closed-form strip of check 3.
 Writes <stem>.png (the curve against the digitised reference).
 """
 import csv
@@ -43,6 +47,9 @@ from grout_results import Results, relative_difference
 HERE = os.path.dirname(os.path.abspath(__file__))
 MU = 0.1
 E_B, NU_B, L_B = 1.0e9, 0.47, 0.45
+TOL_STRIP = 0.03  # #18: the plateau against the closed-form strip
+TOL_FIGURE = 0.10  # #18: peak and plateau against the figure
+TOL_EARLY = 0.10  # the first plateau against its small-strain estimate (sanity, see check 3)
 
 
 def load(stem, np_):
@@ -115,10 +122,11 @@ def main():
           % (early, early_cf, 100 * (early / early_cf - 1), ref[(ref[:, 0] >= 5) & (ref[:, 0] <= 20), 1].mean()))
     print("late plateau (after step 137): %.4g; closed form %.4g (%+.1f %%)"
           % (plateau, late_cf, 100 * (plateau / late_cf - 1)))
-    if not abs(early / early_cf - 1) < 0.10:
+    if not abs(early / early_cf - 1) <= TOL_EARLY:
         failures.append("early plateau %.4g vs closed form %.4g" % (early, early_cf))
-    if not abs(plateau / late_cf - 1) < 0.05:
-        failures.append("late plateau %.4g vs closed form %.4g" % (plateau, late_cf))
+    if not abs(plateau / late_cf - 1) <= TOL_STRIP:
+        failures.append("plateau %.4g vs closed form %.4g: %+.1f %% (#18: %.0f %%)"
+                        % (plateau, late_cf, 100 * (plateau / late_cf - 1), 100 * TOL_STRIP))
     before, after = rx[s <= 40], rx[s >= 50]
     print("rise: max up to step 40 = %.3g x the early plateau, min from step 50 on = %.3g x"
           % (before.max() / early, after.min() / early))
@@ -126,12 +134,12 @@ def main():
         failures.append("the rise is not where the block reaches the ramp (step 41.5)")
     e_peak, e_plateau = peak / ref_peak - 1, plateau / ref_plateau - 1
     print("against the figure: peak %.4g at step %.0f (figure %.4g at %.0f: %+.1f %%), plateau "
-          "%.4g (figure %.4g: %+.1f %%); target 5 %%: %s" % (peak, peak_step, ref_peak, ref_peak_step,
-                                                          100 * e_peak, plateau, ref_plateau,
-                                                          100 * e_plateau,
-                                                          "met" if max(abs(e_peak), abs(e_plateau)) < 0.05 else "NOT met"))
-    if not (abs(e_peak) < 0.10 and abs(e_plateau) < 0.10):
-        failures.append("peak %+.1f %% / plateau %+.1f %% off the figure" % (100 * e_peak, 100 * e_plateau))
+          "%.4g (figure %.4g: %+.1f %%); #18: %.0f %%"
+          % (peak, peak_step, ref_peak, ref_peak_step, 100 * e_peak, plateau, ref_plateau,
+             100 * e_plateau, 100 * TOL_FIGURE))
+    if not (abs(e_peak) <= TOL_FIGURE and abs(e_plateau) <= TOL_FIGURE):
+        failures.append("peak %+.1f %% / plateau %+.1f %% off the figure (#18: %.0f %%)"
+                        % (100 * e_peak, 100 * e_plateau, 100 * TOL_FIGURE))
     r1, r2 = Results("np1/%s.e" % stem), Results("np2/%s.e" % stem)
     diff = max(relative_difference(r1.nodal("displ_" + c), r2.nodal("displ_" + c)) for c in "xy")
     diff = max(diff, relative_difference(curves[1][1], curves[2][1]))
