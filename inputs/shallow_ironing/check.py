@@ -3,7 +3,18 @@ published curves of the Kratos example (Poulios & Renard 2015), digitised into r
 by digitize_reference.py.
 
 Usage: check.py CASE MU [--plateau T0 T1] [--fy-tolerance TOL] [--fx-tolerance TOL]
-                [--ratio-tolerance TOL] [--ranks 1 2] [--force-set NAME] [--label TEXT]
+                [--ratio-range LO HI] [--plane-strain] [--ranks 1 2] [--force-set NAME]
+                [--label TEXT]
+
+The defaults are #19's pass, which is for the reference's own model, 3D on Kratos' mesh
+(kratos3d_*.yaml, run_kratos3d.sh): the F_y plateau within 7 % of the published one, and
+F_x/F_y in [1.00, 1.06] mu while sliding. --plane-strain: the 2D plane-strain model (the CI
+runs ci_*.yaml), which #19 reports beside 3D and does not hold to the 3D figure (the
+published curve is not plane strain: +18 % on F_y measured, docs/verification.md): its F_y
+and F_x/F_y are printed against the reference, not checked. What such a run checks is what
+holds for any model: Coulomb's law at the nodes, frictionless F_x = 0, 1 = 2 ranks; its
+forces are checked against GetFEM's plane-strain solution by getfem_compare.py (ctest
+shallow_ironing/getfem).
 
 Reads np<r>/CASE.csv: F_x = reaction_NAME_x (the drag force, > 0 along the sliding
 direction), F_y = -reaction_NAME_y (the pressing force, > 0): the signs of the reference
@@ -19,13 +30,13 @@ count:
   plane held in z on both bodies, where Grout writes lambda_z = 0 for the tangent along z and
   Coulomb's law for the other: the plane's nodal normal tilts off it by some 1e-3 rad, and
   |lambda_t| then exceeds MU lambda_n by the square of that tilt, docs/input.md "Friction on a
-  plane of symmetry"), and the mean F_x / F_y over those steps
-  within RATIO_TOL (default 0.1) of MU. F_x / F_y is not MU exactly: the block presses on
-  the front of the die's arc (ploughing, +7 % measured in plane strain, +4 % on the 3D
-  slab; the 3D reference has +1 %), see docs/verification.md;
+  plane of symmetry"), and F_x / F_y at each of those steps within [LO, HI] MU (default
+  [1.00, 1.06], #19). F_x / F_y is not MU exactly: a curved die gives (MU + s)/(1 - MU s),
+  s the pressure-weighted slope of the die's normals: the block presses on the front of the
+  die's arc (ploughing; measured +8 % in plane strain, +4 % on the 3D slab and on Kratos'
+  mesh; the 3D reference has +1 %), see docs/verification.md;
 - the mean F_y over the plateau against the reference's (3.37e8 N for both cases, read off
-  the figures) within FY_TOL (default 0.25: the reference is the 3D slab of thickness 1 with
-  free faces, about 10 % softer than plane strain, see docs/verification.md);
+  the figures) within FY_TOL (default 0.07, #19);
 - 1 and 2 ranks: the reactions agree to 1e-8 relative.
 Writes CASE.png: F_y, F_x against t with the reference curves.
 """
@@ -42,9 +53,12 @@ ap = argparse.ArgumentParser()
 ap.add_argument("case")
 ap.add_argument("mu", type=float)
 ap.add_argument("--plateau", type=float, nargs=2, default=[1.3, 1.7])
-ap.add_argument("--fy-tolerance", type=float, default=0.25)
+ap.add_argument("--fy-tolerance", type=float, default=0.07)
 ap.add_argument("--fx-tolerance", type=float, default=2e-2)
-ap.add_argument("--ratio-tolerance", type=float, default=0.1)
+ap.add_argument("--ratio-range", type=float, nargs=2, default=[1.00, 1.06])
+ap.add_argument("--plane-strain", action="store_true",
+                help="2D plane strain: F_y and F_x/F_y printed against the 3D reference, "
+                     "not checked (#19)")
 ap.add_argument("--ranks", type=int, nargs="+", default=[1, 2])
 ap.add_argument("--force-set", default="die_top_nodes")
 ap.add_argument("--label", default="plane strain", help="the model, in the plot's legend")
@@ -85,6 +99,10 @@ def slave_nodes(np_, steps):
                    bool(on_plane[node]))
 
 
+TARGET_FY = ("plane strain: reported beside 3D, not checked" if a.plane_strain
+             else "#19: within %g %%" % (100 * a.fy_tolerance))
+TARGET_RATIO = ("plane strain: reported, not checked" if a.plane_strain
+                else "#19: in [%g, %g]" % tuple(a.ratio_range))
 failures = []
 results = {}
 for np_ in a.ranks:
@@ -100,11 +118,11 @@ for np_ in a.ranks:
         continue
     fy_mean = fy[plateau].mean()
     error = fy_mean / fy_ref_plateau - 1
-    print("np%d: %d steps, %d in t = [%g, %g]: mean F_y = %.4g N (reference %.4g N, %+.2f %%),"
+    print("np%d: %d steps, %d in t = [%g, %g]: mean F_y = %.4g N (reference %.4g N, %+.2f %%; %s),"
           " F_y from %.4g to %.4g" % (np_, len(t), plateau.sum(), a.plateau[0], a.plateau[1],
-                                       fy_mean, fy_ref_plateau, 100 * error, fy[plateau].min(),
-                                       fy[plateau].max()))
-    if not abs(error) <= a.fy_tolerance:
+                                       fy_mean, fy_ref_plateau, 100 * error, TARGET_FY,
+                                       fy[plateau].min(), fy[plateau].max()))
+    if not a.plane_strain and not abs(error) <= a.fy_tolerance:
         failures.append("np%d: F_y plateau %.4g differs from the reference %.4g by %+.1f %%"
                         % (np_, fy_mean, fy_ref_plateau, 100 * error))
     ratio = fx / fy
@@ -129,19 +147,21 @@ for np_ in a.ranks:
         worst_plane = max(coulomb_plane.get(s, 0.0) for s in steps[sel]) if sel.any() else 0.0
         mean = (ratio[sel] / a.mu).mean() if sel.any() else np.nan
         print("np%d: %d of %d plateau steps in full slip; largest | |lambda_t| - mu lambda_n |"
-              " / lambda_n at a node %.1e%s; F_x/F_y / mu from %.4f to %.4f, mean %.4f"
+              " / lambda_n at a node %.1e%s; F_x/F_y / mu from %.4f to %.4f, mean %.4f (%s)"
               % (np_, sel.sum(), plateau.sum(), worst,
                  " (%.1e on the plane z = 0)" % worst_plane if coulomb_plane else "",
                  (ratio[sel] / a.mu).min() if sel.any() else 0,
-                 (ratio[sel] / a.mu).max() if sel.any() else 0, mean))
+                 (ratio[sel] / a.mu).max() if sel.any() else 0, mean, TARGET_RATIO))
         if sel.sum() < max(3, plateau.sum() // 2):
             failures.append("np%d: only %d plateau steps in full slip" % (np_, sel.sum()))
         elif not (worst <= 1e-6 and worst_plane <= 1e-4):
             failures.append("np%d: slipping nodes violate |lambda_t| = mu lambda_n (%.1e, on "
                             "the plane z = 0 %.1e)" % (np_, worst, worst_plane))
-        elif not abs(mean - 1) <= a.ratio_tolerance:
-            failures.append("np%d: mean F_x/F_y = %.4f mu, not within %g of mu"
-                            % (np_, mean, a.ratio_tolerance))
+        elif not a.plane_strain and not (a.ratio_range[0] <= (ratio[sel] / a.mu).min()
+                                         and (ratio[sel] / a.mu).max() <= a.ratio_range[1]):
+            failures.append("np%d: F_x/F_y from %.4f to %.4f mu, not within [%g, %g] mu"
+                            % (np_, (ratio[sel] / a.mu).min(), (ratio[sel] / a.mu).max(),
+                               *a.ratio_range))
 
 if 1 in results and 2 in results:
     t1, fx1, fy1 = results[1]
