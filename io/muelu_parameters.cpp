@@ -1,4 +1,8 @@
-// MueLu 13.2's parameter names, from MueLu::MasterList::List() (io/solver_parameters.hpp).
+// MueLu 13.2's parameter names, from MueLu::MasterList::List() (io/solver_parameters.hpp). The
+// values of five names are checked too, against the lists MueLu 13.2 checks them against
+// (MueLu_ParameterListInterpreter_def.hpp: multigrid algorithm, aggregation: type, reuse: type,
+// cycle type; the validator of aggregation: drop scheme); test_solver_parameters compares them
+// with MueLu's messages.
 
 #include <regex>
 
@@ -13,7 +17,7 @@ std::vector<Key> muelu_keys(const Teuchos::ParameterList& given) {
       Key::string("output filename").may_be_empty(),
       Key::integer("number of equations"),
       Key::integer("max levels").at_least(1),
-      Key::string("cycle type").may_be_empty(),
+      Key::choice("cycle type", {"V", "W"}, "MueLu cycle type"),
       Key::integer("W cycle start level"),
       Key::number("coarse grid correction scaling factor"),
       Key::boolean("fuse prolongation and update"),
@@ -38,10 +42,16 @@ std::vector<Key> muelu_keys(const Teuchos::ParameterList& given) {
       Key::string("coarse: type").may_be_empty(),
       Key::section("coarse: params"),
       Key::integer("coarse: overlap"),
-      Key::string("aggregation: type").may_be_empty(),
+      Key::choice("aggregation: type",
+                  {"uncoupled", "coupled", "brick", "matlab", "notay", "classical"},
+                  "MueLu aggregation type"),
       Key::string("aggregation: mode").may_be_empty(),
       Key::string("aggregation: ordering").may_be_empty(),
-      Key::string("aggregation: drop scheme").may_be_empty(),
+      Key::choice("aggregation: drop scheme",
+                  {"classical", "distance laplacian", "signed classical", "block diagonal",
+                   "block diagonal classical", "block diagonal distance laplacian",
+                   "block diagonal signed classical", "block diagonal colored signed classical"},
+                  "MueLu drop scheme"),
       Key::string("aggregation: classical scheme").may_be_empty(),
       Key::number("aggregation: row sum drop tol"),
       Key::integer("aggregation: block diagonal: interleaved blocksize"),
@@ -113,7 +123,10 @@ std::vector<Key> muelu_keys(const Teuchos::ParameterList& given) {
       Key::boolean("use kokkos refactor"),
       Key::boolean("synchronize factory timers"),
       Key::boolean("rap: triple product"),
-      Key::string("multigrid algorithm").may_be_empty(),
+      Key::choice("multigrid algorithm",
+                  {"unsmoothed", "sa", "pg", "emin", "matlab", "pcoarsen", "classical",
+                   "smoothed reitzinger", "unsmoothed reitzinger"},
+                  "MueLu multigrid algorithm"),
       Key::string("toggle: mode").may_be_empty(),
       Key::integer("semicoarsen: coarsen rate"),
       Key::boolean("semicoarsen: piecewise constant"),
@@ -185,7 +198,8 @@ std::vector<Key> muelu_keys(const Teuchos::ParameterList& given) {
       Key::section("matrixmatrix: kernel params"),
       Key::integer("matrixmatrix: kernel params:MM_TAFC_OptimizationCoreCount "),
       Key::boolean("isMatrixMatrix_TransferAndFillComplete "),
-      Key::string("reuse: type").may_be_empty(),
+      Key::choice("reuse: type", {"none", "tP", "RP", "emin", "RAP", "full", "S"},
+                  "MueLu reuse type"),
       Key::string("use external multigrid package").may_be_empty(),
       Key::section("amgx:params"),
       Key::integer("debug: graph level"),

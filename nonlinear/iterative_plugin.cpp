@@ -1,11 +1,14 @@
 // The module grout_iterative: LinearSolver's iterative path (Belos + MueLu), loaded on demand
 // (nonlinear/iterative_solver.hpp, nonlinear/iterative_module.hpp).
 
+#include <mpi.h>
+
 #include <BelosSolverFactory.hpp>
 #include <BelosTpetraAdapter.hpp>
 #include <MueLu_CreateTpetraPreconditioner.hpp>
 #include <MueLu_MasterList.hpp>
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <algorithm>
 #include <cstdint>
@@ -76,6 +79,33 @@ class BelosMueLuSolver : public IterativeSolver {
     std::set<std::string> names;
     for (auto it = valid->begin(); it != valid->end(); ++it) names.insert(valid->name(it));
     return std::vector<std::string>(names.begin(), names.end());
+  }
+  std::string muelu_rejects(const Teuchos::ParameterList& muelu) const override {
+    const int n = 60;  // tridiag(-1, 2, -1) on one rank
+    // MPI_COMM_SELF: MueLu's summary needs an MPI communicator (a SerialComm crashes it).
+    const auto comm = Teuchos::rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
+    const auto map = Teuchos::rcp(new Map(n, 0, comm));
+    const auto A = Teuchos::rcp(new Matrix(map, 3));
+    for (GO row = 0; row < n; ++row) {
+      std::vector<GO> columns;
+      std::vector<double> values;
+      for (GO column = std::max<GO>(row - 1, 0); column <= std::min<GO>(row + 1, n - 1); ++column) {
+        columns.push_back(column);
+        values.push_back(column == row ? 2.0 : -1.0);
+      }
+      A->insertGlobalValues(row, Teuchos::ArrayView<const GO>(columns),
+                            Teuchos::ArrayView<const double>(values));
+    }
+    A->fillComplete();
+    Teuchos::ParameterList params = muelu;
+    if (!params.isParameter("verbosity")) params.set("verbosity", "none");
+    try {
+      Teuchos::RCP<Operator> op = A;
+      MueLu::CreateTpetraPreconditioner(op, params);
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+    return "";
   }
 
  private:

@@ -55,6 +55,10 @@ class IterativeSolver {
   /// allow-lists are checked against.
   virtual std::vector<std::string> belos_parameter_names() const = 0;
   virtual std::vector<std::string> muelu_parameter_names() const = 0;
+  /// Empty if MueLu builds a preconditioner with `muelu` for a small 1D Laplacian on one rank,
+  /// otherwise its message (for tests of the values io/ admits; some settings need data such
+  /// a matrix lacks, e.g. coordinates).
+  virtual std::string muelu_rejects(const Teuchos::ParameterList& muelu) const = 0;
 };
 
 /// Bumped whenever IterativeSolver or IterativeSettings change: a module built from other

@@ -194,6 +194,13 @@ TEST(SolverSettings, ValuesOutsideTheirRangeAreRefused) {
   expect_error("{Linear Solver: {MueLu: {'coarse: max size': many}}}",
                "case.yaml: grout/solver/Linear Solver/MueLu/coarse: max size: expected an integer "
                ">= 1, got a string 'many'");
+  expect_error("{Linear Solver: {MueLu: {'multigrid algorithm': smoothed}}}",
+               "case.yaml: grout/solver/Linear Solver/MueLu/multigrid algorithm: unknown MueLu "
+               "multigrid algorithm 'smoothed' (expected one of: unsmoothed, sa, pg, emin, matlab, "
+               "pcoarsen, classical, smoothed reitzinger, unsmoothed reitzinger)");
+  expect_error("{Linear Solver: {MueLu: {level 1: {'reuse: type': all}}}}",
+               "case.yaml: grout/solver/Linear Solver/MueLu/level 1/reuse: type: unknown MueLu "
+               "reuse type 'all' (expected one of: none, tP, RP, emin, RAP, full, S)");
   expect_error("{Newton: {absolute_tolerance: -1.0e-8}}",
                "case.yaml: grout/solver/Newton/absolute_tolerance: expected a number in [0, 1], "
                "got '-1e-08'");

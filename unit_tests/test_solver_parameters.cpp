@@ -40,5 +40,31 @@ TEST(SolverParameters, MueLuNamesAreMueLuOwn) {
   EXPECT_EQ(names_of(input_schema::muelu_keys(levels)).count("level 2"), 1u);
 }
 
+// The values io/ admits for the MueLu names it checks them for are those MueLu lists when it
+// refuses a value; "cycle type" has no list in MueLu's message: both values build.
+TEST(SolverParameters, MueLuValuesAreMueLuOwn) {
+  const auto solver = create_iterative_solver();
+  int checked = 0;
+  for (const input_schema::Key& key : input_schema::muelu_keys(Teuchos::ParameterList())) {
+    if (key.choices.empty()) continue;
+    ++checked;
+    Teuchos::ParameterList bogus;
+    bogus.set(key.name, std::string("zzbogus"));
+    const std::string message = solver->muelu_rejects(bogus);
+    ASSERT_FALSE(message.empty()) << key.name << ": MueLu accepts any value";
+    for (const std::string& value : key.choices) {
+      if (key.name == "cycle type") {
+        Teuchos::ParameterList list;
+        list.set(key.name, value);
+        EXPECT_EQ(solver->muelu_rejects(list), "") << key.name << ": " << value;
+      } else {
+        EXPECT_NE(message.find("\"" + value + "\""), std::string::npos)
+            << key.name << ": " << value << " is not in MueLu's list: " << message;
+      }
+    }
+  }
+  EXPECT_EQ(checked, 5);
+}
+
 }  // namespace
 }  // namespace grout
