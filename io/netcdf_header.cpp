@@ -171,7 +171,6 @@ void skip_attributes(HeaderReader& in, const std::string& owner) {
 
 /// What a netCDF-4 file's variables declare and what its chunks hold.
 struct Hdf5Storage {
-  std::string path;
   uint64_t unbacked_bytes = 0;  ///< declared beyond what the stored bytes can hold, in all
   std::string largest;          ///< the variable with most of them
   uint64_t largest_declared = 0, largest_stored = 0;
@@ -241,7 +240,7 @@ void check_netcdf4_storage(const std::string& path) {
   void* handler_data = nullptr;
   H5Eget_auto2(H5E_DEFAULT, &handler, &handler_data);
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // a file HDF5 cannot read is netCDF's to report
-  Hdf5Storage storage{path};
+  Hdf5Storage storage;
   {
     const Hdf5Handle file{H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
     if (file.id >= 0) {
