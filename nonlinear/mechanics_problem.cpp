@@ -31,7 +31,7 @@ struct MechanicsProblem::Interface {
   double active_tolerance = 0.0;  ///< on λ_n − ĉ g: 1e-10 E
   std::vector<double> proximity;  ///< per owned slave node: ContactInput::start_gap × face size
   double c_t_hat = 1.0;           ///< c_t: like ĉ unless the input sets it
-  double hold = 0.0;              ///< tangential hold per unit D_jj: κ E/h (evaluate_interface)
+  double hold = 0.0;              ///< Newton step's tangential hold per unit D_jj: κ E/h
   ContactMortarOptions options;
   bool current_geometry = false;  ///< normals, D, M on the current configuration
   ContactMortar reference;        ///< D, M and normals of the reference configuration
@@ -134,8 +134,8 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
       if (!faces.empty()) c->proximity[q] *= ci.start_gap / double(faces.size());
     }
     c->c_t_hat = ci.c_t > 0.0 ? ci.c_t : c->c_hat;
-    // κ = 1e-8 of the default ĉ (not of an input c_n, on which the solution must not depend).
-    c->hold = 1e-8 * 2.0 / (1.0 / E1 + 1.0 / E2) / mean_face_size(mesh, ci.slave);
+    // κ = 1e-11 of the default ĉ (not of an input c_n: the iterates must not depend on it).
+    c->hold = 1e-11 * 2.0 / (1.0 / E1 + 1.0 / E2) / mean_face_size(mesh, ci.slave);
     c->options.scheme = ci.integration == ContactIntegration::collocation
                             ? MortarIntegration::collocation
                             : MortarIntegration::exact;
@@ -346,9 +346,7 @@ void MechanicsProblem::assemble_contact_forces(Vector& F) {
   const std::vector<double> values = exchange_with_ranks(send_values, raw_comm_);
   for (std::size_t t = 0; t < values.size(); ++t)
     terms.push_back({ids[2 * t], ids[2 * t + 1], values[t]});
-  // Stable: a slave node's terms of one row (its force and its tangential hold) keep their
-  // emission order, the same on any number of ranks.
-  std::stable_sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) {
+  std::sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) {
     return a.row < b.row || (a.row == b.row && a.tag < b.tag);
   });
   auto Fv = F.getLocalViewHost(Tpetra::Access::ReadWrite);
@@ -768,30 +766,30 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
         add_F_(c.lambda_gid(q, k + 1), lambda_t[k]);
         emit(c.lambda_gid(q, k + 1), dlambda_t[k], 1.0);
       }
-      // Tangential hold: a spring of stiffness κ (E/h) D_jj along each tangent between the
-      // slave node and its master points, on the weighted tangential relative displacement
-      // since the last converged step, ū_k = w_k·(x − x_n), w_k = τ_k on the slave node and
-      // −τ_k M_jl / D_jj on master node l (the standard slip increment of weighted_slip.hpp):
-      // forces κ (E/h) D_jj ū_k w_k on those nodes, Jacobian κ (E/h) D_jj w_k w_kᵀ (exact on
-      // the reference geometry; w_k's own derivative is left out on the current one).
-      // Frictionless contact resists no motion along the slave surface, and where that
-      // surface is an arc, no rotation about the arc's centre either: the slave nodes then
-      // move along their tangents, normal to their own (radial) normals, and no gap row
-      // sees it. A body held otherwise only on a line through that centre (two half discs,
-      // the upper one pressed by a load on its flat edge, held in x) had a rotation that J
-      // does not determine: exactly singular where the slave normals are radial (KLU2
-      // status 1, MUMPS INFOG(1) = −10), determined only through the normals' tilt by the
-      // mesh grading elsewhere, and each Newton step turned the body by whatever the
-      // round-off and the moment of a far-off iterate gave. inputs/gmsh_hertz/
-      // point_contact.yaml came out rotated by 2.2 rad (|u_x| = 17 at the contact point of
-      // R = 8), its pressures unchanged (inputs/start_family/README.md). The hold gives that
-      // rotation a stiffness and brings it back to where the load leaves it. κ = 1e-8 of
-      // the default ĉ = E/h: it changes the Hertz solution by ~2e-9 of the displacement
-      // (hertz_cylinders/check_newton: ĉ × 50 moved it by 8e-8 when κ followed ĉ), the
-      // tangential multipliers are still 0, and a sliding body pays a drag of κ (E/h) times
-      // its slip in the step. Symmetric and positive semidefinite in u, and the multiplier
-      // rows stay pure-λ, so the symmetric reduction still applies
-      // (symmetric_condensation.hpp).
+      // The Newton step's tangential hold (Jacobian only: F stays exact, so a converged state
+      // satisfies the contact conditions exactly and does not depend on it): a spring of
+      // stiffness κ (E/h) D_jj along each tangent between the slave node and its master
+      // points, κ (E/h) D_jj w_k w_kᵀ on the displacement rows, w_k = ∂ū_k/∂u the gradient of
+      // the weighted tangential relative displacement ū_k = τ_k·(D_jj x¹_j − Σ_l M_jl x²_l) /
+      // D_jj (τ_k on the slave node, −τ_k M_jl / D_jj on master node l). Frictionless
+      // contact resists no motion along the slave surface, and where that surface is an arc,
+      // no rotation about the arc's centre either: the slave nodes then move along their
+      // tangents, normal to their own (radial) normals, and no gap row sees it. A body held
+      // otherwise only on a line through that centre (two half discs, the upper one pressed
+      // by a load on its flat edge, held in x) has a rotation that J does not determine:
+      // exactly singular where the slave normals are radial (KLU2 status 1, MUMPS INFOG(1) =
+      // −10), determined only through the normals' tilt by the mesh grading elsewhere, and
+      // the step carried an arbitrary rotation: inputs/gmsh_hertz/point_contact.yaml came out
+      // rotated by 2.2 rad (|u_x| = 17 at the contact point of R = 8), its pressures
+      // unchanged (inputs/start_family/README.md). With the hold J is regular and a step
+      // turns the body only as far as the residual's moment pushes it (point_contact.yaml:
+      // 9e-4 rad). Symmetric and positive semidefinite in u, and the multiplier rows stay
+      // pure-λ, so the symmetric reduction still applies (symmetric_condensation.hpp).
+      // κ = 1e-11: a step of a problem without such a mode leaves a residual of about
+      // κ (E/p) (ū/h) of the step's, below the Newton tolerance (κ = 1e-8 added an iteration
+      // to hertz_cylinders' hertz_2). The same spring in F as well (a drag on the slip since
+      // the last converged step) holds the rotation for good, but moves the patch tests by
+      // 1e-8..2e-7 and breaks ring_pendulum's angular momentum balance: not kept.
       for (int k = 0; k < dim - 1; ++k) {
         SparseGradient w;
         for (int a = 0; a < dim; ++a) {
@@ -800,16 +798,9 @@ void MechanicsProblem::evaluate_interface(Interface& c, const Vector& x, const V
             w.emplace_back(it->first.second * dim + a, -fr.t[k][a] * it->second.value / D);
         }
         compress_gradient(w);
-        double slip_k = 0.0;
-        for (const auto& [dof, wd] : w) {
-          const GlobalIndex n = GlobalIndex(dof / dim);
-          slip_k += wd * (position(n, int(dof % dim)) - old_position(n, int(dof % dim)));
-        }
         const double spring = c.hold * D;
-        for (const auto& [r, wr] : w) {
-          add_F_(r, spring * wr * slip_k);
+        for (const auto& [r, wr] : w)
           for (const auto& [col, wc] : w) add_entry(r, col, spring * wr * wc);
-        }
       }
       continue;
     }

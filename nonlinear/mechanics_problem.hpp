@@ -6,10 +6,6 @@
 // slave node j. Residual rows:
 //   u rows:   f_int(u) − f_ext(t) + f_c,   f_c = Σ_j D_jj λ_j on slave node j,
 //                                          −Σ_j M_jl λ_j on master node l;
-//             at an active frictionless slave node, also the tangential hold: a spring
-//             κ (E/h) D_jj on its tangential slip since the last converged step, κ = 1e-8
-//             (evaluate_interface; it holds a body's rotation that frictionless contact
-//             alone leaves free);
 //   λ rows:   frictionless: C_n = λ_n − max(0, λ_n − ĉ g_j) (active: ĉ g_j, inactive: λ_n),
 //             with g_j = g̃_j / D_jj the nodal gap, plus τ_j·λ_j = 0;
 //             frictional: the same normal row, and Coulomb's NCP on λ_τ with the weighted
