@@ -133,10 +133,13 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
       if (!faces.empty()) c->proximity[q] *= ci.start_gap / double(faces.size());
     }
     c->c_t_hat = ci.c_t > 0.0 ? ci.c_t : c->c_hat;
-    c->options.scheme = ci.integration == ContactIntegration::collocation
-                            ? MortarIntegration::collocation
-                            : MortarIntegration::exact;
-    if (ci.collocation_points > 0) c->options.collocation_points = ci.collocation_points;
+    // Collocation points: per slave element (2D) or per direction (3D); 20 unless the input
+    // sets them.
+    c->options.mortar = mortar_options(dim_,
+                                       ci.integration == ContactIntegration::collocation
+                                           ? MortarIntegration::collocation
+                                           : MortarIntegration::exact,
+                                       ci.collocation_points > 0 ? ci.collocation_points : 20);
     const ContactGeometry geometry = ci.geometry != ContactGeometry::automatic ? ci.geometry
                                      : input.model.strain == StrainKind::small
                                          ? ContactGeometry::reference
