@@ -173,11 +173,12 @@ void evaluate_frames(const ContactSurface& s, const std::vector<int>& framed,
 // The pairs of `candidates` integrated by mortar_integrate_gradients (values and, if
 // options.derivatives, derivatives), summed into result.D and result.M in (slave face, master
 // face) order with the chain rule through the frames for the 2D normal variables.
-template <int Dim>
+template <int Dim, class Pair>
 void add_pairs(const ContactSurface& s, const Candidates& candidates,
                const Kokkos::View<const double**, MemSpace>& coords,
                const ContactMortarOptions& options, ContactMortar& result) {
   using Vars = MortarPairVariables<Dim>;
+  constexpr bool derivatives = std::is_same<Pair, MortarPairGradient<Dim>>::value;
   const std::size_t n_evaluated = candidates.evaluated.size();
   Kokkos::View<int*, Kokkos::HostSpace> offsets("grout::pair_offsets", n_evaluated + 1);
   for (std::size_t k = 0; k < n_evaluated; ++k)
@@ -192,12 +193,12 @@ void add_pairs(const ContactSurface& s, const Candidates& candidates,
   for (std::size_t j = 0; j < s.slave_nodes.size(); ++j)
     for (int d = 0; d < Dim; ++d)
       normals(position_of(s, s.slave_nodes[j]), d) = result.frames[j].n[d];
-  Kokkos::View<MortarPairGradient<Dim>*, MemSpace> pairs(
+  Kokkos::View<Pair*, MemSpace> pairs(
       Kokkos::view_alloc("grout::mortar_pairs", Kokkos::WithoutInitializing), n_pairs);
-  const MortarStatus status = mortar_integrate_gradients<Dim>(
+  const MortarStatus status = mortar_integrate_gradients<Dim, Pair>(
       ExecSpace(), on_device(face_view(s, s.slave, candidates.evaluated)),
       on_device(face_view(s, s.master)), coords, on_device(normals), on_device(offsets),
-      on_device(masters), options.mortar, options.derivatives, pairs);
+      on_device(masters), options.mortar, pairs);
   if (status == MortarStatus::capacity_exceeded)
     throw std::logic_error("evaluate_contact_mortar: pair storage too short");
   const auto h_pairs = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), pairs);
@@ -221,7 +222,7 @@ void add_pairs(const ContactSurface& s, const Candidates& candidates,
       }
     }
     for (int p = offsets(k); p < offsets(k + 1); ++p) {
-      const MortarPairGradient<Dim>& pair = h_pairs(p);
+      const Pair& pair = h_pairs(p);
       if (pair.status != int(MortarStatus::ok)) continue;  // no overlap, or a far candidate
       ++result.pairs;
       const int m = masters(p);
@@ -242,11 +243,11 @@ void add_pairs(const ContactSurface& s, const Candidates& candidates,
       for (int j = 0; j < pair.n_slave; ++j) {
         MortarValue& D = result.D[slave_index[j]];
         D.value += pair.D[j];
-        if (options.derivatives) add_gradient(pair.dD[j], D.gradient);
+        if constexpr (derivatives) add_gradient(pair.dD[j], D.gradient);
         for (int l = 0; l < pair.n_master; ++l) {
           MortarValue& M = result.M[{slave_index[j], s.master.nodes[m][l]}];
           M.value += pair.M[j][l];
-          if (options.derivatives) add_gradient(pair.dM[j][l], M.gradient);
+          if constexpr (derivatives) add_gradient(pair.dM[j][l], M.gradient);
         }
       }
     }
@@ -278,10 +279,14 @@ ContactMortar evaluate_contact_mortar(const ContactSurface& s,
 
   // Pairs in (slave face, master face) order: the master faces are in id order, so every
   // sum over pairs runs in the same order however the faces are distributed.
-  if (s.dimension == 2)
-    add_pairs<2>(s, candidates, coords, options, result);
+  if (s.dimension == 2 && options.derivatives)
+    add_pairs<2, MortarPairGradient<2>>(s, candidates, coords, options, result);
+  else if (s.dimension == 2)
+    add_pairs<2, MortarPairValues<2>>(s, candidates, coords, options, result);
+  else if (options.derivatives)
+    add_pairs<3, MortarPairGradient<3>>(s, candidates, coords, options, result);
   else
-    add_pairs<3>(s, candidates, coords, options, result);
+    add_pairs<3, MortarPairValues<3>>(s, candidates, coords, options, result);
   for (auto& D : result.D) compress_gradient(D.gradient);
   for (auto& [key, M] : result.M) compress_gradient(M.gradient);
   return result;

@@ -55,12 +55,12 @@ struct StorePairTerms {
 /// "grout::mortar_integrate_ad<2D>" / "<3D>", one work item per slave face (its dual coefficients
 /// and auxiliary plane prepared once in AD), results(candidate_offsets(s) + c) for candidate c of
 /// slave face s. Same arguments and return as mortar_integrate; a failed or non-overlapping pair
-/// is stored with its status only. Without `derivatives` the pairs are integrated in double
-/// (launch "grout::mortar_integrate<2D>" / "<3D>", mortar_integrate's) and only the values,
-/// status and sizes are stored.
+/// is stored with its status only. With a View of MortarPairValues the same launch runs in double
+/// (label "grout::mortar_integrate<2D>" / "<3D>", mortar_integrate's) and stores values only.
 /// \pre normals: the unit slave nodal normals (2D: the projection direction; their derivatives
-/// are the normal variables' chain, slave_frames.hpp).
-template <int Dim, class ExecSpace>
+/// are the normal variables' chain, slave_frames.hpp). Pair: MortarPairGradient<Dim> or
+/// MortarPairValues<Dim>.
+template <int Dim, class Pair, class ExecSpace>
 MortarStatus mortar_integrate_gradients(
     const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
     Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
@@ -68,18 +68,18 @@ MortarStatus mortar_integrate_gradients(
     Kokkos::View<const double**, typename ExecSpace::memory_space> normals,
     Kokkos::View<const int*, typename ExecSpace::memory_space> candidate_offsets,
     Kokkos::View<const int*, typename ExecSpace::memory_space> candidates,
-    const MortarOptions& options, bool derivatives,
-    Kokkos::View<MortarPairGradient<Dim>*, typename ExecSpace::memory_space> results) {
-  using Results = Kokkos::View<MortarPairGradient<Dim>*, typename ExecSpace::memory_space>;
-  if (!derivatives)
-    return detail::mortar_integrate_launch<Dim, double>(
-        space, slave_faces, master_faces, coords, normals, candidate_offsets, candidates,
-        MultiplierBasis::dual, options, results.extent(0),
-        detail::StorePairTerms<Dim, Results>{results, options}, detail::ValueSeeds{});
-  return detail::mortar_integrate_launch<Dim, MortarPairFad<Dim>>(
+    const MortarOptions& options, Kokkos::View<Pair*, typename ExecSpace::memory_space> results) {
+  constexpr bool derivatives = std::is_same<Pair, MortarPairGradient<Dim>>::value;
+  static_assert(derivatives || std::is_same<Pair, MortarPairValues<Dim>>::value,
+                "grout::mortar_integrate_gradients: results of MortarPairGradient<Dim> or "
+                "MortarPairValues<Dim>");
+  using Results = Kokkos::View<Pair*, typename ExecSpace::memory_space>;
+  using Scalar = std::conditional_t<derivatives, MortarPairFad<Dim>, double>;
+  using Seeds = std::conditional_t<derivatives, detail::GradientSeeds<Dim>, detail::ValueSeeds>;
+  return detail::mortar_integrate_launch<Dim, Scalar>(
       space, slave_faces, master_faces, coords, normals, candidate_offsets, candidates,
       MultiplierBasis::dual, options, results.extent(0),
-      detail::StorePairTerms<Dim, Results>{results, options}, detail::GradientSeeds<Dim>{});
+      detail::StorePairTerms<Dim, Results>{results, options}, Seeds{});
 }
 
 }  // namespace grout

@@ -87,12 +87,21 @@ struct MortarPairGradient {
 template <int Dim>
 using MortarPairFad = Sacado::Fad::SFad<double, MortarPairVariables<Dim>::count>;
 
-/// \brief Copies a pair's status, sizes and values into `out`, and for a pair integrated in
-/// MortarPairFad<Dim> its derivatives too (the values alone for Scalar = double).
-template <int Dim, class Scalar>
+/// One pair's D_jj and M_jl (dual basis) without derivatives, for the values-only launch.
+template <int Dim>
+struct MortarPairValues {
+  static constexpr int nodes = MortarPairVariables<Dim>::face_nodes;
+  int status, n_slave, n_master;
+  double D[nodes];
+  double M[nodes][nodes];
+};
+
+/// \brief Copies a pair's status, sizes and values into `out` (MortarPairValues<Dim>), and for a
+/// pair integrated in MortarPairFad<Dim> its derivatives too (out: MortarPairGradient<Dim>).
+template <int Dim, class Scalar, class Out>
 GROUT_INLINE_FUNCTION void store_pair_gradient(MortarStatus status,
                                                const MortarPairResult<Scalar>& pair, int n_slave,
-                                               int n_master, MortarPairGradient<Dim>& out) {
+                                               int n_master, Out& out) {
   constexpr int vars = MortarPairVariables<Dim>::count;
   constexpr bool derivatives = !std::is_same<Scalar, double>::value;
   out.status = static_cast<int>(status);
