@@ -9,7 +9,8 @@
 //    scatter into the last pattern); with standard multipliers the same launch for full pair
 //    matrices (mortar_integrate_matrices' kernels), and D as CRS too;
 //  - with derivatives: evaluate_contact_mortar (assembly/contact_mortar), the driver's own
-//    contact evaluation (Sacado forward AD through the same pair kernels), and the chain rule
+//    contact evaluation: the same launch of the pair kernels in Sacado forward AD
+//    (mortar_integrate_gradients, with the frames of compute_slave_frames), and the chain rule
 //    for the weighted gap.
 // Both give D, M, g̃, normals and tangents per slave row; M as CRS with ascending master ids.
 
@@ -47,10 +48,8 @@ MortarStatus MortarCoupling::Impl::integrate_pairs() {
     pair_values = Kokkos::View<double*>(
         Kokkos::view_alloc("grout::MortarCoupling::pair_values", Kokkos::WithoutInitializing),
         size);
-  MortarOptions kernel_options;
-  kernel_options.scheme = options.integration;
-  kernel_options.n_collocation = Dim == 2 ? options.collocation_points
-                                          : options.collocation_points * options.collocation_points;
+  const MortarOptions kernel_options =
+      mortar_options(Dim, options.integration, options.collocation_points);
   return mortar_integrate_each<Dim, Pair>(Kokkos::DefaultExecutionSpace(), slave_faces,
                                           master_faces, coords, nodal_normals, candidates.offsets,
                                           candidates.masters, options.multipliers, kernel_options,
@@ -111,8 +110,7 @@ void MortarCoupling::Impl::fill_tangents() {
 
 void MortarCoupling::Impl::evaluate_derivatives() {
   ContactMortarOptions o;
-  o.scheme = options.integration;
-  o.collocation_points = options.collocation_points;
+  o.mortar = mortar_options(dim, options.integration, options.collocation_points);
   o.search_factor = options.search_factor;
   o.derivatives = true;
   const ContactMortar mortar = evaluate_contact_mortar(surface, x, o);

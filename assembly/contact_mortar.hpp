@@ -1,17 +1,19 @@
 #pragma once
 // The mortar quantities of one contact interface at the current configuration, with their
-// exact derivatives with respect to the displacement dofs (DESIGN.md §2, "Linearisation"):
+// exact derivatives with respect to the displacement dofs (docs/design.md, "Linearisation"):
 // slave nodal normals/tangents n_j, τ_j, the dual-mortar D_jj and M_jl summed over all
-// (slave, master) pairs. The pair integrals are differentiated with Sacado forward AD
-// through the kernels (integrate_mortar_2d/3d) with respect to the pair's nodal positions
-// and, in 2D, the slave nodal normals; the normals with respect to the positions of their
-// node's surface patch; the chain rule joins the two.
+// (slave, master) pairs. Computed by the kernel launches (kernels/slave_frames.hpp: the frames
+// and ∂frame/∂x per face around a node; kernels/mortar_pair_gradient.hpp: each pair's D, M and
+// their derivatives with respect to the pair's nodal positions and, in 2D, the slave nodal
+// normals, by Sacado forward AD through the pair kernels), then summed here per slave node with
+// the chain rule through ∂n/∂x: compute per pair in the launches, scatter in one place.
 
 #include <map>
 #include <utility>
 #include <vector>
 
 #include "assembly/contact_surface.hpp"
+#include "kernels/mortar_integrate.hpp"
 
 namespace grout {
 
@@ -31,9 +33,8 @@ struct SlaveFrame {
 };
 
 struct ContactMortarOptions {
-  MortarIntegration scheme = MortarIntegration::exact;
-  int collocation_points = 20;  ///< per slave element (2D) or per direction (3D)
-  double search_factor = 0.5;   ///< bounding boxes grown by this fraction of their size
+  MortarOptions mortar;        ///< the pair kernels' scheme and points (mortar_options)
+  double search_factor = 0.5;  ///< bounding boxes grown by this fraction of their size
   bool derivatives = true;
 };
 

@@ -218,7 +218,7 @@ GROUT_INLINE_FUNCTION MortarStatus face_inverse_map_2d(int n, const Scalar p[max
     if (detail3d::inverse_map_step(n, p, y, xi, d) != MortarStatus::ok)
       return MortarStatus::projection_failed;
     if (n == 3) return MortarStatus::ok;
-    if (abs(d[0]) + abs(d[1]) < face_inverse_map_tolerance) return MortarStatus::ok;
+    if (abs(d[0]) + abs(d[1]) < double(face_inverse_map_tolerance)) return MortarStatus::ok;
     if (!(abs(xi[0]) + abs(xi[1]) < 1e6)) return MortarStatus::projection_failed;  // diverged
   }
   return MortarStatus::projection_failed;

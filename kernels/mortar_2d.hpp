@@ -157,7 +157,7 @@ GROUT_INLINE_FUNCTION MortarStatus mortar_overlap_2d(const MortarSlave2D<Scalar>
   const Scalar hi = xi_m[0] < xi_m[1] ? xi_m[1] : xi_m[0];
   xi_a = lo > -1.0 ? lo : Scalar(-1.0);  // end point: master node projection or slave node 1
   xi_b = hi < 1.0 ? hi : Scalar(1.0);    // end point: master node projection or slave node 2
-  if (!(xi_b - xi_a > mortar_2d_overlap_tol)) {
+  if (!(xi_b - xi_a > double(mortar_2d_overlap_tol))) {
     xi_a = xi_b = 0.0;
     return MortarStatus::no_overlap;
   }

@@ -29,6 +29,7 @@
 #include "kernels/mortar_2d.hpp"
 #include "kernels/mortar_3d.hpp"
 #include "kernels/mortar_matrices.hpp"
+#include "kernels/mortar_pair_variables.hpp"
 #include "kernels/mortar_types.hpp"
 #include "kernels/multiplier_basis.hpp"
 #include "kernels/surface_normals.hpp"
@@ -41,6 +42,16 @@ struct MortarOptions {
   int n_gauss = mortar_2d_gauss_points;  ///< Gauss points per 2D overlap segment (1..8)
   int n_collocation = 16;  ///< points per slave element for collocation (3D: k × k, k = ⌊√n⌋)
 };
+
+/// \brief The MortarOptions of a scheme whose collocation points are counted as the input and
+/// the API count them (docs/input.md, contact `collocation_points`): per slave element in 2D,
+/// per direction in 3D (k × k points on a face).
+inline MortarOptions mortar_options(int dim, MortarIntegration scheme, int collocation_points) {
+  MortarOptions options;
+  options.scheme = scheme;
+  options.n_collocation = dim == 2 ? collocation_points : collocation_points * collocation_points;
+  return options;
+}
 
 /// Relative separation (of the plane bounding boxes, in units of the pair's size) beyond which
 /// a 3D candidate is rejected without clipping; far above the clipping tolerances (1e-12).
@@ -282,11 +293,19 @@ struct MortarPairKernel<3> {
 
 namespace detail {
 
-/// The launch shared by mortar_integrate, mortar_integrate_matrices and mortar_integrate_each:
-/// one work item per slave face (gathered and prepared once), looping over its candidates;
-/// pair(p, slave, n_master, xm, s) integrates candidate p and returns its status. capacity:
-/// the number of pair slots the caller has (the candidates' CRS end must fit in it).
-template <int Dim, class ExecSpace, class PairIntegrator>
+/// Seeds no variable (seed_face): the pair is integrated in plain values.
+struct NoSeed {
+  KOKKOS_INLINE_FUNCTION int operator()(int, int) const { return -1; }
+};
+
+/// The launch shared by mortar_integrate, mortar_integrate_matrices, mortar_integrate_each and
+/// mortar_integrate_gradients: one work item per slave face (gathered and prepared once, in
+/// Scalar), looping over its candidates; pair(p, slave, n_master, xm, s) integrates candidate p
+/// and returns its status. Scalar is double, or a Sacado SFad whose variables
+/// seeds.slave/normal/master(a, d) number among Seeds::count (the slave coordinates, the slave
+/// nodal normals and the master coordinates; −1: not a variable). capacity: the number of pair
+/// slots the caller has (the candidates' CRS end must fit in it).
+template <int Dim, class Scalar, class ExecSpace, class PairIntegrator, class Seeds>
 MortarStatus mortar_integrate_launch(
     const ExecSpace& space, Kokkos::View<const int**, typename ExecSpace::memory_space> slave_faces,
     Kokkos::View<const int**, typename ExecSpace::memory_space> master_faces,
@@ -294,7 +313,7 @@ MortarStatus mortar_integrate_launch(
     Kokkos::View<const double**, typename ExecSpace::memory_space> normals,
     Kokkos::View<const int*, typename ExecSpace::memory_space> candidate_offsets,
     Kokkos::View<const int*, typename ExecSpace::memory_space> candidates, MultiplierBasis basis,
-    const MortarOptions& options, size_t capacity, const PairIntegrator& pair) {
+    const MortarOptions& options, size_t capacity, const PairIntegrator& pair, const Seeds& seeds) {
   static_assert(Dim == 2 || Dim == 3, "grout::mortar_integrate: Dim must be 2 or 3");
   const size_t n_s = slave_faces.extent(0);
   if (static_cast<int>(coords.extent(1)) != Dim || normals.extent(0) != coords.extent(0) ||
@@ -303,7 +322,7 @@ MortarStatus mortar_integrate_launch(
   if (candidates.extent(0) < capacity) capacity = candidates.extent(0);
   int status = 0;
   Kokkos::parallel_reduce(
-      MortarPairKernel<Dim>::label, Kokkos::RangePolicy<ExecSpace>(space, 0, n_s),
+      Seeds::label(MortarPairKernel<Dim>::label), Kokkos::RangePolicy<ExecSpace>(space, 0, n_s),
       KOKKOS_LAMBDA(const int s, int& worst) {
         using Kernel = MortarPairKernel<Dim>;
         double xs[max_face_nodes][3], ns[max_face_nodes][3], xm[max_face_nodes][3];
@@ -314,11 +333,15 @@ MortarStatus mortar_integrate_launch(
           worst = static_cast<int>(MortarStatus::capacity_exceeded);
           return;
         }
-        typename Kernel::template SlaveFace<double> slave;
-        Kernel::prepare(n_slave, xs, ns, options, basis, slave);
+        Scalar xs_s[max_face_nodes][3], ns_s[max_face_nodes][3], xm_s[max_face_nodes][3];
+        seed_face(n_slave, xs, xs_s, seeds.slave, Seeds::count);
+        seed_face(n_slave, ns, ns_s, seeds.normal, Seeds::count);
+        typename Kernel::template SlaveFace<Scalar> slave;
+        Kernel::prepare(n_slave, xs_s, ns_s, options, basis, slave);
         for (int p = begin; p < end; ++p) {
           const int n_master = gather_face_coordinates(master_faces, candidates(p), coords, xm);
-          const MortarStatus st = pair(p, slave, n_master, xm, s);
+          seed_face(n_master, xm, xm_s, seeds.master, Seeds::count);
+          const MortarStatus st = pair(p, slave, n_master, xm_s, s);
           const int code = st == MortarStatus::no_overlap ? 0 : static_cast<int>(st);
           worst = code > worst ? code : worst;
         }
@@ -328,6 +351,13 @@ MortarStatus mortar_integrate_launch(
   return static_cast<MortarStatus>(status);
 }
 
+/// The seeds of the values-only launches: no variable, the label of the pair kernel.
+struct ValueSeeds {
+  static constexpr int count = 0;
+  NoSeed slave, normal, master;
+  static const char* label(const char* kernel_label) { return kernel_label; }
+};
+
 /// Pair integrator of mortar_integrate(_matrices): into the caller's array, results(p).
 template <int Dim, class ResultView>
 struct StorePair {
@@ -335,7 +365,7 @@ struct StorePair {
   MortarOptions options;
   template <class SlaveFace>
   KOKKOS_INLINE_FUNCTION MortarStatus operator()(int p, const SlaveFace& slave, int n_master,
-                                                 const double xm[max_face_nodes][3], int) const {
+                                                 const double (&xm)[max_face_nodes][3], int) const {
     return MortarPairKernel<Dim>::integrate(slave, n_master, xm, options, results(p));
   }
 };
@@ -347,7 +377,8 @@ struct SinkPair {
   MortarOptions options;
   template <class SlaveFace>
   KOKKOS_INLINE_FUNCTION MortarStatus operator()(int p, const SlaveFace& slave, int n_master,
-                                                 const double xm[max_face_nodes][3], int s) const {
+                                                 const double (&xm)[max_face_nodes][3],
+                                                 int s) const {
     Pair pair;
     const MortarStatus st = MortarPairKernel<Dim>::integrate(slave, n_master, xm, options, pair);
     sink(s, p, pair);
@@ -365,9 +396,9 @@ MortarStatus mortar_integrate_pairs(
     Kokkos::View<const int*, typename ExecSpace::memory_space> candidate_offsets,
     Kokkos::View<const int*, typename ExecSpace::memory_space> candidates, MultiplierBasis basis,
     const MortarOptions& options, ResultView results) {
-  return mortar_integrate_launch<Dim>(
+  return mortar_integrate_launch<Dim, double>(
       space, slave_faces, master_faces, coords, normals, candidate_offsets, candidates, basis,
-      options, results.extent(0), StorePair<Dim, ResultView>{results, options});
+      options, results.extent(0), StorePair<Dim, ResultView>{results, options}, ValueSeeds{});
 }
 
 /// The launch of mortar_integrate_each: as mortar_integrate_pairs, each pair integrated into a
@@ -381,9 +412,9 @@ MortarStatus mortar_integrate_to_sink(
     Kokkos::View<const int*, typename ExecSpace::memory_space> candidate_offsets,
     Kokkos::View<const int*, typename ExecSpace::memory_space> candidates, MultiplierBasis basis,
     const MortarOptions& options, const PairSink& sink) {
-  return mortar_integrate_launch<Dim>(
+  return mortar_integrate_launch<Dim, double>(
       space, slave_faces, master_faces, coords, normals, candidate_offsets, candidates, basis,
-      options, candidates.extent(0), SinkPair<Dim, Pair, PairSink>{sink, options});
+      options, candidates.extent(0), SinkPair<Dim, Pair, PairSink>{sink, options}, ValueSeeds{});
 }
 
 }  // namespace detail

@@ -92,7 +92,7 @@ GROUT_INLINE_FUNCTION MortarStatus clip_polygons(int n_subject, const Scalar sub
     const Scalar* a = c[e];
     const Scalar* b = c[e + 1 == n_clip ? 0 : e + 1];
     const Scalar ex = b[0] - a[0], ey = b[1] - a[1];
-    const Scalar tol = clip_on_line_tolerance * (abs(ex) + abs(ey)) * L;
+    const Scalar tol = double(clip_on_line_tolerance) * (abs(ex) + abs(ey)) * L;
     Scalar(*in)[2] = buf[cur];
     Scalar(*out)[2] = buf[1 - cur];
     int m = 0;

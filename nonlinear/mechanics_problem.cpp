@@ -136,10 +136,13 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
     c->c_t_hat = ci.c_t > 0.0 ? ci.c_t : c->c_hat;
     // κ = 1e-11 of the default ĉ (not of an input c_n: the iterates must not depend on it).
     c->hold = 1e-11 * 2.0 / (1.0 / E1 + 1.0 / E2) / mean_face_size(mesh, ci.slave);
-    c->options.scheme = ci.integration == ContactIntegration::collocation
-                            ? MortarIntegration::collocation
-                            : MortarIntegration::exact;
-    if (ci.collocation_points > 0) c->options.collocation_points = ci.collocation_points;
+    // Collocation points: per slave element (2D) or per direction (3D); 20 unless the input
+    // sets them.
+    c->options.mortar = mortar_options(dim_,
+                                       ci.integration == ContactIntegration::collocation
+                                           ? MortarIntegration::collocation
+                                           : MortarIntegration::exact,
+                                       ci.collocation_points > 0 ? ci.collocation_points : 20);
     const ContactGeometry geometry = ci.geometry != ContactGeometry::automatic ? ci.geometry
                                      : input.model.strain == StrainKind::small
                                          ? ContactGeometry::reference

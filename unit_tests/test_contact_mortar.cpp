@@ -86,8 +86,7 @@ TEST(ContactMortar, CollocationConvergesToExactButIsNotExact) {
   double previous = 1e300;
   for (int points : {10, 40, 160}) {
     ContactMortarOptions options;
-    options.scheme = MortarIntegration::collocation;
-    options.collocation_points = points;
+    options.mortar = mortar_options(2, MortarIntegration::collocation, points);
     const ContactMortar c = evaluate_contact_mortar(s.surface, s.x, options);
     double difference = 0.0;
     for (const auto& [key, M] : exact.M) {

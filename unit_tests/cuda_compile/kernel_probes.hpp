@@ -18,8 +18,10 @@
 #include "kernels/mortar_2d.hpp"
 #include "kernels/mortar_3d.hpp"
 #include "kernels/mortar_matrices.hpp"
+#include "kernels/mortar_pair_variables.hpp"
 #include "kernels/multiplier_basis.hpp"
 #include "kernels/polygon_clipping.hpp"
+#include "kernels/slave_frame.hpp"
 
 /// X(name) for every probe grout::probes::probe_<name>.
 #define GROUT_KERNEL_PROBES(X) \
@@ -30,6 +32,9 @@
   X(mortar_3d)                 \
   X(mortar_matrices)           \
   X(face_normal)               \
+  X(slave_frame)               \
+  X(mortar_pair_gradient_2d)   \
+  X(mortar_pair_gradient_3d)   \
   X(linear_elastic_2d)         \
   X(linear_elastic_3d)
 
@@ -202,6 +207,89 @@ GROUT_INLINE_FUNCTION void probe_face_normal(ProbeOutput& out) {
   out.put_status(face_normal(3, 4, xs, n));
   tangents_3d(n, t1, t2);
   for (int d = 0; d < 3; ++d) out.put(n[d]), out.put(t1[d]), out.put(t2[d]);
+}
+
+/// Slave frames in AD (slave_frame.hpp, the body of compute_slave_frames): ∂n_f/∂x of a LINE2
+/// and a warped QUAD4, the frame of a summed normal and ∂frame/∂N, and their chain.
+GROUT_INLINE_FUNCTION void probe_slave_frame(ProbeOutput& out) {
+  double xs[max_face_nodes][3], xt[max_face_nodes][3], xq[max_face_nodes][3];
+  faces_3d(xs, xt, xq);
+  double n[3], dn2[3][SlaveFrameLayout<2>::columns], dn3[3][SlaveFrameLayout<3>::columns];
+  out.put_status(face_normal_gradient<2>(2, xs, n, dn2));
+  double frame2[4], J2[4][2], block2[4][SlaveFrameLayout<2>::columns];
+  frame_of_normal_sum<2>(n, frame2, J2);
+  chain_frame_gradient<2>(J2, dn2, block2);
+  for (int r = 0; r < 4; ++r) {
+    out.put(frame2[r]);
+    for (int v = 0; v < 4; ++v) out.put(block2[r][v]);
+  }
+  out.put_status(face_normal_gradient<3>(4, xs, n, dn3));
+  const double N[3] = {n[0] + 0.1, n[1] - 0.05, n[2] + 0.9};  // a neighbour's normal added
+  double frame3[9], J3[9][3], block3[9][SlaveFrameLayout<3>::columns];
+  frame_of_normal_sum<3>(N, frame3, J3);
+  chain_frame_gradient<3>(J3, dn3, block3);
+  for (int r = 0; r < 9; ++r) {
+    out.put(frame3[r]);
+    for (int v = 0; v < SlaveFrameLayout<3>::columns; ++v) out.put(block3[r][v]);
+  }
+}
+
+/// The derivative launch's pair work (mortar_pair_gradient.hpp): seed the pair variables,
+/// integrate in MortarPairFad<Dim>, store values and derivatives. 2D: the LINE2 pair.
+GROUT_INLINE_FUNCTION void probe_mortar_pair_gradient_2d(ProbeOutput& out) {
+  using Vars = MortarPairVariables<2>;
+  using Fad = MortarPairFad<2>;
+  double xs2[2][2], ns2[2][2], xm2[2][2];
+  line_pair_2d(xs2, ns2, xm2);
+  double xs[max_face_nodes][3] = {}, ns[max_face_nodes][3] = {}, xm[max_face_nodes][3] = {};
+  for (int a = 0; a < 2; ++a)
+    for (int d = 0; d < 2; ++d) xs[a][d] = xs2[a][d], ns[a][d] = ns2[a][d], xm[a][d] = xm2[a][d];
+  Fad fs[max_face_nodes][3], fn[max_face_nodes][3], fm[max_face_nodes][3];
+  seed_face(2, xs, fs, Vars::Slave(), Vars::count);
+  seed_face(2, ns, fn, Vars::Normal(), Vars::count);
+  seed_face(2, xm, fm, Vars::Master(), Vars::count);
+  const Fad s[2][2] = {{fs[0][0], fs[0][1]}, {fs[1][0], fs[1][1]}};
+  const Fad n2[2][2] = {{fn[0][0], fn[0][1]}, {fn[1][0], fn[1][1]}};
+  const Fad m[2][2] = {{fm[0][0], fm[0][1]}, {fm[1][0], fm[1][1]}};
+  MortarPairResult<Fad> pair;
+  const MortarStatus st = integrate_mortar_2d(s, n2, m, pair);
+  MortarPairGradient<2> g;
+  store_pair_gradient<2>(st, pair, 2, 2, g);
+  out.put_status(st);
+  for (int j = 0; j < 2; ++j) {
+    out.put(g.D[j]);
+    for (int v = 0; v < Vars::count; ++v) out.put(g.dD[j][v]);
+    for (int l = 0; l < 2; ++l) {
+      out.put(g.M[j][l]);
+      for (int v = 0; v < Vars::count; ++v) out.put(g.dM[j][l][v]);
+    }
+  }
+}
+
+/// As probe_mortar_pair_gradient_2d in 3D: the warped QUAD4 slave (dual coefficients in AD)
+/// against the TRI3 master, exact clipping.
+GROUT_INLINE_FUNCTION void probe_mortar_pair_gradient_3d(ProbeOutput& out) {
+  using Vars = MortarPairVariables<3>;
+  using Fad = MortarPairFad<3>;
+  double xs[max_face_nodes][3], xt[max_face_nodes][3], xq[max_face_nodes][3];
+  faces_3d(xs, xt, xq);
+  Fad fs[max_face_nodes][3], fm[max_face_nodes][3], A[max_face_nodes][max_face_nodes];
+  seed_face(4, xs, fs, Vars::Slave(), Vars::count);
+  seed_face(3, xt, fm, Vars::Master(), Vars::count);
+  out.put_status(dual_basis_coefficients_3d(4, fs, A));
+  MortarPairResult<Fad> pair;
+  const MortarStatus st = integrate_mortar_3d_dual(4, fs, A, 3, fm, pair);
+  MortarPairGradient<3> g;
+  store_pair_gradient<3>(st, pair, 4, 3, g);
+  out.put_status(st);
+  for (int j = 0; j < 4; ++j) {
+    out.put(g.D[j]);
+    for (int v = 0; v < Vars::count; ++v) out.put(g.dD[j][v]);
+    for (int l = 0; l < 3; ++l) {
+      out.put(g.M[j][l]);
+      for (int v = 0; v < Vars::count; v += 3) out.put(g.dM[j][l][v]);  // every third: capacity
+    }
+  }
 }
 
 /// Force, stiffness and mean stress of one solid element with a non-trivial displacement.
