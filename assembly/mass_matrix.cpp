@@ -1,6 +1,7 @@
 #include "assembly/mass_matrix.hpp"
 
 #include "assembly/agree_on_errors.hpp"
+#include "assembly/crs_row_search.hpp"
 #include "io/errors.hpp"
 #include "kernels/mass_matrix.hpp"
 
@@ -41,15 +42,7 @@ Teuchos::RCP<Matrix> assemble_mass_matrix(const SolidProblem& solid, bool lumped
             for (int b = 0; b < npe; ++b) {
               if (Me[a * npe + b] == 0.0) continue;
               const int column = block.nodes(e, b) * dim + i;
-              auto lo = begin, hi = end;
-              while (lo < hi) {
-                const auto mid = lo + (hi - lo) / 2;
-                if (entries(mid) < column)
-                  lo = mid + 1;
-                else
-                  hi = mid;
-              }
-              values(lo) += Me[a * npe + b];
+              values(lower_bound_in_row(entries, begin, end, column)) += Me[a * npe + b];
             }
           }
         }

@@ -8,6 +8,7 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
+#include "assembly/crs_row_search.hpp"
 #include "io/errors.hpp"
 #include "kernels/energy_momentum.hpp"
 #include "kernels/surface_load.hpp"
@@ -339,15 +340,8 @@ bool SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K,
             int offset[max_element_nodes];
             for (int b = 0; b < npe; ++b) {
               const int column = nodes(e, b) * dim;
-              auto lo = first, hi = row_map(k * dim + 1);
-              while (lo < hi) {
-                const auto mid = lo + (hi - lo) / 2;
-                if (entries(mid) < column)
-                  lo = mid + 1;
-                else
-                  hi = mid;
-              }
-              offset[b] = int(lo - first);
+              offset[b] =
+                  int(lower_bound_in_row(entries, first, row_map(k * dim + 1), column) - first);
             }
             for (int d = 0; d < dim; ++d) {
               const double* Ke_row = &Ke[(a * dim + d) * n];
