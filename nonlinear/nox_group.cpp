@@ -62,6 +62,7 @@ NOX::Abstract::Group& NoxGroup::operator=(const NOX::Abstract::Group& base) {
   static_cast<NOX::Abstract::Vector&>(*newton_) = *source.newton_;
   jacobian_ = source.jacobian_;  // shared: only read after the copy
   x_tag_ = source.x_tag_;
+  iterate_ = source.iterate_;
   is_f_ = source.is_f_;
   is_jacobian_ = source.is_jacobian_;
   is_gradient_ = source.is_gradient_;
@@ -88,12 +89,14 @@ void NoxGroup::setX(const NOX::Abstract::Vector& y) {
 void NoxGroup::computeX(const NOX::Abstract::Group& grp, const NOX::Abstract::Vector& d,
                         double step) {
   x_->update(1.0, grp.getX(), step, d, 0.0);  // x = x_grp + step d
+  iterate_ = dynamic_cast<const NoxGroup&>(grp).iterate_ + 1;
   new_x();
 }
 
 NOX::Abstract::Group::ReturnType NoxGroup::computeF() {
   if (is_f_) return Ok;
   auto& problem = context_->problem;
+  problem.set_newton_iterate(iterate_);
   const bool ok = all_ranks([&] { return problem.residual(x_->tpetra(), f_->tpetra()); },
                             *x_->tpetra().getMap()->getComm());
   context_->evaluated_x_tag = x_tag_;
@@ -123,6 +126,7 @@ NOX::Abstract::Group::ReturnType NoxGroup::computeJacobian() {
   if (context_->evaluated_x_tag != x_tag_) {
     // The problem last evaluated another x (a line-search trial): bring it back here.
     grout::Vector scratch(f_->tpetra().getMap());
+    problem.set_newton_iterate(iterate_);
     all_ranks([&] { return problem.residual(x_->tpetra(), scratch); },
               *x_->tpetra().getMap()->getComm());
     context_->evaluated_x_tag = x_tag_;

@@ -82,6 +82,10 @@ class NoxGroup : public NOX::Abstract::Group {
   Teuchos::RCP<NoxTpetraVector> x_, f_, gradient_, newton_;
   Teuchos::RCP<Matrix> jacobian_;
   long x_tag_ = -1;
+  /// The Newton iterate of the step x is (0: the initial guess; computeX from a group at
+  /// iterate k gives k + 1, line-search trials included): handed to the problem before each
+  /// residual (NonlinearProblem::set_newton_iterate). setX keeps it.
+  int iterate_ = 0;
   bool is_f_ = false, is_jacobian_ = false, is_gradient_ = false, is_newton_ = false;
   double norm_f_ = 0.0;
   bool residual_failed_ = false;
