@@ -102,6 +102,8 @@ class ContactInterface {
   void ghost_master_faces(const Vector* u_base, const Vector* u_old_base);
   GO lambda_gid(int q, int c) const { return lambda_offset_ + lambda_index_[q] * dim_ + c; }
   std::size_t position_of(GlobalIndex node) const;
+  /// The Newton step's tangential hold of owned node q (frictionless, active): Jacobian only.
+  void add_tangential_hold(int q, ContactTerms& terms) const;
 
   const Mesh& mesh_;
   ContactInput input_;
