@@ -313,7 +313,8 @@ const MultiplierCondensation::Statistics& MultiplierCondensation::statistics() c
   return impl_->stats;
 }
 
-void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
+void MultiplierCondensation::condense(const Matrix& J, const Vector& b,
+                                      const MultiplierRows* declared) {
   Impl& m = *impl_;
   const auto comm = J.getRowMap()->getComm();
   const auto& row_map = *J.getRowMap();
@@ -326,6 +327,7 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
   enum { kIsIdentity, kLambda, kDiagonalOnly, kSlaveValue, kPivot, kInNodeRows, kFields };
   std::vector<double> local(std::size_t(n_pairs) * kFields, 0.0), global(local.size(), 0.0);
   std::vector<std::pair<int, int>> slave_lambda_columns;  // (pair, other pair) in slave rows
+  GO declared_mismatch = -1;  // a declared identity row of J with more than its diagonal
   for (LO i = 0; i < LO(row_map.getNodeNumElements()); ++i) {
     const GO g = row_map.getGlobalElement(i);
     const Row& row = m.rows.at(g);
@@ -337,7 +339,12 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
           diagonal += row.vals[e];
         else
           only_diagonal = false;
-      if (only_diagonal && diagonal != 0.0) {
+      bool identity = only_diagonal && diagonal != 0.0;
+      if (const LambdaRow* kind = declared ? declared->find(g) : nullptr) {
+        if (*kind == LambdaRow::identity && !identity) declared_mismatch = g;
+        identity = *kind == LambdaRow::identity || (*kind == LambdaRow::pure_lambda && identity);
+      }
+      if (identity) {
         local[p * kFields + kIsIdentity] = 1.0;
         local[p * kFields + kLambda] = row.rhs / diagonal;
       }
@@ -367,6 +374,13 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
   }
   if (n_pairs > 0)
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, int(local.size()), local.data(), global.data());
+  {
+    GO mismatch = -1;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, declared_mismatch, Teuchos::outArg(mismatch));
+    if (mismatch >= 0)
+      throw std::logic_error("MultiplierCondensation: multiplier row " + std::to_string(mismatch) +
+                             " is declared an identity row but holds more than its diagonal");
+  }
   m.kind.assign(n_pairs, kIdentity);
   m.lambda_known.assign(n_pairs, 0.0);
   m.slave_known.assign(n_pairs, 0.0);

@@ -88,6 +88,7 @@ ContactInterface::ContactInterface(const Mesh& mesh, const Input& input, const C
   step_energy_.assign(n_owned, 0.0);
   closing_.assign(n_owned, 0);
   candidates_.assign(n_owned, {});
+  row_kinds_.assign(n_owned, {LambdaRow::identity, LambdaRow::identity, LambdaRow::identity});
   slip_increment_.assign(n_owned, {0.0, 0.0, 0.0});
   slip_accumulated_.assign(n_owned, {0.0, 0.0, 0.0});
   tangents_.assign(n_owned, {});
@@ -285,6 +286,14 @@ void ContactInterface::commit_step() {
         slip_accumulated_[q][a] += slip_increment_[q][k] * tangents_[q][k][a];
   for (auto& increment : slip_increment_) increment = {0.0, 0.0, 0.0};
   if (history_set_) history_ = last_rows_;
+}
+
+void ContactInterface::append_rows(MultiplierRows& rows) const {
+  for (std::size_t q = 0; q < owned_.size(); ++q)
+    for (int d = 0; d < dim_; ++d) {
+      rows.gids.push_back(lambda_gid(int(q), d));
+      rows.kinds.push_back(row_kinds_[q][d]);
+    }
 }
 
 void ContactInterface::append_pairing(std::vector<long long>& pairs) const {

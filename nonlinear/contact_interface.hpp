@@ -27,7 +27,9 @@
 #include "assembly/weighted_slip.hpp"
 #include "io/input.hpp"
 #include "io/mesh.hpp"
+#include "kernels/contact_law.hpp"
 #include "nonlinear/active_set_policy.hpp"
+#include "nonlinear/multiplier_rows.hpp"
 
 namespace grout {
 
@@ -84,6 +86,8 @@ class ContactInterface {
 
   /// Accept the last evaluation as the converged state (slip history, committed active set).
   void commit_step();
+  /// The kinds of the owned multiplier rows at the last write_rows (unsorted).
+  void append_rows(MultiplierRows& rows) const;
   /// (λ GID, slave displacement GID) of the owned multipliers.
   void append_pairing(std::vector<long long>& pairs) const;
 
@@ -102,6 +106,7 @@ class ContactInterface {
   void ghost_master_faces(const Vector* u_base, const Vector* u_old_base);
   GO lambda_gid(int q, int c) const { return lambda_offset_ + lambda_index_[q] * dim_ + c; }
   std::size_t position_of(GlobalIndex node) const;
+  LambdaRow declared_kind(const ContactLawResult& law, int r) const;
   /// The Newton step's tangential hold of owned node q (frictionless, active): Jacobian only.
   void add_tangential_hold(int q, ContactTerms& terms) const;
 
@@ -139,10 +144,11 @@ class ContactInterface {
   std::vector<char> held_back_;      ///< held open at this iterate (policy)
   std::vector<std::array<double, 3>> lambda_;
   std::vector<char> active_, previous_active_;
-  std::vector<char> committed_active_;        ///< active at the last converged state (commit_step)
-  std::vector<double> step_energy_;           ///< e_j of ContactStepEnergy at the last evaluation
-  std::vector<char> closing_;                 ///< active at the last evaluation, not committed
-  std::vector<ClosureCandidate> candidates_;  ///< of prepare_active_set
+  std::vector<char> committed_active_;  ///< active at the last converged state (commit_step)
+  std::vector<double> step_energy_;     ///< e_j of ContactStepEnergy at the last evaluation
+  std::vector<char> closing_;           ///< active at the last evaluation, not committed
+  std::vector<std::array<LambdaRow, 3>> row_kinds_;             ///< per owned node, of its rows
+  std::vector<ClosureCandidate> candidates_;                    ///< of prepare_active_set
   std::vector<std::array<double, 3>> slip_increment_;           ///< ū_k of the step
   std::vector<std::array<double, 3>> slip_accumulated_;         ///< Σ ū_k τ_k (vector)
   std::vector<std::array<std::array<double, 3>, 2>> tangents_;  ///< τ_k

@@ -10,6 +10,28 @@
 
 namespace grout {
 
+// The declared kind of row r of a node (multiplier_rows.hpp) from the law's: an identity row
+// of its own component, or of another one (a held tangent: pure-λ); a frictionless tangent row
+// τ_k·λ carries ∂τ_k·λ on the displacements where the frame moves with them (the current
+// geometry) and λ ≠ 0.
+LambdaRow ContactInterface::declared_kind(const ContactLawResult& law, int r) const {
+  switch (law.kind[r]) {
+    case row_identity:
+      return law.component[r] == r ? LambdaRow::identity : LambdaRow::pure_lambda;
+    case row_constraint:
+      return LambdaRow::constraint;
+    case row_tangent: {
+      bool moving_frame = false;
+      for (int k = 0; k < dim_ - 1; ++k)
+        for (int a = 0; a < dim_; ++a)
+          moving_frame = moving_frame || law.dC[r][ContactLawLayout::tangent(k, a)] != 0.0;
+      return current_geometry_ && moving_frame ? LambdaRow::mixed : LambdaRow::pure_lambda;
+    }
+    default:
+      return LambdaRow::mixed;
+  }
+}
+
 ClosureCounts ContactInterface::prepare_active_set(const Vector& x, NewtonPhase phase) {
   const int dim = dim_;
   const ContactMortar& m = current_geometry_ ? current_ : reference_;
@@ -280,6 +302,7 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
     // gradients; g: dg; ū: the weighted slip's; t: e_j − Σ_l M_jl/D e_l).
     for (int row = 0; row < dim; ++row) {
       const GO gid = lambda_gid(q, row);
+      row_kinds_[q][row] = declared_kind(r, row);
       add_F_(gid, r.C[row]);
       const double* dC = r.dC[row];
       SparseGradient J;

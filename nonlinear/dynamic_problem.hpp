@@ -109,6 +109,7 @@ class DynamicProblem : public NonlinearProblem {
   int active_set_changes() const override { return problem_.active_set_changes(); }
   double residual_floor() const override { return residual_floor_; }
   void set_newton_iterate(int k) override { problem_.set_newton_iterate(k); }
+  const MultiplierRows* multiplier_rows() const override { return problem_.multiplier_rows(); }
 
   /// Initial acceleration from M a_0 = f_ext(0) + M g − F_s(x0) on the free dofs (a_0 = 0 on
   /// prescribed dofs), and the initial energies. Call once; `linear` (kept) solves with M.

@@ -171,7 +171,8 @@ bool LinearSolver::last_solve_symmetric() const {
   return impl_->last_symmetric;
 }
 
-int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x) {
+int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
+                        const MultiplierRows* rows) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: linear solve"));
   const int dim = impl_->dim > 0 ? impl_->dim : 2;  // 2 when set_coordinates was never called
   std::string type = impl_->type != "auto"
@@ -197,7 +198,7 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
     {
       Teuchos::TimeMonitor reduce_timer(
           *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: symmetric reduction"));
-      applies = reduction.condense(*K, b);
+      applies = reduction.condense(*K, b, rows);
     }
     if (applies) {
       Teuchos::TimeMonitor solve_timer(
@@ -220,7 +221,7 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   {
     Teuchos::TimeMonitor condense_timer(
         *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: condensation"));
-    condensation.condense(*K, b);
+    condensation.condense(*K, b, rows);
   }
   Vector y(condensation.matrix()->getRowMap());
   // A reduced row with a zero diagonal (a prescribed slave dof whose node's multiplier rows

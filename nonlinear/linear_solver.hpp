@@ -53,6 +53,7 @@
 
 #include "assembly/tpetra_types.hpp"
 #include "io/solver_settings.hpp"
+#include "nonlinear/multiplier_rows.hpp"
 
 namespace grout {
 
@@ -80,7 +81,10 @@ class LinearSolver {
 
   /// Solve K x = b; returns the number of linear iterations (1 for a direct solve).
   /// Throws std::runtime_error if the solve fails or does not converge.
-  int solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x);
+  /// `rows` (optional): the kinds of K's multiplier rows as the problem declares them
+  /// (multiplier_rows.hpp), from which the condensations are built.
+  int solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
+            const MultiplierRows* rows = nullptr);
 
   // --- condensed multipliers ---
   /// The multiplier dofs and the slave dofs carrying them: (λ GID, slave u GID), the same

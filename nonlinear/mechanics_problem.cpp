@@ -155,6 +155,15 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
       sums.active += s.active, sums.changes += s.changes, sums.floor2 += s.floor2;
     }
     terms_.sum_forces_to_owners(*map_, raw_comm_, F);
+    MultiplierRows rows;  // ascending by GID
+    for (auto& c : interfaces_) c->append_rows(rows);
+    std::vector<std::size_t> order(rows.gids.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return rows.gids[a] < rows.gids[b]; });
+    rows_.gids.clear(), rows_.kinds.clear();
+    for (std::size_t k : order)
+      rows_.gids.push_back(rows.gids[k]), rows_.kinds.push_back(rows.kinds[k]);
     const double local[3] = {sums.active, sums.changes, sums.floor2};
     Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 3, local, contact_sums);
   }

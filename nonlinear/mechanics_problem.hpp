@@ -83,6 +83,11 @@ class MechanicsProblem : public NonlinearProblem {
   /// k: after k updates, line-search trials included): the active-set start rules depend on
   /// it (ActiveSetPolicy). begin_step() resets it to 0.
   void set_newton_iterate(int k) override { phase_ = newton_phase(k); }
+  /// The owned multiplier rows' kinds at the last residual() (every interface's), or nullptr
+  /// without contact.
+  const MultiplierRows* multiplier_rows() const override {
+    return interfaces_.empty() ? nullptr : &rows_;
+  }
 
   /// Set the load and prescribed displacements of time t, and put the prescribed values
   /// into x (the initial guess of the step).
@@ -135,6 +140,7 @@ class MechanicsProblem : public NonlinearProblem {
   Teuchos::RCP<Vector> x_last_;  ///< x of the last residual evaluation
   Teuchos::RCP<Vector> x_old_;   ///< x of the last converged step (slip increments)
   ContactTerms terms_;           ///< contact terms of the last residual evaluation
+  MultiplierRows rows_;          ///< multiplier row kinds of the last residual evaluation
   Teuchos::RCP<Vector> u_, f_int_, f_ext_, reaction_;
   Teuchos::RCP<Matrix> K_solid_;
   const Vector* solid_step_start_ = nullptr;  ///< set_solid_step_start

@@ -4,6 +4,7 @@
 #include <Teuchos_RCP.hpp>
 
 #include "assembly/tpetra_types.hpp"
+#include "nonlinear/multiplier_rows.hpp"
 
 namespace grout {
 
@@ -33,6 +34,9 @@ class NonlinearProblem {
   /// iterate (the contact active set's start rules) never depends on the order of residual()
   /// and jacobian() calls. Default: ignored.
   virtual void set_newton_iterate(int /*k*/) {}
+  /// The kinds of the multiplier rows of J at the last residual() call, as the problem
+  /// declares them (multiplier_rows.hpp; the condensations are built from them), or nullptr.
+  virtual const MultiplierRows* multiplier_rows() const { return nullptr; }
 };
 
 }  // namespace grout

@@ -61,6 +61,7 @@ NOX::Abstract::Group& NoxGroup::operator=(const NOX::Abstract::Group& base) {
   static_cast<NOX::Abstract::Vector&>(*gradient_) = *source.gradient_;
   static_cast<NOX::Abstract::Vector&>(*newton_) = *source.newton_;
   jacobian_ = source.jacobian_;  // shared: only read after the copy
+  rows_ = source.rows_;
   x_tag_ = source.x_tag_;
   iterate_ = source.iterate_;
   is_f_ = source.is_f_;
@@ -137,6 +138,8 @@ NOX::Abstract::Group::ReturnType NoxGroup::computeJacobian() {
     context_->failure = "jacobian evaluation failed";
     return Failed;
   }
+  const MultiplierRows* rows = problem.multiplier_rows();  // of J's evaluation point
+  rows_ = rows ? std::make_shared<const MultiplierRows>(*rows) : nullptr;
   is_jacobian_ = true;
   return Ok;
 }
@@ -156,7 +159,8 @@ NOX::Abstract::Group::ReturnType NoxGroup::computeNewton(Teuchos::ParameterList&
   rhs.update(-1.0, f_->tpetra(), 0.0);
   newton_->init(0.0);
   try {
-    context_->last_linear_iterations = context_->linear.solve(jacobian_, rhs, newton_->tpetra());
+    context_->last_linear_iterations =
+        context_->linear.solve(jacobian_, rhs, newton_->tpetra(), rows_.get());
   } catch (const ExitCodeError&) {
     throw;  // e.g. the iterative module cannot be loaded: no smaller step cures that
   } catch (const std::exception& e) {

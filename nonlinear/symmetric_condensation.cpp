@@ -113,6 +113,7 @@ struct NodeData {
 
 struct SymmetricCondensation::Impl {
   int dofs_per_node = 1;
+  const MultiplierRows* declared = nullptr;  ///< of the current condense(), or none
   std::vector<GO> lambda, slave;
   std::unordered_map<GO, int> by_lambda, by_slave;
   std::map<GO, std::vector<int>> nodes;  ///< slave node -> its pairs (replicated)
@@ -303,6 +304,20 @@ std::string SymmetricCondensation::Impl::reduce_node(NodeData& nd, MultiplierCol
         why = at + "a multiplier row holds another node's multiplier";
       } else {
         has_u = true;
+      }
+    }
+    const GO gid = m.lambda[nd.pairs[i]];
+    if (const LambdaRow* kind = m.declared ? m.declared->find(gid) : nullptr) {
+      // The declaration decides; J's row must not contradict it.
+      const bool said_lambda = *kind == LambdaRow::identity || *kind == LambdaRow::pure_lambda;
+      if (*kind == LambdaRow::mixed) {
+        why = at + "a multiplier row is declared mixed (friction slip or geometry: current)";
+        break;
+      }
+      if ((said_lambda && has_u) || (*kind == LambdaRow::constraint && has_lambda)) {
+        why = at + "multiplier row " + std::to_string(gid) +
+              " does not have the structure its writer declared";
+        break;
       }
     }
     if (has_u && has_lambda)
@@ -706,8 +721,10 @@ void SymmetricCondensation::Impl::build_reduced_matrix(
   m.A->fillComplete(m.reduced_map, m.reduced_map);
 }
 
-bool SymmetricCondensation::condense(const Matrix& J, const Vector& b) {
+bool SymmetricCondensation::condense(const Matrix& J, const Vector& b,
+                                     const MultiplierRows* declared) {
   Impl& m = *impl_;
+  m.declared = declared;
   const auto comm = J.getRowMap()->getComm();
   const auto& row_map = *J.getRowMap();
   const int n_pairs = int(m.lambda.size());
