@@ -124,10 +124,9 @@ void run(const std::string& input_path, const std::string& output_dir,
     // Implicit dynamics: the same problem with inertia, one time step after the other.
     DynamicProblem dynamic(problem, mesh.dimension,
                            assemble_mass_matrix(solid, input.dynamics.mass == MassKind::lumped),
-                           time_integrator_from(input.dynamics), input.gravity,
-                           *initial_velocity(solid, mesh, input), input.dynamics.stabilized_contact,
-                           input.dynamics.velocity_update, input.dynamics.sliding_update,
-                           input.dynamics.sliding_balance);
+                           make_time_integrator(input.dynamics), input.gravity,
+                           *initial_velocity(solid, mesh, input),
+                           contact_treatment_of(input.dynamics), node_bodies(mesh));
     LinearSolverSettings mass_settings;  // type: auto
     mass_settings.where = input.file + ": mass matrix";
     LinearSolver mass_solver(mass_settings);

@@ -81,6 +81,7 @@
 #include "nonlinear/linear_solver.hpp"
 #include "nonlinear/load_stepping.hpp"
 #include "nonlinear/mechanics_problem.hpp"
+#include "nonlinear/newmark.hpp"
 #include "perf/bench_main.hpp"
 
 namespace grout {
@@ -387,9 +388,9 @@ void step_benchmark(benchmark::State& state, int dim, bool dynamic) {
   std::unique_ptr<DynamicProblem> dyn;
   if (dynamic) {
     Vector v0(solid.owned_map());
-    dyn = std::make_unique<DynamicProblem>(problem, dim, assemble_mass_matrix(solid, false),
-                                           TimeIntegrator::of(TimeScheme::newmark, 1.0),
-                                           std::array<double, 3>{0.0, 0.0, 0.0}, v0, true);
+    dyn = std::make_unique<DynamicProblem>(
+        problem, dim, assemble_mass_matrix(solid, false), std::make_unique<Newmark>(),
+        std::array<double, 3>{0.0, 0.0, 0.0}, v0, ContactTreatment::stabilized, node_bodies(mesh));
     Vector x0(dyn->map());
     dyn->start(x0, mass_solver);
   }
