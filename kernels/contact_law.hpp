@@ -27,6 +27,7 @@
 
 #include "kernels/kernel_macros.hpp"
 #include "kernels/sacado_fad.hpp"
+#include "kernels/scalar_value.hpp"
 
 namespace grout {
 
@@ -125,14 +126,6 @@ using ContactLawFad = Sacado::Fad::SFad<double, ContactLawLayout::count>;
 
 namespace detail_law {
 
-GROUT_INLINE_FUNCTION double value_of(double x) {
-  return x;
-}
-template <class Scalar>
-GROUT_INLINE_FUNCTION auto value_of(const Scalar& x) -> decltype(x.val()) {
-  return x.val();
-}
-
 /// x as Scalar: a copy, or for a Fad the variable `index` (seeded) if `used`, else a constant.
 template <class Scalar>
 GROUT_INLINE_FUNCTION Scalar variable(double x, int index, bool used) {
@@ -181,7 +174,6 @@ GROUT_INLINE_FUNCTION int contact_law_rows(const ContactLawParameters& p,
                                            const ContactLawVariables<Scalar>& v, Scalar C[3],
                                            ContactLawRowInfo& info) {
   using detail_law::identity_row;
-  using detail_law::value_of;
   using std::sqrt;
   const int dim = p.dim;
   for (int r = 0; r < 3; ++r) {
