@@ -41,6 +41,9 @@ struct SystemLayout {
 /// mesh.dimension dofs per node, the mesh's coordinates and dimension, and its bodies
 /// (io/mesh_bodies.hpp). Collective (MechanicsProblem::multiplier_pairing).
 SystemLayout system_layout(const MechanicsProblem& problem, const Mesh& mesh);
+/// The same with the pairing given: (λ GID, slave u GID) of every multiplier dof, the same
+/// complete list on every rank.
+SystemLayout system_layout(std::vector<std::pair<GO, GO>> multiplier_pairing, const Mesh& mesh);
 
 /// The layout of the mass-matrix systems on `mesh` (displacements only): coordinates and
 /// dimension, no multipliers and no bodies (the mass matrix has no entry between two bodies).

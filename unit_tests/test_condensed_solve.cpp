@@ -20,7 +20,6 @@
 #include "assembly/contact_surface.hpp"
 #include "assembly/solid_problem.hpp"
 #include "io/errors.hpp"
-#include "io/mesh_bodies.hpp"
 #include "io/mesh_generators.hpp"
 #include "nonlinear/condensed_solve.hpp"
 #include "nonlinear/linear_solver.hpp"
@@ -343,19 +342,7 @@ System without_undetermined_multipliers(const System& sys, int* redundant = null
 /// `type: auto` picks as in 2D).
 SystemLayout pairing_layout(const System& sys) {
   SystemLayout layout;
-  layout.multiplier_pairing = sys.pairing;
-  layout.dofs_per_node = sys.dim;
-  return layout;
-}
-
-/// The layout the driver gives (system_layout.hpp): pairing, coordinates and bodies of `mesh`.
-SystemLayout mesh_layout(const MultiplierPairing& pairing, const Mesh& mesh) {
-  SystemLayout layout;
-  layout.multiplier_pairing = pairing;
-  layout.dofs_per_node = mesh.dimension;
-  layout.coordinates = mesh.coordinates;
-  layout.dim = mesh.dimension;
-  layout.node_bodies = node_bodies(mesh);
+  layout.multiplier_pairing = sys.pairing, layout.dofs_per_node = sys.dim;
   return layout;
 }
 
@@ -647,7 +634,7 @@ void check_iteration_growth(int dim, ContactKind type, double mu, const std::vec
     Teuchos::ParameterList p;
     p.set("type", "belos");
     p.sublist("MueLu").set("coarse: max size", 100);
-    LinearSolver solver(p, "test", mesh_layout(mc.sys.pairing, mc.mesh));  // as the driver
+    LinearSolver solver(p, "test", system_layout(mc.sys.pairing, mc.mesh));  // as the driver
     Vector x(mc.sys.J->getRowMap());
     iterations.push_back(solver.solve(mc.sys.J, *mc.sys.b, x));
     unknowns.push_back(double(mc.sys.J->getGlobalNumRows()));
@@ -701,9 +688,9 @@ TEST(CondensedSolve, ReusedHierarchySolvesTheNextSystem) {
   p.set("type", "belos");
   p.set("reuse_preconditioner", true);
   p.sublist("MueLu").set("coarse: max size", 100);  // a multilevel hierarchy
-  LinearSolver reusing(p, "test", mesh_layout(first.sys.pairing, first.mesh));
+  LinearSolver reusing(p, "test", system_layout(first.sys.pairing, first.mesh));
   p.set("reuse_preconditioner", false);
-  LinearSolver fresh(p, "test", mesh_layout(first.sys.pairing, first.mesh));
+  LinearSolver fresh(p, "test", system_layout(first.sys.pairing, first.mesh));
   // The first system with other values, same pattern: every entry scaled by 1 + 0.2 sin(k).
   auto J_values = Teuchos::rcp(new Matrix(*first.sys.J, Teuchos::Copy));
   J_values->resumeFill();

@@ -43,8 +43,7 @@ struct Case {
 // The layout of `pairing` alone (system_layout.hpp), `dim` dofs per slave node.
 SystemLayout pairing_layout(const MultiplierPairing& pairing, int dim) {
   SystemLayout layout;
-  layout.multiplier_pairing = pairing;
-  layout.dofs_per_node = dim;
+  layout.multiplier_pairing = pairing, layout.dofs_per_node = dim;
   return layout;
 }
 
