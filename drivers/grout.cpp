@@ -95,10 +95,7 @@ void run(const std::string& input_path, const std::string& output_dir,
   const SolidProblem solid(mesh, input, comm);
   MechanicsProblem problem(solid, mesh, input);
   const NewtonOptions& newton = input.solver.newton;
-  LinearSolver linear(input.solver.linear);
-  linear.set_multiplier_pairing(problem.multiplier_pairing(), mesh.dimension);
-  linear.set_coordinates(mesh.coordinates, mesh.dimension);
-  linear.set_node_bodies(node_bodies(mesh));
+  LinearSolver linear(input.solver.linear, system_layout(problem, mesh));
   std::unique_ptr<ResultsOutput> output;
   agree_on_errors(*comm,
                   [&] { output = std::make_unique<ResultsOutput>(mesh, input, solid, problem); });
@@ -129,10 +126,7 @@ void run(const std::string& input_path, const std::string& output_dir,
                            contact_treatment_of(input.dynamics), node_bodies(mesh));
     LinearSolverSettings mass_settings;  // type: auto
     mass_settings.where = input.file + ": mass matrix";
-    LinearSolver mass_solver(mass_settings);
-    // The dimension picks `auto`'s solver (MUMPS in 3D); without it a 3D mass matrix went to
-    // KLU2, whose 3D factorisations are 20-80x slower (docs/performance.md).
-    mass_solver.set_coordinates(mesh.coordinates, mesh.dimension);
+    LinearSolver mass_solver(mass_settings, mass_matrix_layout(mesh));
     solve_time_steps(dynamic, linear, mass_solver, newton, stepping, write_step);
   } else {
     solve_load_steps(problem, linear, newton, stepping, write_step);

@@ -11,6 +11,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "kernels/small_dense_lu.hpp"
 #include "nonlinear/row_table.hpp"
 
 namespace grout {
@@ -198,35 +199,21 @@ struct MultiplierCondensation::Impl {
     for (int k = 0; k < n; ++k) blocks[root(k)].push_back(k);
     inverse_rows.assign(n, {});
     for (const auto& [r, members] : blocks) {
-      // Gauss–Jordan with partial pivoting on the block [P_b | I].
+      // P_b⁻¹ by the small dense LU with partial pivoting (kernels/small_dense_lu.hpp);
+      // singular: an exactly zero pivot.
       const int m = int(members.size());
-      std::vector<double> a(std::size_t(m) * 2 * m, 0.0);
-      for (int x = 0; x < m; ++x) {
-        for (int y = 0; y < m; ++y)
-          a[x * 2 * m + y] = P_all[std::size_t(members[x]) * n + members[y]];
-        a[x * 2 * m + m + x] = 1.0;
-      }
-      for (int c = 0; c < m; ++c) {
-        int best = c;
-        for (int x = c + 1; x < m; ++x)
-          if (std::abs(a[x * 2 * m + c]) > std::abs(a[best * 2 * m + c])) best = x;
-        if (a[best * 2 * m + c] == 0.0)
-          throw std::runtime_error(
-              "condense_multipliers: singular pivot block for the multipliers "
-              "of prescribed slave dofs on tied or sticking nodes");
-        for (int y = 0; y < 2 * m; ++y) std::swap(a[c * 2 * m + y], a[best * 2 * m + y]);
-        const double d = a[c * 2 * m + c];
-        for (int y = 0; y < 2 * m; ++y) a[c * 2 * m + y] /= d;
-        for (int x = 0; x < m; ++x)
-          if (x != c && a[x * 2 * m + c] != 0.0) {
-            const double f = a[x * 2 * m + c];
-            for (int y = 0; y < 2 * m; ++y) a[x * 2 * m + y] -= f * a[c * 2 * m + y];
-          }
-      }
+      std::vector<double> a(std::size_t(m) * m), inverse(std::size_t(m) * m);
+      std::vector<int> pivot(static_cast<std::size_t>(m));
+      for (int x = 0; x < m; ++x)
+        for (int y = 0; y < m; ++y) a[x * m + y] = P_all[std::size_t(members[x]) * n + members[y]];
+      if (!small_lu_invert(m, a.data(), m, pivot.data(), inverse.data(), m))
+        throw std::runtime_error(
+            "condense_multipliers: singular pivot block for the multipliers "
+            "of prescribed slave dofs on tied or sticking nodes");
       // P λ = q: rows of P are pivot rows k, columns multipliers j, so λ_j = Σ_k P⁻¹[j][k] q_k.
       for (int x = 0; x < m; ++x)
         for (int y = 0; y < m; ++y)
-          if (const double v = a[x * 2 * m + m + y]; v != 0.0)
+          if (const double v = inverse[x * m + y]; v != 0.0)
             inverse_rows[members[x]].emplace_back(members[y], v);
     }
   }

@@ -12,6 +12,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "kernels/small_dense_lu.hpp"
 #include "nonlinear/row_table.hpp"
 
 namespace grout {
@@ -68,28 +69,12 @@ std::vector<std::pair<int, int>> complete_pivots(std::vector<double> a, int m, i
   return pivots_of(std::move(a), m, n, allowed, max_pivots, tolerance);
 }
 
-// Inverse of the n×n matrix a (row-major), Gauss-Jordan with partial pivoting; false if
-// singular.
+// Inverse of the n×n matrix a (row-major) by the small dense LU with partial pivoting
+// (kernels/small_dense_lu.hpp); false if singular (an exactly zero pivot).
 bool invert(std::vector<double> a, int n, std::vector<double>& inverse) {
   inverse.assign(std::size_t(n) * n, 0.0);
-  for (int i = 0; i < n; ++i) inverse[i * n + i] = 1.0;
-  for (int c = 0; c < n; ++c) {
-    int p = c;
-    for (int i = c + 1; i < n; ++i)
-      if (std::abs(a[i * n + c]) > std::abs(a[p * n + c])) p = i;
-    if (a[p * n + c] == 0.0) return false;
-    for (int k = 0; k < n; ++k) std::swap(a[c * n + k], a[p * n + k]);
-    for (int k = 0; k < n; ++k) std::swap(inverse[c * n + k], inverse[p * n + k]);
-    const double d = a[c * n + c];
-    for (int k = 0; k < n; ++k) a[c * n + k] /= d, inverse[c * n + k] /= d;
-    for (int i = 0; i < n; ++i) {
-      if (i == c || a[i * n + c] == 0.0) continue;
-      const double f = a[i * n + c];
-      for (int k = 0; k < n; ++k) a[i * n + k] -= f * a[c * n + k];
-      for (int k = 0; k < n; ++k) inverse[i * n + k] -= f * inverse[c * n + k];
-    }
-  }
-  return true;
+  std::vector<int> pivot(static_cast<std::size_t>(n));
+  return small_lu_invert(n, a.data(), n, pivot.data(), inverse.data(), n);
 }
 
 // λ -> (displacement row, C[row, λ]): the multiplier columns of J's displacement rows.
