@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <functional>
+#include <limits>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -92,6 +94,35 @@ void check_geometry(int dim, int side, const HostSurface& s, const double* x) {
       throw MortarCouplingError(what + "face " + std::to_string(f) + " (rows" + nodes +
                                 ") is degenerate: zero " + (dim == 2 ? "length" : "area") +
                                 " or no normal");
+    }
+  }
+}
+
+/// The optional inside points of one surface (SurfaceArrays::inside_points): each face normal
+/// must point away from its face's point, n_e · (x̄_e − p_e) > 0 (x̄_e the face centroid);
+/// throws MortarCouplingError naming the first face oriented into its body.
+void check_inside_points(int dim, int side, const HostSurface& s, const double* points) {
+  if (!points) return;
+  const std::string what = std::string("grout::MortarCoupling: ") + side_name(side) + " surface: ";
+  for (std::size_t f = 0; f < s.n_faces(); ++f) {
+    const int n = s.face_nodes(f);
+    double xf[max_face_nodes][3] = {}, normal[3], side_of = 0.0;
+    for (int a = 0; a < n; ++a)
+      for (int d = 0; d < dim; ++d) xf[a][d] = s.x[s.faces[f * s.cols + a] * dim + d];
+    if (face_normal(dim, n, xf, normal) != MortarStatus::ok) continue;  // check_geometry's
+    for (int d = 0; d < dim; ++d) {
+      double centroid = 0.0;
+      for (int a = 0; a < n; ++a) centroid += xf[a][d] / n;
+      side_of += normal[d] * (centroid - points[f * dim + d]);
+    }
+    if (!(side_of > 0.0)) {
+      std::string nodes;
+      for (int a = 0; a < n; ++a) nodes += " " + std::to_string(s.faces[f * s.cols + a]);
+      throw MortarCouplingError(
+          what + "face " + std::to_string(f) + " (rows" + nodes +
+          ") has its normal pointing into its body (towards its inside point): the surface is "
+          "oriented inwards; reverse the node order of its faces (LINE2 x1 -> x2 has the normal "
+          "(dy, -dx)/L; TRI3/QUAD4 counter-clockwise seen from outside the body)");
     }
   }
 }
@@ -250,6 +281,8 @@ MortarCoupling::MortarCoupling(int dim, const SurfaceArrays& slave, const Surfac
     m.options = options;
     m.slave = copy_surface(dim, 0, slave, 0);
     m.master = copy_surface(dim, 1, master, (long long)slave.n_nodes);
+    check_inside_points(dim, 0, m.slave, slave.inside_points);
+    check_inside_points(dim, 1, m.master, master.inside_points);
     std::unordered_set<long long> slave_ids(m.slave.ids.begin(), m.slave.ids.end());
     for (long long id : m.master.ids)
       if (slave_ids.count(id))
@@ -263,7 +296,51 @@ MortarCoupling::MortarCoupling(int dim, const SurfaceArrays& slave, const Surfac
     MPI_Exscan(counts, firsts, 2, MPI_LONG_LONG, MPI_SUM, comm);
     if (m.rank > 0) m.slave.first_face_id = firsts[0], m.master.first_face_id = firsts[1];
   }
+  // Owners of the nodes (the lowest rank passing each as a row) for ForceSum::owners, and
+  // the sums by id of row_status.
+  std::vector<long long> ids = m.slave.ids;
+  ids.insert(ids.end(), m.master.ids.begin(), m.master.ids.end());
+  m.directory = NodeDirectory(comm, ids);
+  m.slave_owner.assign(m.directory.owners().begin(),
+                       m.directory.owners().begin() + m.slave.n_nodes);
+  m.master_owner.assign(m.directory.owners().begin() + m.slave.n_nodes, m.directory.owners().end());
+  if (options.derivatives) {  // the orientation check on a values coupling of the same surfaces
+    MortarCouplingOptions values = options;
+    values.derivatives = false;
+    const MortarCoupling probe(dim, slave, master, values, comm);
+  }
   update(m.slave.x, m.master.x);
+  if (!options.derivatives) check_orientation();
+}
+
+void MortarCoupling::check_orientation() const {
+  // Surfaces that face each other have n_slave · n_master ≈ −1 on their overlapping pairs; +1
+  // means that the faces of one of them are ordered into its body, which flips the sign of
+  // its normals (for the slave: of every weighted gap). Collective with a communicator.
+  const Impl& m = *impl_;
+  double sums[2];
+  long long bad[2];
+  m.orientation_sums(sums, bad);
+  if (m.comm != MPI_COMM_NULL) {
+    MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, m.comm);
+    long long first[2] = {bad[0] < 0 ? std::numeric_limits<long long>::max() : bad[0], 0};
+    MPI_Allreduce(MPI_IN_PLACE, first, 1, MPI_LONG_LONG, MPI_MIN, m.comm);
+    if (first[0] != bad[0]) bad[1] = std::numeric_limits<long long>::max();
+    MPI_Allreduce(MPI_IN_PLACE, &bad[1], 1, MPI_LONG_LONG, MPI_MIN, m.comm);
+    bad[0] = first[0];
+  }
+  if (!(sums[0] > 0.0)) return;
+  char mean[32];
+  std::snprintf(mean, sizeof mean, "%+.3f", sums[0] / sums[1]);
+  throw MortarCouplingError(
+      "grout::MortarCoupling: the slave and master surfaces face the same way: the overlap-"
+      "weighted mean of n_slave · n_master over their overlapping faces is " +
+      std::string(mean) + " (-1 for surfaces facing each other; e.g. slave face " +
+      std::to_string(bad[0]) + " and master face " + std::to_string(bad[1]) +
+      "). The faces of one surface are ordered into its body, which flips its normals (the "
+      "slave's: the sign of every weighted gap). Reverse that surface's node order (LINE2 x1 -> "
+      "x2 has the normal (dy, -dx)/L; TRI3/QUAD4 counter-clockwise seen from outside the body), "
+      "or pass inside_points to name it");
 }
 
 MortarCoupling::~MortarCoupling() = default;
@@ -312,6 +389,7 @@ void MortarCoupling::update(const double* slave_coordinates, const double* maste
       check_geometry(m.dim, 1, m.master, master_coordinates);
     }
     m.tangents_ready = false;
+    m.status_ready = false;
     if (m.options.derivatives) {
       m.evaluate_derivatives();
     } else if (!m.evaluate_values()) {  // a degenerate slave face: name it
@@ -319,6 +397,7 @@ void MortarCoupling::update(const double* slave_coordinates, const double* maste
       throw MortarCouplingError("grout::MortarCoupling::update: a slave face has no normal");
     }
   });
+  if (m.comm != MPI_COMM_NULL) m.fill_row_status();  // collective: sums by node id
 }
 
 void MortarCoupling::Impl::build() {
@@ -529,16 +608,17 @@ int MortarCoupling::overlapping_pairs() const {
   return impl_->pairs;
 }
 
-ContactForces MortarCoupling::contact_forces(const std::vector<double>& lambda) const {
+ContactForces MortarCoupling::contact_forces(const std::vector<double>& lambda,
+                                             ForceSum sum) const {
   if (lambda.size() != impl_->slave.n_nodes * impl_->dim)
     throw MortarCouplingError(
         "grout::MortarCoupling::contact_forces: " + std::to_string(lambda.size()) +
         " multiplier values, " + std::to_string(impl_->slave.n_nodes * impl_->dim) +
         " expected (slave rows × dim)");
-  return contact_forces(lambda.data());
+  return contact_forces(lambda.data(), sum);
 }
 
-ContactForces MortarCoupling::contact_forces(const double* lambda) const {
+ContactForces MortarCoupling::contact_forces(const double* lambda, ForceSum sum) const {
   const Impl& m = *impl_;
   const int dim = m.dim;
   if (!lambda && m.slave.n_nodes > 0)
@@ -563,7 +643,60 @@ ContactForces MortarCoupling::contact_forces(const double* lambda) const {
       for (int d = 0; d < dim; ++d)
         f.master[std::size_t(M_master[k]) * dim + d] -= m.M_values[k] * lambda_j[d];
   }
+  if (sum == ForceSum::owners) {
+    // Master: the totals by id at their owners. Slave: the totals at every rank's rows, kept
+    // where this rank owns the row.
+    std::vector<long long> ids;
+    std::vector<double> totals;
+    m.directory.sum_to_owners(f.master_nodes, f.master, dim, ids, totals);
+    f.master_nodes = std::move(ids);
+    f.master = std::move(totals);
+    f.slave = m.directory.sum_to_senders(m.slave.ids, f.slave, dim);
+    for (std::size_t r = 0; r < m.slave.n_nodes; ++r)
+      if (m.slave_owner[r] != m.rank)
+        for (int d = 0; d < dim; ++d) f.slave[r * dim + d] = 0.0;
+  }
   return f;
+}
+
+const std::vector<RowStatus>& MortarCoupling::row_status() const {
+  if (!impl_->status_ready) impl_->fill_row_status();  // serial (distributed: in update)
+  return impl_->status;
+}
+
+long long MortarCoupling::slave_id(std::size_t row) const {
+  if (row >= impl_->slave.n_nodes)
+    throw MortarCouplingError("grout::MortarCoupling::slave_id: row " + std::to_string(row) +
+                              " of " + std::to_string(impl_->slave.n_nodes) + " slave rows");
+  return impl_->slave.ids[row];
+}
+
+long long MortarCoupling::slave_row(long long id) const {
+  const Impl& m = *impl_;
+  const int i = m.position_of(id);
+  if (std::size_t(i) < m.surface.nodes.size() && m.surface.nodes[i] == id &&
+      m.host_row[i].first == 0)
+    return m.host_row[i].second;
+  for (std::size_t r = 0; r < m.slave.n_nodes; ++r)  // a row on no face
+    if (m.slave.ids[r] == id) return (long long)r;
+  return -1;
+}
+
+MEntry MortarCoupling::M_entry(std::size_t k) const {
+  const Impl& m = *impl_;
+  if (k >= m.M_values.size())
+    throw MortarCouplingError("grout::MortarCoupling::M_entry: " + std::to_string(k) + " of " +
+                              std::to_string(m.M_values.size()) + " M entries");
+  const std::size_t row = std::size_t(std::upper_bound(m.M_offsets.begin(), m.M_offsets.end(), k) -
+                                      m.M_offsets.begin()) -
+                          1;
+  return {row, m.M_columns[k]};
+}
+
+Dof MortarCoupling::dof(long long column) const {
+  if (column < 0)
+    throw MortarCouplingError("grout::MortarCoupling::dof: column " + std::to_string(column));
+  return {column / impl_->dim, int(column % impl_->dim)};
 }
 
 namespace {
