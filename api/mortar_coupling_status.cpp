@@ -1,5 +1,5 @@
 // grout::MortarCoupling's checks of the result: the coverage of each slave row (row_status) and
-// the orientation of the two surfaces against each other.
+// the orientation of the two surfaces against each other (check_orientation).
 //
 // Coverage: with the dual basis, D_jj = ∫_cov Φ_j dA over the part of node j's faces that a
 // master covers; Φ_j is biorthogonal to the N¹_k on each face and Σ_k N¹_k = 1, so on a fully
@@ -9,6 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
 
 #include "kernels/face_normal.hpp"
 #include "mortar_coupling_impl.hpp"
@@ -120,6 +123,36 @@ void MortarCoupling::Impl::orientation_sums(double sums[2], long long bad[2]) co
       if (cos > 0.0 && bad[0] < 0) bad[0] = surface.slave.ids[f], bad[1] = surface.master.ids[m];
     }
   }
+}
+
+void MortarCoupling::check_orientation() const {
+  // Surfaces that face each other have n_slave · n_master ≈ −1 on their overlapping pairs; +1
+  // means that the faces of one of them are ordered into its body, which flips the sign of
+  // its normals (for the slave: of every weighted gap). Collective with a communicator.
+  const Impl& m = *impl_;
+  double sums[2];
+  long long bad[2];
+  m.orientation_sums(sums, bad);
+  if (m.comm != MPI_COMM_NULL) {
+    MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, m.comm);
+    long long first[2] = {bad[0] < 0 ? std::numeric_limits<long long>::max() : bad[0], 0};
+    MPI_Allreduce(MPI_IN_PLACE, first, 1, MPI_LONG_LONG, MPI_MIN, m.comm);
+    if (first[0] != bad[0]) bad[1] = std::numeric_limits<long long>::max();
+    MPI_Allreduce(MPI_IN_PLACE, &bad[1], 1, MPI_LONG_LONG, MPI_MIN, m.comm);
+    bad[0] = first[0];
+  }
+  if (!(sums[0] > 0.0)) return;
+  char mean[32];
+  std::snprintf(mean, sizeof mean, "%+.3f", sums[0] / sums[1]);
+  throw MortarCouplingError(
+      "grout::MortarCoupling: the slave and master surfaces face the same way: the overlap-"
+      "weighted mean of n_slave · n_master over their overlapping faces is " +
+      std::string(mean) + " (-1 for surfaces facing each other; e.g. slave face " +
+      std::to_string(bad[0]) + " and master face " + std::to_string(bad[1]) +
+      "). The faces of one surface are ordered into its body, which flips its normals (the "
+      "slave's: the sign of every weighted gap). Reverse that surface's node order (LINE2 x1 -> "
+      "x2 has the normal (dy, -dx)/L; TRI3/QUAD4 counter-clockwise seen from outside the body), "
+      "or pass inside_points to name it");
 }
 
 }  // namespace grout

@@ -34,7 +34,11 @@
 //
 // Errors: every check of the host's data throws MortarCouplingError with the offending value
 // (with a communicator, on every rank: an error one rank finds is agreed on collectively).
-// Nothing returned is NaN.
+// The constructor also checks that the two surfaces face each other (a surface whose faces are
+// ordered into its body flips its normals; for the slave, the sign of every gap): over the
+// overlapping face pairs, the overlap-weighted mean of n_slave · n_master must be negative;
+// with inside_points, every face's normal must point away from its point. Nothing returned is
+// NaN. Rows a master covers only in part: row_status().
 
 #include <mpi.h>
 #include <Kokkos_Core.hpp>
