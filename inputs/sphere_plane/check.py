@@ -30,8 +30,8 @@ Computed:
   RMS of p - p_Hertz(r) over the slave nodes with r <= 1.2 a (relative to P_max) are printed.
 
 Checks:
-- the load: 4 x reaction_plane_bottom_nodes_z = F within 1e-3 (the flat top is a polygon;
-  sphere_plane.py's rim size keeps its area within 5e-5 of pi R^2 / 4);
+- the load: 4 x reaction_plane_bottom_nodes_z = F within 1e-3 (the flat top is a polygon
+  of chords 0.2 long, whose area is (0.2/R)^2/6 = 1.8e-4 short of pi R^2 / 4);
 - the finest mesh: the displacement error within --tol (1e-2, #11);
 - the pressure converging (#11): for a and for P_max, the error against Hertz decreases from
   each mesh to the next, or else the computed values converge over the last three meshes,

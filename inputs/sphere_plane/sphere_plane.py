@@ -13,8 +13,9 @@ T = R), top face z = 0 "plane_top", bottom z = -T "plane_bottom", block "plane".
 x >= 0, y >= 0: symmetry faces "x0" (x = 0) and "y0" (y = 0) of both bodies. Element size H
 (default 0.17) within distance D0 (default 0.3 R) of the contact point, growing linearly to
 the far size (default 1.0) at distance D1 (default R); the flat face's curved edge is meshed
-at H2 (default 0.2) so that a pressure on it sums to q pi R^2 / 4 within (H2/R)^2/24 (the
-polygon's area deficit). The geometry helpers are ../gmsh_hertz/hemispheres.py's.
+at H2 (default 0.2) so that a pressure on it sums to q pi R^2 / 4 within (H2/R)^2/6 (the
+polygon's area deficit: chords of angle H2/R each miss (H2/R)^3 R^2 / 12).
+The geometry helpers are ../gmsh_hertz/hemispheres.py's.
 """
 import argparse
 import os
