@@ -237,6 +237,43 @@ def vertical(stem, col, small, failures):
           % (stem, t[first], len(t) - first))
 
 
+def plot(curves, vert):
+    """cylinders_reactions.png: the base reaction against t (horizontal II) and R.n against the
+    rigid interference (vertical, with the Hertz estimate)."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        return
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(11, 4.5))
+    for stem, col in curves:
+        R = col["R"]
+        ax.plot(col["time"], np.linalg.norm(R, axis=0), "-", label="%s |R|" % stem)
+        ax.plot(col["time"], R[0], "--", lw=0.8, label="%s R_x" % stem)
+        ax.plot(col["time"], R[1], ":", lw=0.8, label="%s R_y" % stem)
+    ax.set_xlabel("t (x = -0.2 + 0.2 t)")
+    ax.set_ylabel("base reaction")
+    ax.set_title("horizontal II")
+    ax.legend(fontsize=7)
+    if vert is not None:
+        stem, col = vert
+        i, n = interference(VERTICAL, col["time"])
+        N = np.abs(col["R"][0] * n[0] + col["R"][1] * n[1])
+        on = i > 0
+        bx.plot(i[on], N[on], "o-", ms=3, label="%s R.n" % stem)
+        ii = np.linspace(i[on].min() if on.any() else 1e-4, i.max(), 50)
+        bx.plot(ii, [hertz_force(v)[0] for v in ii], "k-", label="Hertz line-contact estimate")
+        bx.set_xlabel("rigid interference i")
+        bx.set_ylabel("normal reaction")
+        bx.set_title("vertical")
+        bx.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig("cylinders_reactions.png", dpi=110)
+    plt.close(fig)
+    print("wrote cylinders_reactions.png")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--horizontal")
@@ -247,15 +284,19 @@ def main():
     ap.add_argument("--ratio-tol", type=float, default=0.02)
     ap.add_argument("--small", type=float, default=2e-3)
     a = ap.parse_args()
-    failures = []
+    failures, curves, vert = [], [], None
     if a.horizontal:
-        rise_and_vanish(a.horizontal, summary(a.horizontal), failures)
+        col = summary(a.horizontal)
+        rise_and_vanish(a.horizontal, col, failures)
+        curves.append((a.horizontal, col))
     if a.frictional:
         col = summary(a.frictional)
         rise_and_vanish(a.frictional, col, failures)
         sliding_ratio(a.frictional, col, a.mu, a.ratio_tol, failures)
+        curves.append((a.frictional, col))
     if a.vertical:
-        vertical(a.vertical, summary(a.vertical), a.small, failures)
+        vert = (a.vertical, summary(a.vertical))
+        vertical(a.vertical, vert[1], a.small, failures)
     for stem in a.ranks:
         diff, msg = cc.compare_ranks("np1/%s.e" % stem, "np2/%s.e" % stem,
                                      ["displ_x", "displ_y", "displ_z", "contact_pressure"],
@@ -263,6 +304,7 @@ def main():
         print("%s: 1 vs 2 ranks %.1e" % (stem, diff))
         if msg:
             failures.append(msg)
+    plot(curves, vert)
     for f in failures:
         print("FAIL:", f)
     if not failures:
