@@ -214,7 +214,7 @@ def sliding_ratio(stem, col, mu, tol, failures):
     if not checked:
         failures.append("%s: no step with every active node slipping" % stem)
     elif worst > tol:
-        failures.append("%s: T/N off mu = %g by %.2f %% (> %.0f %%)"
+        failures.append("%s: T/N off mu = %g by %.2f %% (> %g %%)"
                         % (stem, mu, 100 * worst, 100 * tol))
     else:
         print("%s: T/N = mu within %.2f %% over %d sliding steps" % (stem, 100 * worst, checked))
