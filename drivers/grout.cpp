@@ -30,7 +30,6 @@
 #include "io/errors.hpp"
 #include "io/exodus.hpp"
 #include "io/input.hpp"
-#include "io/mesh_bodies.hpp"
 #include "nonlinear/dynamic_stepping.hpp"
 #include "nonlinear/linear_solver.hpp"
 #include "nonlinear/load_stepping.hpp"
@@ -95,7 +94,8 @@ void run(const std::string& input_path, const std::string& output_dir,
   const SolidProblem solid(mesh, input, comm);
   MechanicsProblem problem(solid, mesh, input);
   const NewtonOptions& newton = input.solver.newton;
-  LinearSolver linear(input.solver.linear, system_layout(problem, mesh));
+  const SystemLayout layout = system_layout(problem, mesh);  // pairing, coordinates, bodies
+  LinearSolver linear(input.solver.linear, layout);
   std::unique_ptr<ResultsOutput> output;
   agree_on_errors(*comm,
                   [&] { output = std::make_unique<ResultsOutput>(mesh, input, solid, problem); });
@@ -123,7 +123,7 @@ void run(const std::string& input_path, const std::string& output_dir,
                            assemble_mass_matrix(solid, input.dynamics.mass == MassKind::lumped),
                            make_time_integrator(input.dynamics), input.gravity,
                            *initial_velocity(solid, mesh, input),
-                           contact_treatment_of(input.dynamics), node_bodies(mesh));
+                           contact_treatment_of(input.dynamics), layout.node_bodies);
     LinearSolverSettings mass_settings;  // type: auto
     mass_settings.where = input.file + ": mass matrix";
     LinearSolver mass_solver(mass_settings, mass_matrix_layout(mesh));

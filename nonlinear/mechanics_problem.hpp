@@ -119,7 +119,7 @@ class MechanicsProblem : public NonlinearProblem {
   /// ContactStepEnergy of the last residual evaluation, summed over the ranks. Collective.
   ContactStepEnergy contact_step_energy() const;
   /// (λ dof, slave displacement dof) pairs of every interface, all ranks' pairs in λ order,
-  /// for the condensed solve (LinearSolver::set_multiplier_pairing). Collective.
+  /// for the condensed solve (SystemLayout::pairing, system_layout.hpp). Collective.
   std::vector<std::pair<GO, GO>> multiplier_pairing() const;
   /// Slave nodes of every interface (global node indices, each interface's sorted).
   std::vector<GlobalIndex> slave_nodes() const;

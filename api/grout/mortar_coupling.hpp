@@ -4,7 +4,7 @@
 // <grout/mortar_coupling.hpp>, target Grout::mortar.
 //
 // For a slave surface Γ¹ and a master surface Γ² (LINE2 in 2D, TRI3/QUAD4 in 3D), with the
-// multiplier basis Φ_j (Popp et al. 2010, eqs. 9-10, 30; DESIGN.md §2):
+// multiplier basis Φ_j (Popp et al. 2010, eqs. 9-10, 30; docs/design.md §2):
 //   D_jk = ∫ Φ_j N¹_k dA             slave nodes j, k (CRS); diagonal for the dual basis:
 //                                    D_jj = ∫ Φ_j dA per slave node (D())
 //   M_jl = ∫ Φ_j (N²_l ∘ χ) dA       slave node j → master node l (CRS)
