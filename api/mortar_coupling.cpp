@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <functional>
+#include <limits>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -92,6 +94,35 @@ void check_geometry(int dim, int side, const HostSurface& s, const double* x) {
       throw MortarCouplingError(what + "face " + std::to_string(f) + " (rows" + nodes +
                                 ") is degenerate: zero " + (dim == 2 ? "length" : "area") +
                                 " or no normal");
+    }
+  }
+}
+
+/// The optional inside points of one surface (SurfaceArrays::inside_points): each face normal
+/// must point away from its face's point, n_e · (x̄_e − p_e) > 0 (x̄_e the face centroid);
+/// throws MortarCouplingError naming the first face oriented into its body.
+void check_inside_points(int dim, int side, const HostSurface& s, const double* points) {
+  if (!points) return;
+  const std::string what = std::string("grout::MortarCoupling: ") + side_name(side) + " surface: ";
+  for (std::size_t f = 0; f < s.n_faces(); ++f) {
+    const int n = s.face_nodes(f);
+    double xf[max_face_nodes][3] = {}, normal[3], side_of = 0.0;
+    for (int a = 0; a < n; ++a)
+      for (int d = 0; d < dim; ++d) xf[a][d] = s.x[s.faces[f * s.cols + a] * dim + d];
+    if (face_normal(dim, n, xf, normal) != MortarStatus::ok) continue;  // check_geometry's
+    for (int d = 0; d < dim; ++d) {
+      double centroid = 0.0;
+      for (int a = 0; a < n; ++a) centroid += xf[a][d] / n;
+      side_of += normal[d] * (centroid - points[f * dim + d]);
+    }
+    if (!(side_of > 0.0)) {
+      std::string nodes;
+      for (int a = 0; a < n; ++a) nodes += " " + std::to_string(s.faces[f * s.cols + a]);
+      throw MortarCouplingError(
+          what + "face " + std::to_string(f) + " (rows" + nodes +
+          ") has its normal pointing into its body (towards its inside point): the surface is "
+          "oriented inwards; reverse the node order of its faces (LINE2 x1 -> x2 has the normal "
+          "(dy, -dx)/L; TRI3/QUAD4 counter-clockwise seen from outside the body)");
     }
   }
 }
@@ -250,6 +281,8 @@ MortarCoupling::MortarCoupling(int dim, const SurfaceArrays& slave, const Surfac
     m.options = options;
     m.slave = copy_surface(dim, 0, slave, 0);
     m.master = copy_surface(dim, 1, master, (long long)slave.n_nodes);
+    check_inside_points(dim, 0, m.slave, slave.inside_points);
+    check_inside_points(dim, 1, m.master, master.inside_points);
     std::unordered_set<long long> slave_ids(m.slave.ids.begin(), m.slave.ids.end());
     for (long long id : m.master.ids)
       if (slave_ids.count(id))
@@ -263,7 +296,21 @@ MortarCoupling::MortarCoupling(int dim, const SurfaceArrays& slave, const Surfac
     MPI_Exscan(counts, firsts, 2, MPI_LONG_LONG, MPI_SUM, comm);
     if (m.rank > 0) m.slave.first_face_id = firsts[0], m.master.first_face_id = firsts[1];
   }
+  // Owners of the nodes (the lowest rank passing each as a row) for ForceSum::owners, and
+  // the sums by id of row_status.
+  std::vector<long long> ids = m.slave.ids;
+  ids.insert(ids.end(), m.master.ids.begin(), m.master.ids.end());
+  m.directory = NodeDirectory(comm, ids);
+  m.slave_owner.assign(m.directory.owners().begin(),
+                       m.directory.owners().begin() + m.slave.n_nodes);
+  m.master_owner.assign(m.directory.owners().begin() + m.slave.n_nodes, m.directory.owners().end());
+  if (options.derivatives) {  // the orientation check on a values coupling of the same surfaces
+    MortarCouplingOptions values = options;
+    values.derivatives = false;
+    const MortarCoupling probe(dim, slave, master, values, comm);
+  }
   update(m.slave.x, m.master.x);
+  if (!options.derivatives) check_orientation();
 }
 
 MortarCoupling::~MortarCoupling() = default;
@@ -312,6 +359,7 @@ void MortarCoupling::update(const double* slave_coordinates, const double* maste
       check_geometry(m.dim, 1, m.master, master_coordinates);
     }
     m.tangents_ready = false;
+    m.status_ready = false;
     if (m.options.derivatives) {
       m.evaluate_derivatives();
     } else if (!m.evaluate_values()) {  // a degenerate slave face: name it
@@ -319,6 +367,7 @@ void MortarCoupling::update(const double* slave_coordinates, const double* maste
       throw MortarCouplingError("grout::MortarCoupling::update: a slave face has no normal");
     }
   });
+  if (m.comm != MPI_COMM_NULL) m.fill_row_status();  // collective: sums by node id
 }
 
 void MortarCoupling::Impl::build() {
@@ -460,131 +509,6 @@ bool MortarCoupling::Impl::refresh_coordinates(const double* xs, const double* x
 int MortarCoupling::Impl::position_of(long long id) const {
   return int(std::lower_bound(surface.nodes.begin(), surface.nodes.end(), id) -
              surface.nodes.begin());
-}
-
-void MortarCoupling::Impl::master_nodes_of_M(std::vector<long long>& nodes,
-                                             std::vector<int>& entry_node) const {
-  // surface.nodes is sorted by id: marking the positions orders the master nodes by id.
-  std::vector<int> index(surface.nodes.size(), -1), entry_position(M_columns.size());
-  for (std::size_t k = 0; k < M_columns.size(); ++k)
-    index[entry_position[k] = position_of(M_columns[k])] = 0;
-  nodes.clear();
-  for (std::size_t i = 0; i < index.size(); ++i)
-    if (index[i] == 0) {
-      index[i] = int(nodes.size());
-      nodes.push_back(surface.nodes[i]);
-    }
-  entry_node.resize(M_columns.size());
-  for (std::size_t k = 0; k < M_columns.size(); ++k) entry_node[k] = index[entry_position[k]];
-}
-
-int MortarCoupling::dim() const {
-  return impl_->dim;
-}
-std::size_t MortarCoupling::num_slave_nodes() const {
-  return impl_->slave.n_nodes;
-}
-MultiplierBasis MortarCoupling::multipliers() const {
-  return impl_->options.multipliers;
-}
-const std::vector<double>& MortarCoupling::D() const {
-  if (impl_->options.multipliers != MultiplierBasis::dual)
-    throw MortarCouplingError(
-        "grout::MortarCoupling::D: D is not diagonal with standard multipliers (D_jk = ∫ N_j N_k "
-        "dA): read D_offsets(), D_columns(), D_values()");
-  return impl_->D;
-}
-const std::vector<std::size_t>& MortarCoupling::D_offsets() const {
-  if (!impl_->D_crs_ready) impl_->fill_diagonal_D();
-  return impl_->D_offsets;
-}
-const std::vector<long long>& MortarCoupling::D_columns() const {
-  if (!impl_->D_crs_ready) impl_->fill_diagonal_D();
-  return impl_->D_columns;
-}
-const std::vector<double>& MortarCoupling::D_values() const {
-  if (!impl_->D_crs_ready) impl_->fill_diagonal_D();
-  return impl_->D_values;
-}
-const std::vector<std::size_t>& MortarCoupling::M_offsets() const {
-  return impl_->M_offsets;
-}
-const std::vector<long long>& MortarCoupling::M_columns() const {
-  return impl_->M_columns;
-}
-const std::vector<double>& MortarCoupling::M_values() const {
-  return impl_->M_values;
-}
-const std::vector<double>& MortarCoupling::weighted_gaps() const {
-  return impl_->gaps;
-}
-const std::vector<double>& MortarCoupling::normals() const {
-  return impl_->normals;
-}
-const std::vector<double>& MortarCoupling::tangents() const {
-  if (!impl_->tangents_ready) impl_->fill_tangents();
-  return impl_->tangents;
-}
-int MortarCoupling::overlapping_pairs() const {
-  return impl_->pairs;
-}
-
-ContactForces MortarCoupling::contact_forces(const std::vector<double>& lambda) const {
-  if (lambda.size() != impl_->slave.n_nodes * impl_->dim)
-    throw MortarCouplingError(
-        "grout::MortarCoupling::contact_forces: " + std::to_string(lambda.size()) +
-        " multiplier values, " + std::to_string(impl_->slave.n_nodes * impl_->dim) +
-        " expected (slave rows × dim)");
-  return contact_forces(lambda.data());
-}
-
-ContactForces MortarCoupling::contact_forces(const double* lambda) const {
-  const Impl& m = *impl_;
-  const int dim = m.dim;
-  if (!lambda && m.slave.n_nodes > 0)
-    throw MortarCouplingError("grout::MortarCoupling::contact_forces: null multipliers");
-  ContactForces f;
-  std::vector<int> M_master;  // per M entry: its index in f.master_nodes
-  m.master_nodes_of_M(f.master_nodes, M_master);
-  f.slave.assign(m.slave.n_nodes * dim, 0.0);
-  f.master.assign(f.master_nodes.size() * dim, 0.0);
-  const bool dual = m.options.multipliers == MultiplierBasis::dual;
-  for (std::size_t j = 0; j < m.slave.n_nodes; ++j) {
-    const double* lambda_j = lambda + j * dim;
-    if (dual) {
-      for (int d = 0; d < dim; ++d) f.slave[j * dim + d] = m.D[j] * lambda_j[d];
-    } else {  // f¹_k += D_jk λ_j; the columns are nodes of this rank's faces: host slave rows
-      for (std::size_t k = m.D_offsets[j]; k < m.D_offsets[j + 1]; ++k) {
-        const std::size_t row = std::size_t(m.host_row[m.position_of(m.D_columns[k])].second);
-        for (int d = 0; d < dim; ++d) f.slave[row * dim + d] += m.D_values[k] * lambda_j[d];
-      }
-    }
-    for (std::size_t k = m.M_offsets[j]; k < m.M_offsets[j + 1]; ++k)
-      for (int d = 0; d < dim; ++d)
-        f.master[std::size_t(M_master[k]) * dim + d] -= m.M_values[k] * lambda_j[d];
-  }
-  return f;
-}
-
-namespace {
-const std::vector<DerivativeTriplet>& require(const MortarCoupling::Impl& m,
-                                              const std::vector<DerivativeTriplet>& v) {
-  if (!m.options.derivatives)
-    throw MortarCouplingError(
-        "grout::MortarCoupling: derivatives were not requested (MortarCouplingOptions::"
-        "derivatives = true)");
-  return v;
-}
-}  // namespace
-
-const std::vector<DerivativeTriplet>& MortarCoupling::D_derivatives() const {
-  return require(*impl_, impl_->dD);
-}
-const std::vector<DerivativeTriplet>& MortarCoupling::M_derivatives() const {
-  return require(*impl_, impl_->dM);
-}
-const std::vector<DerivativeTriplet>& MortarCoupling::gap_derivatives() const {
-  return require(*impl_, impl_->dg);
 }
 
 }  // namespace grout

@@ -14,6 +14,7 @@
 #include "grout/mortar_coupling.hpp"
 #include "kernels/coarse_search.hpp"
 #include "kernels/mortar_types.hpp"
+#include "node_directory.hpp"
 
 namespace grout {
 
@@ -124,6 +125,19 @@ struct MortarCoupling::Impl {
   bool tangents_ready = false;     ///< tangents are filled on first read after an update
   int pairs = 0;
   std::vector<DerivativeTriplet> dD, dM, dg;
+  /// The host's slave rows then master rows, by id: owners and sums over the ranks.
+  NodeDirectory directory;
+  std::vector<int> slave_owner, master_owner;  ///< per host row: the owning rank
+  std::vector<RowStatus> status;               ///< per slave row (fill_row_status)
+  bool status_ready = false;
+
+  /// row_status from c_j (D_jj or Σ_k D_jk) and w_j = ∫ N¹_j dA over the row's own faces,
+  /// both summed over the ranks by id (mortar_coupling_status.cpp). Collective.
+  void fill_row_status();
+  /// The orientation check's local sums over the overlapping pairs of the values path:
+  /// sums[0] = Σ overlap n_s·n_m, sums[1] = Σ overlap; bad = the first (slave face id, master
+  /// face id) with n_s·n_m > 0, or (−1, −1).
+  void orientation_sums(double sums[2], long long bad[2]) const;
 
   void build();  ///< surface, host_row, row maps and views from the face sets
   /// x (derivatives) or coords (values) from the host arrays; false if one is not finite.

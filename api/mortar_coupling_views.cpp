@@ -25,7 +25,8 @@ const T* row_major(const View& v, std::vector<T>& buffer) {
 
 /// SurfaceArrays over SurfaceViews (strided Views gathered into the buffers).
 SurfaceArrays arrays_of(const SurfaceViews& v, const char* side, int dim, std::vector<int>& faces,
-                        std::vector<double>& x, std::vector<long long>& ids) {
+                        std::vector<double>& x, std::vector<long long>& ids,
+                        std::vector<double>& inside) {
   const std::string what = std::string("grout::MortarCoupling: ") + side + " surface: ";
   if (int(v.coordinates.extent(1)) != dim)
     throw MortarCouplingError(what + "coordinates View is " +
@@ -46,6 +47,14 @@ SurfaceArrays arrays_of(const SurfaceViews& v, const char* side, int dim, std::v
     for (std::size_t i = 0; i < a.n_nodes; ++i) ids[i] = v.node_ids(i);
     a.node_ids = ids.data();
   }
+  if (v.inside_points.extent(0) > 0) {
+    if (v.inside_points.extent(0) != a.n_faces || int(v.inside_points.extent(1)) != dim)
+      throw MortarCouplingError(
+          what + "inside_points View is " + std::to_string(v.inside_points.extent(0)) + " × " +
+          std::to_string(v.inside_points.extent(1)) + ", " + std::to_string(a.n_faces) + " × " +
+          std::to_string(dim) + " expected (n_faces × dim)");
+    a.inside_points = row_major<double>(v.inside_points, inside);
+  }
   return a;
 }
 
@@ -58,6 +67,7 @@ struct ViewBuffers {
   std::vector<int> faces[2];
   std::vector<double> x[2];
   std::vector<long long> ids[2];
+  std::vector<double> inside[2];
 };
 
 }  // namespace
@@ -68,8 +78,8 @@ MortarCoupling::MortarCoupling(const SurfaceViews& slave, const SurfaceViews& ma
   SurfaceArrays s, m;
   const int dim = dim_of(slave);
   agree_on_error(comm, [&] {
-    s = arrays_of(slave, "slave", dim, b.faces[0], b.x[0], b.ids[0]);
-    m = arrays_of(master, "master", dim, b.faces[1], b.x[1], b.ids[1]);
+    s = arrays_of(slave, "slave", dim, b.faces[0], b.x[0], b.ids[0], b.inside[0]);
+    m = arrays_of(master, "master", dim, b.faces[1], b.x[1], b.ids[1], b.inside[1]);
   });
   *this = MortarCoupling(dim, s, m, options, comm);
 }

@@ -59,8 +59,8 @@ void warn_of_folded_elements(const SolidProblem& solid, const Vector& u, int ste
       "grout: warning: step %d (t = %g): global element %lld of block '%s' is folded: det F = "
       "%.3g at its local node %d (det F > 0 at its Gauss points); its corner is "
       "inside out: refine the mesh there or reduce the load (docs/robustness.md)\n",
-      step, time, static_cast<long long>(folded.element + 1), folded.block.c_str(),
-      folded.corner + 1, folded.det_F);
+      step, time, static_cast<long long>(folded.element + 1), folded.block.c_str(), folded.det_F,
+      folded.corner + 1);
   std::fflush(stderr);
 }
 

@@ -131,13 +131,19 @@ void SolidProblem::build_blocks(const Partition& partition) {
     lb.name = block.name;
     lb.topology = block.topology;
     lb.nodes_per_element = npe;
-    lb.constants =
-        elastic_constants(material.youngs_modulus, material.poissons_ratio, dim_, plane_stress);
+    lb.finite_strain = input_.model.strain == StrainKind::finite;
+    // Finite-strain plane stress: the 3D Lamé constants and a law that finds F33 from S33 = 0
+    // (kernels/plane_stress_material.hpp); small strain: the plane-stress lambda* instead.
+    lb.constants = elastic_constants(material.youngs_modulus, material.poissons_ratio, dim_,
+                                     plane_stress && !lb.finite_strain);
     lb.poissons_ratio = material.poissons_ratio;
     lb.density = material.density;
-    lb.finite_strain = input_.model.strain == StrainKind::finite;
-    lb.law = material.law == MaterialLaw::neo_hookean ? HyperelasticLaw::neo_hookean
-                                                      : HyperelasticLaw::saint_venant_kirchhoff;
+    const bool neo_hookean = material.law == MaterialLaw::neo_hookean;
+    if (dim_ == 2 && plane_stress)
+      lb.law = neo_hookean ? HyperelasticLaw::neo_hookean_plane_stress
+                           : HyperelasticLaw::saint_venant_kirchhoff_plane_stress;
+    else
+      lb.law = neo_hookean ? HyperelasticLaw::neo_hookean : HyperelasticLaw::saint_venant_kirchhoff;
     lb.nodes = Kokkos::View<int**>("grout::block_nodes", local.size(), npe);
     lb.global = Kokkos::View<GlobalIndex*>("grout::block_elements", local.size());
     lb.owned = Kokkos::View<bool*>("grout::block_owned", local.size());

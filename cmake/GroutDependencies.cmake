@@ -16,6 +16,16 @@ if(NOT TARGET grout_kokkos_deps)
     trilinos_teuchoscore MPI::MPI_CXX)
 endif()
 
+# Kokkos, Teuchos (its core, parser, parameter list and comm libraries: Sacado's headers, which
+# the contact evaluation includes, use Teuchos' RCP and TimeMonitor) and MPI only: what the
+# embedding API (Grout::mortar) and the contact code it runs link (api/CMakeLists.txt).
+if(NOT TARGET grout_kokkos_core_deps)
+  add_library(grout_kokkos_core_deps INTERFACE)
+  target_include_directories(grout_kokkos_core_deps SYSTEM INTERFACE ${Kokkos_INCLUDE_DIRS})
+  target_link_libraries(grout_kokkos_core_deps INTERFACE ${Kokkos_LIBRARIES} trilinos_teuchoscomm
+    MPI::MPI_CXX)
+endif()
+
 # The whole Trilinos closure plus MPI: what assembly/ and nonlinear/ use.
 if(NOT TARGET grout_trilinos_deps)
   add_library(grout_trilinos_deps INTERFACE)

@@ -30,7 +30,6 @@
 #include "io/errors.hpp"
 #include "io/exodus.hpp"
 #include "io/input.hpp"
-#include "io/mesh_bodies.hpp"
 #include "nonlinear/dynamic_stepping.hpp"
 #include "nonlinear/linear_solver.hpp"
 #include "nonlinear/load_stepping.hpp"
@@ -95,10 +94,8 @@ void run(const std::string& input_path, const std::string& output_dir,
   const SolidProblem solid(mesh, input, comm);
   MechanicsProblem problem(solid, mesh, input);
   const NewtonOptions& newton = input.solver.newton;
-  LinearSolver linear(input.solver.linear);
-  linear.set_multiplier_pairing(problem.multiplier_pairing(), mesh.dimension);
-  linear.set_coordinates(mesh.coordinates, mesh.dimension);
-  linear.set_node_bodies(node_bodies(mesh));
+  const SystemLayout layout = system_layout(problem, mesh);  // pairing, coordinates, bodies
+  LinearSolver linear(input.solver.linear, layout);
   std::unique_ptr<ResultsOutput> output;
   agree_on_errors(*comm,
                   [&] { output = std::make_unique<ResultsOutput>(mesh, input, solid, problem); });
@@ -124,16 +121,12 @@ void run(const std::string& input_path, const std::string& output_dir,
     // Implicit dynamics: the same problem with inertia, one time step after the other.
     DynamicProblem dynamic(problem, mesh.dimension,
                            assemble_mass_matrix(solid, input.dynamics.mass == MassKind::lumped),
-                           time_integrator_from(input.dynamics), input.gravity,
-                           *initial_velocity(solid, mesh, input), input.dynamics.stabilized_contact,
-                           input.dynamics.velocity_update, input.dynamics.sliding_update,
-                           input.dynamics.sliding_balance);
+                           make_time_integrator(input.dynamics), input.gravity,
+                           *initial_velocity(solid, mesh, input),
+                           contact_treatment_of(input.dynamics), layout.node_bodies);
     LinearSolverSettings mass_settings;  // type: auto
     mass_settings.where = input.file + ": mass matrix";
-    LinearSolver mass_solver(mass_settings);
-    // The dimension picks `auto`'s solver (MUMPS in 3D); without it a 3D mass matrix went to
-    // KLU2, whose 3D factorisations are 20-80x slower (docs/performance.md).
-    mass_solver.set_coordinates(mesh.coordinates, mesh.dimension);
+    LinearSolver mass_solver(mass_settings, mass_matrix_layout(mesh));
     solve_time_steps(dynamic, linear, mass_solver, newton, stepping, write_step);
   } else {
     solve_load_steps(problem, linear, newton, stepping, write_step);

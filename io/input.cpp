@@ -198,8 +198,6 @@ ModelInput read_model(const Section& grout) {
   m.dimension = model.integer("dimension");
   m.plane = model.string("plane") == "stress" ? PlaneKind::stress : PlaneKind::strain;
   m.strain = model.string("strain") == "finite" ? StrainKind::finite : StrainKind::small;
-  if (m.strain == StrainKind::finite && m.dimension == 2 && m.plane == PlaneKind::stress)
-    model.fail("plane", "plane stress is not available with strain: finite (use plane: strain)");
   return m;
 }
 

@@ -6,13 +6,15 @@
 //
 // so that ∫_e Φ_j N_k dA = δ_jk ∫_e N_j dA. LINE2 has the closed form Φ₁ = 2N₁ − N₂,
 // Φ₂ = 2N₂ − N₁ (its Jacobian is constant). This header also holds the generic small dense
-// inverse and A_e = D_e M_e⁻¹ that the TRI3/QUAD4 code (dual_basis_3d.hpp) reuses.
+// inverse (on small_dense_lu.hpp) and A_e = D_e M_e⁻¹ that the TRI3/QUAD4 code
+// (dual_basis_3d.hpp) reuses.
 
 #include <cmath>
 
 #include "kernels/gauss_line.hpp"
 #include "kernels/kernel_macros.hpp"
 #include "kernels/mortar_types.hpp"
+#include "kernels/small_dense_lu.hpp"
 
 namespace grout {
 
@@ -31,8 +33,9 @@ GROUT_INLINE_FUNCTION void line2_dual_shape(const Scalar& xi, Scalar Phi[2]) {
   Phi[1] = 0.5 * (1.0 + 3.0 * xi);
 }
 
-/// \brief Ainv = A⁻¹ for a small dense N×N matrix, Gauss–Jordan elimination with partial
-/// pivoting (pivots chosen on the value part, so it is valid for Sacado scalars).
+/// \brief Ainv = A⁻¹ for a small dense N×N matrix by the small dense LU with partial pivoting
+/// (kernels/small_dense_lu.hpp; pivots chosen on the value part, so it is valid for Sacado
+/// scalars).
 /// \return degenerate if a pivot is below 1e-14 · max|A_ij| (singular to working precision).
 template <class Scalar, int N>
 GROUT_INLINE_FUNCTION MortarStatus invert_small_matrix(const Scalar A[N][N], Scalar Ainv[N][N]) {
@@ -43,39 +46,14 @@ GROUT_INLINE_FUNCTION MortarStatus invert_small_matrix(const Scalar A[N][N], Sca
   for (int i = 0; i < N; ++i)
     for (int j = 0; j < N; ++j) {
       a[i][j] = A[i][j];
-      Ainv[i][j] = (i == j) ? 1.0 : 0.0;
       if (abs(A[i][j]) > scale) scale = abs(A[i][j]);
     }
   if (!(scale > 0.0)) return MortarStatus::degenerate;
-  for (int c = 0; c < N; ++c) {
-    int p = c;
-    for (int r = c + 1; r < N; ++r)
-      if (abs(a[r][c]) > abs(a[p][c])) p = r;
-    if (!(abs(a[p][c]) > 1e-14 * scale)) return MortarStatus::degenerate;
-    if (p != c)
-      for (int j = 0; j < N; ++j) {
-        const Scalar t = a[c][j];
-        a[c][j] = a[p][j];
-        a[p][j] = t;
-        const Scalar u = Ainv[c][j];
-        Ainv[c][j] = Ainv[p][j];
-        Ainv[p][j] = u;
-      }
-    const Scalar inv_pivot = 1.0 / a[c][c];
-    for (int j = 0; j < N; ++j) {
-      a[c][j] *= inv_pivot;
-      Ainv[c][j] *= inv_pivot;
-    }
-    for (int r = 0; r < N; ++r) {
-      if (r == c) continue;
-      const Scalar f = a[r][c];
-      for (int j = 0; j < N; ++j) {
-        a[r][j] -= f * a[c][j];
-        Ainv[r][j] -= f * Ainv[c][j];
-      }
-    }
-  }
-  return MortarStatus::ok;
+  const Scalar singular_at = 1e-14 * scale;
+  int pivot[N];
+  return small_lu_invert(N, &a[0][0], N, pivot, &Ainv[0][0], N, singular_at)
+             ? MortarStatus::ok
+             : MortarStatus::degenerate;
 }
 
 /// \brief Dual-basis coefficients A_e = D_e M_e⁻¹ (Popp et al. 2010, eq. 26) from

@@ -16,6 +16,7 @@
 
 #include "kernels/kernel_macros.hpp"
 #include "kernels/mortar_types.hpp"
+#include "kernels/scalar_value.hpp"
 
 namespace grout {
 
@@ -150,15 +151,6 @@ GROUT_INLINE_FUNCTION void plane_basis(const Scalar normal[3], const Scalar e[3]
 }
 
 namespace detail3d {
-/// Value part of a scalar: the double itself, or the value of a Sacado Fad (its .val()).
-GROUT_INLINE_FUNCTION double value_of(double x) {
-  return x;
-}
-template <class Scalar>
-GROUT_INLINE_FUNCTION auto value_of(const Scalar& x) -> decltype(x.val()) {
-  return x.val();
-}
-
 /// One Newton step ξ ← ξ − J⁻¹ (Σ N_i(ξ) p_i − y) of face_inverse_map_2d; Δξ in d.
 template <class Scalar>
 GROUT_INLINE_FUNCTION MortarStatus inverse_map_step(int n, const Scalar p[max_face_nodes][2],
@@ -199,10 +191,10 @@ GROUT_INLINE_FUNCTION MortarStatus face_inverse_map_2d(int n, const Scalar p[max
   using std::abs;
   if constexpr (!std::is_same<Scalar, double>::value) {
     if (n == 4) {  // converge on the values, then one step with derivatives (see above)
-      double pv[max_face_nodes][2], yv[2] = {detail3d::value_of(y[0]), detail3d::value_of(y[1])};
+      double pv[max_face_nodes][2], yv[2] = {value_of(y[0]), value_of(y[1])};
       double xv[2];
       for (int i = 0; i < n; ++i)
-        for (int a = 0; a < 2; ++a) pv[i][a] = detail3d::value_of(p[i][a]);
+        for (int a = 0; a < 2; ++a) pv[i][a] = value_of(p[i][a]);
       const MortarStatus s = face_inverse_map_2d(n, pv, yv, xv);
       if (s != MortarStatus::ok) return s;
       xi[0] = xv[0];

@@ -12,19 +12,43 @@
 //   S = lambda tr(E) I + 2 mu E,   P = F S.
 // Both reduce to small-strain linear elasticity with the same Lamé constants for |F - I| -> 0.
 // F is always 3 x 3: plane strain is F = [[F11, F12, 0], [F21, F22, 0], [0, 0, 1]], and the
-// out-of-plane P_33 is what the Cauchy stress sigma_zz needs.
+// out-of-plane P_33 is what the Cauchy stress sigma_zz needs. Plane stress (the *_plane_stress
+// laws): the law reads the in-plane F (or C) only and sets F_33 (C_33) itself so that S_33 = 0
+// (kernels/plane_stress_material.hpp), then evaluates the 3D law at the completed F (or C);
+// P_33 = S_33 = 0 to round-off and W is the sheet's energy density per unit reference volume.
 // Templated on the scalar (double or a Sacado Fad): the tangent dP/dF comes from AD.
 
 #include <Kokkos_Core.hpp>
 #include <cmath>
 
 #include "kernels/linear_elastic.hpp"
+#include "kernels/plane_stress_material.hpp"
 
 namespace grout {
 
 /// Hyperelastic law of a finite-strain solid (the `linear_elastic` input law under
-/// `strain: finite` is St. Venant-Kirchhoff).
-enum class HyperelasticLaw : int { saint_venant_kirchhoff = 0, neo_hookean = 1 };
+/// `strain: finite` is St. Venant-Kirchhoff); the *_plane_stress laws are the same laws in a 2D
+/// model with `plane: stress` (F_33 from S_33 = 0; file comment).
+enum class HyperelasticLaw : int {
+  saint_venant_kirchhoff = 0,
+  neo_hookean = 1,
+  saint_venant_kirchhoff_plane_stress = 2,
+  neo_hookean_plane_stress = 3
+};
+
+/// True for the laws that find F_33 from S_33 = 0.
+KOKKOS_INLINE_FUNCTION constexpr bool is_plane_stress(HyperelasticLaw law) {
+  return law == HyperelasticLaw::saint_venant_kirchhoff_plane_stress ||
+         law == HyperelasticLaw::neo_hookean_plane_stress;
+}
+
+/// The 3D law behind a plane-stress law (the law itself otherwise).
+KOKKOS_INLINE_FUNCTION constexpr HyperelasticLaw three_dimensional_law(HyperelasticLaw law) {
+  return law == HyperelasticLaw::saint_venant_kirchhoff_plane_stress
+             ? HyperelasticLaw::saint_venant_kirchhoff
+         : law == HyperelasticLaw::neo_hookean_plane_stress ? HyperelasticLaw::neo_hookean
+                                                            : law;
+}
 
 /// Outcome of a material evaluation.
 enum class MaterialStatus : int { ok = 0, collapsed = 1 };  ///< collapsed: det F <= 0
@@ -49,9 +73,54 @@ KOKKOS_INLINE_FUNCTION Scalar determinant_and_inverse_transpose(const Scalar A[3
   return det;
 }
 
+/// \brief The full F of a plane-stress law: F_out = F with F_33 = sqrt(C_33) from S_33 = 0
+/// (plane_stress_thickness_C33; C_2 = F_2^T F_2 of the in-plane F_2) and F_13 = F_23 = F_31 =
+/// F_32 = 0; any other law: F_out = F.
+/// \return collapsed if det F_2 <= 0 or no C_33 > 0 with S_33 = 0 exists (F_out then
+/// undefined).
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION MaterialStatus complete_deformation_gradient(HyperelasticLaw law,
+                                                                    ElasticConstants c,
+                                                                    const Scalar F[3][3],
+                                                                    Scalar F_out[3][3]) {
+  using std::sqrt;
+  for (int i = 0; i < 3; ++i)
+    for (int J = 0; J < 3; ++J) F_out[i][J] = F[i][J];
+  if (!is_plane_stress(law)) return MaterialStatus::ok;
+  if (!(F[0][0] * F[1][1] - F[0][1] * F[1][0] > 0.0)) return MaterialStatus::collapsed;
+  Scalar C[3][3];
+  for (int I = 0; I < 2; ++I)
+    for (int K = 0; K < 2; ++K) C[I][K] = F[0][I] * F[0][K] + F[1][I] * F[1][K];
+  Scalar C33;
+  if (!plane_stress_thickness_C33(law == HyperelasticLaw::neo_hookean_plane_stress, c, C, C33))
+    return MaterialStatus::collapsed;
+  for (int k = 0; k < 2; ++k) F_out[k][2] = F_out[2][k] = 0.0;
+  F_out[2][2] = sqrt(C33);
+  return MaterialStatus::ok;
+}
+
+/// \brief The full C of a plane-stress law: C_out = C with C_33 from S_33 = 0
+/// (plane_stress_thickness_C33) and C_13 = C_23 = 0; any other law: C_out = C.
+/// \return collapsed if det C_2 <= 0 or no C_33 > 0 exists (C_out then undefined).
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION MaterialStatus complete_right_cauchy_green(HyperelasticLaw law,
+                                                                  ElasticConstants c,
+                                                                  const Scalar C[3][3],
+                                                                  Scalar C_out[3][3]) {
+  for (int I = 0; I < 3; ++I)
+    for (int K = 0; K < 3; ++K) C_out[I][K] = C[I][K];
+  if (!is_plane_stress(law)) return MaterialStatus::ok;
+  for (int k = 0; k < 2; ++k) C_out[k][2] = C_out[2][k] = 0.0;
+  if (!plane_stress_thickness_C33(law == HyperelasticLaw::neo_hookean_plane_stress, c, C,
+                                  C_out[2][2]))
+    return MaterialStatus::collapsed;
+  return MaterialStatus::ok;
+}
+
 /// \brief First Piola-Kirchhoff stress P(F) and strain energy density W(F) of `law` with Lamé
 /// constants c (formulas in the file comment).
-/// \pre F: the full 3 x 3 deformation gradient (plane strain: F33 = 1, F13 = F23 = F31 = F32 = 0).
+/// \pre F: the full 3 x 3 deformation gradient (plane strain: F33 = 1, F13 = F23 = F31 = F32 = 0;
+/// plane stress: only the in-plane F is read).
 /// \return collapsed if det F <= 0 (P and W then undefined); the check applies to both laws:
 /// St. Venant-Kirchhoff has a finite energy there, but the configuration is not admissible.
 template <class Scalar>
@@ -59,6 +128,13 @@ KOKKOS_INLINE_FUNCTION MaterialStatus first_piola_kirchhoff(HyperelasticLaw law,
                                                             const Scalar F[3][3], Scalar P[3][3],
                                                             Scalar& W) {
   using std::log;
+  Scalar F_plane_stress[3][3];
+  if (is_plane_stress(law)) {
+    if (complete_deformation_gradient(law, c, F, F_plane_stress) != MaterialStatus::ok)
+      return MaterialStatus::collapsed;
+    F = F_plane_stress;
+    law = three_dimensional_law(law);
+  }
   Scalar F_inv_T[3][3];
   const Scalar J = determinant_and_inverse_transpose(F, F_inv_T);
   if (!(J > 0.0)) return MaterialStatus::collapsed;
@@ -131,7 +207,8 @@ KOKKOS_INLINE_FUNCTION Scalar strain_energy_of_C(HyperelasticLaw law, ElasticCon
 ///   E.
 /// The energy-momentum element evaluates the law at C_{n+1/2} = (C_n + C_{n+1})/2, which is no
 /// F^T F of a configuration (kernels/energy_momentum.hpp).
-/// \pre C symmetric; 3 x 3 (plane strain: C33 = 1, C13 = C23 = 0).
+/// \pre C symmetric; 3 x 3 (plane strain: C33 = 1, C13 = C23 = 0; plane stress: only the
+/// in-plane C is read).
 /// \return collapsed if det C <= 0 (S and W then undefined).
 template <class Scalar>
 KOKKOS_INLINE_FUNCTION MaterialStatus second_piola_kirchhoff(HyperelasticLaw law,
@@ -139,6 +216,13 @@ KOKKOS_INLINE_FUNCTION MaterialStatus second_piola_kirchhoff(HyperelasticLaw law
                                                              const Scalar C[3][3], Scalar S[3][3],
                                                              Scalar& W) {
   using std::log;
+  Scalar C_plane_stress[3][3];
+  if (is_plane_stress(law)) {
+    if (complete_right_cauchy_green(law, c, C, C_plane_stress) != MaterialStatus::ok)
+      return MaterialStatus::collapsed;
+    C = C_plane_stress;
+    law = three_dimensional_law(law);
+  }
   const bool neo_hookean = law == HyperelasticLaw::neo_hookean;
   Scalar C_inv[3][3];  // C symmetric: C^-T = C^-1 (Neo-Hookean only)
   const Scalar det_C = determinant_and_inverse_transpose(C, neo_hookean ? C_inv : nullptr);
@@ -165,6 +249,13 @@ KOKKOS_INLINE_FUNCTION MaterialStatus second_piola_kirchhoff(HyperelasticLaw law
 template <class Scalar>
 KOKKOS_INLINE_FUNCTION MaterialStatus strain_energy_of_C(HyperelasticLaw law, ElasticConstants c,
                                                          const Scalar C[3][3], Scalar& W) {
+  Scalar C_plane_stress[3][3];
+  if (is_plane_stress(law)) {
+    if (complete_right_cauchy_green(law, c, C, C_plane_stress) != MaterialStatus::ok)
+      return MaterialStatus::collapsed;
+    C = C_plane_stress;
+    law = three_dimensional_law(law);
+  }
   const Scalar det_C = determinant_and_inverse_transpose<Scalar>(C, nullptr);
   if (!(det_C > 0.0)) return MaterialStatus::collapsed;
   W = detail::strain_energy_of_C(law, c, C, det_C);

@@ -2,7 +2,7 @@
 // Averaged nodal normals and nodal tangents of a contact surface, from current coordinates
 // (launches over Views; the per-face math is in face_normal.hpp):
 //
-//   nodal normal     n_j = Σ_{e∋j} n_e / |Σ_{e∋j} n_e|              (DESIGN.md §2;
+//   nodal normal     n_j = Σ_{e∋j} n_e / |Σ_{e∋j} n_e|              (docs/design.md §2;
 //                    Popp et al. 2010, eq. 4: unweighted average of unit element normals n_e)
 //   tangents         tangent_2d / tangents_3d of n_j (face_normal.hpp).
 

@@ -1,13 +1,16 @@
 #pragma once
-// Total-Lagrangian finite-strain solid element (tri3, quad4 in plane strain; tet4, hex8 in
-// 3D): internal force, its tangent by forward AD, the stored energy and the Cauchy stress.
+// Total-Lagrangian finite-strain solid element (tri3, quad4 in plane strain or plane stress;
+// tet4, hex8 in 3D): internal force, its tangent by forward AD, the stored energy and the Cauchy
+// stress.
 //
 //   F = I + grad_X u,  F_iJ = delta_iJ + sum_a u_ai dN_a/dX_J,
 //   f_int_{a i} = int_{Omega_0} P_iJ(F) dN_a/dX_J dV,      Pi_int = int_{Omega_0} W(F) dV
 // (Bonet & Wood, Nonlinear Continuum Mechanics for Finite Element Analysis, 2nd ed., §8.3,
 // eq. 8.13; Belytschko, Liu & Moran, Nonlinear Finite Elements, §4.4). f_int = dPi_int/du.
 // P and W come from first_piola_kirchhoff (kernels/hyperelastic_material.hpp); the element
-// knows nothing of the law. Plane strain: F33 = 1, unit thickness. Full Gauss integration as
+// knows nothing of the law. Plane strain: F33 = 1, unit thickness; plane stress (the
+// *_plane_stress laws): the law sets F33 itself, unit reference thickness, so that f_int and
+// Pi_int are per unit reference thickness. Full Gauss integration as
 // the small-strain element. The tangent K = d f_int / d u is the Jacobian of the same
 // function evaluated with Sacado forward-AD scalars (exact to round-off).
 
@@ -99,7 +102,8 @@ KOKKOS_INLINE_FUNCTION ElementStatus total_lagrangian_force_and_tangent(
 ///   sigma_avg = int_{Omega} sigma dv / int_{Omega} dv = int_{Omega_0} P F^T dV / int_{Omega_0} J
 ///   dV,
 /// in the Voigt order of linear_elastic_stress (2D: xx, yy, xy, zz; 3D: xx, yy, zz, xy, yz, xz).
-/// In plane strain sigma_zz = P_33 / J from the law with F33 = 1.
+/// In plane strain sigma_zz = P_33 / J from the law with F33 = 1; in plane stress F33 and J
+/// are the law's (complete_deformation_gradient) and sigma_zz = 0 to round-off.
 /// \pre X, u: [nodes * dimension] node-major; stress: room for 6.
 /// \return as total_lagrangian_element (stress undefined unless ok).
 KOKKOS_INLINE_FUNCTION ElementStatus
@@ -118,8 +122,10 @@ total_lagrangian_cauchy_stress(Topology topology, int dimension, const double* X
     const ElementStatus status = shape_gradients(topology, dim, X, p.xi, nullptr, G, det_J);
     if (status != ElementStatus::ok) return status;
     const double dV = p.weight * det_J;
-    double F[3][3];
-    deformation_gradient(dim, nodes, u, G, F);
+    double F_2[3][3], F[3][3];
+    deformation_gradient(dim, nodes, u, G, F_2);
+    if (complete_deformation_gradient(law, c, F_2, F) != MaterialStatus::ok)  // plane stress: F33
+      return ElementStatus::collapsed;
     double P[3][3], W = 0.0;
     if (first_piola_kirchhoff(law, c, F, P, W) != MaterialStatus::ok)
       return ElementStatus::collapsed;

@@ -1,6 +1,6 @@
 #pragma once
 // Weighted gap and weighted slip increment per slave node from (slave, master) pair results
-// (DESIGN.md §2; Popp et al. 2010, eq. 30; Gitterle, Popp, Gee, Wall, IJNME 84 (2010) §3):
+// (docs/design.md §2; Popp et al. 2010, eq. 30; Gitterle, Popp, Gee, Wall, IJNME 84 (2010) §3):
 //
 //   g̃_j     = −n_j · (D_jj x¹_j − Σ_l M_jl x²_l)          (positive = open)
 //   ũ_τ,j   =  τ_j · (D_jj Δx¹_j − Σ_l M_jl Δx²_l)        (increment over a step)

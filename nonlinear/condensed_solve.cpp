@@ -11,6 +11,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "kernels/small_dense_lu.hpp"
 #include "nonlinear/row_table.hpp"
 
 namespace grout {
@@ -198,35 +199,21 @@ struct MultiplierCondensation::Impl {
     for (int k = 0; k < n; ++k) blocks[root(k)].push_back(k);
     inverse_rows.assign(n, {});
     for (const auto& [r, members] : blocks) {
-      // Gauss–Jordan with partial pivoting on the block [P_b | I].
+      // P_b⁻¹ by the small dense LU with partial pivoting (kernels/small_dense_lu.hpp);
+      // singular: an exactly zero pivot.
       const int m = int(members.size());
-      std::vector<double> a(std::size_t(m) * 2 * m, 0.0);
-      for (int x = 0; x < m; ++x) {
-        for (int y = 0; y < m; ++y)
-          a[x * 2 * m + y] = P_all[std::size_t(members[x]) * n + members[y]];
-        a[x * 2 * m + m + x] = 1.0;
-      }
-      for (int c = 0; c < m; ++c) {
-        int best = c;
-        for (int x = c + 1; x < m; ++x)
-          if (std::abs(a[x * 2 * m + c]) > std::abs(a[best * 2 * m + c])) best = x;
-        if (a[best * 2 * m + c] == 0.0)
-          throw std::runtime_error(
-              "condense_multipliers: singular pivot block for the multipliers "
-              "of prescribed slave dofs on tied or sticking nodes");
-        for (int y = 0; y < 2 * m; ++y) std::swap(a[c * 2 * m + y], a[best * 2 * m + y]);
-        const double d = a[c * 2 * m + c];
-        for (int y = 0; y < 2 * m; ++y) a[c * 2 * m + y] /= d;
-        for (int x = 0; x < m; ++x)
-          if (x != c && a[x * 2 * m + c] != 0.0) {
-            const double f = a[x * 2 * m + c];
-            for (int y = 0; y < 2 * m; ++y) a[x * 2 * m + y] -= f * a[c * 2 * m + y];
-          }
-      }
+      std::vector<double> a(std::size_t(m) * m), inverse(std::size_t(m) * m);
+      std::vector<int> pivot(static_cast<std::size_t>(m));
+      for (int x = 0; x < m; ++x)
+        for (int y = 0; y < m; ++y) a[x * m + y] = P_all[std::size_t(members[x]) * n + members[y]];
+      if (!small_lu_invert(m, a.data(), m, pivot.data(), inverse.data(), m))
+        throw std::runtime_error(
+            "condense_multipliers: singular pivot block for the multipliers "
+            "of prescribed slave dofs on tied or sticking nodes");
       // P λ = q: rows of P are pivot rows k, columns multipliers j, so λ_j = Σ_k P⁻¹[j][k] q_k.
       for (int x = 0; x < m; ++x)
         for (int y = 0; y < m; ++y)
-          if (const double v = a[x * 2 * m + m + y]; v != 0.0)
+          if (const double v = inverse[x * m + y]; v != 0.0)
             inverse_rows[members[x]].emplace_back(members[y], v);
     }
   }
@@ -313,7 +300,8 @@ const MultiplierCondensation::Statistics& MultiplierCondensation::statistics() c
   return impl_->stats;
 }
 
-void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
+void MultiplierCondensation::condense(const Matrix& J, const Vector& b,
+                                      const MultiplierRows* declared) {
   Impl& m = *impl_;
   const auto comm = J.getRowMap()->getComm();
   const auto& row_map = *J.getRowMap();
@@ -326,6 +314,7 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
   enum { kIsIdentity, kLambda, kDiagonalOnly, kSlaveValue, kPivot, kInNodeRows, kFields };
   std::vector<double> local(std::size_t(n_pairs) * kFields, 0.0), global(local.size(), 0.0);
   std::vector<std::pair<int, int>> slave_lambda_columns;  // (pair, other pair) in slave rows
+  GO declared_mismatch = -1;  // a declared identity row of J with more than its diagonal
   for (LO i = 0; i < LO(row_map.getNodeNumElements()); ++i) {
     const GO g = row_map.getGlobalElement(i);
     const Row& row = m.rows.at(g);
@@ -337,7 +326,12 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
           diagonal += row.vals[e];
         else
           only_diagonal = false;
-      if (only_diagonal && diagonal != 0.0) {
+      bool identity = only_diagonal && diagonal != 0.0;
+      if (const LambdaRow* kind = declared ? declared->find(g) : nullptr) {
+        if (*kind == LambdaRow::identity && !identity) declared_mismatch = g;
+        identity = *kind == LambdaRow::identity || (*kind == LambdaRow::pure_lambda && identity);
+      }
+      if (identity) {
         local[p * kFields + kIsIdentity] = 1.0;
         local[p * kFields + kLambda] = row.rhs / diagonal;
       }
@@ -367,6 +361,13 @@ void MultiplierCondensation::condense(const Matrix& J, const Vector& b) {
   }
   if (n_pairs > 0)
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, int(local.size()), local.data(), global.data());
+  {
+    GO mismatch = -1;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, declared_mismatch, Teuchos::outArg(mismatch));
+    if (mismatch >= 0)
+      throw std::logic_error("MultiplierCondensation: multiplier row " + std::to_string(mismatch) +
+                             " is declared an identity row but holds more than its diagonal");
+  }
   m.kind.assign(n_pairs, kIdentity);
   m.lambda_known.assign(n_pairs, 0.0);
   m.slave_known.assign(n_pairs, 0.0);

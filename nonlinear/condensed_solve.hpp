@@ -54,6 +54,7 @@
 #include <vector>
 
 #include "assembly/tpetra_types.hpp"
+#include "nonlinear/multiplier_rows.hpp"
 
 namespace grout {
 
@@ -70,7 +71,12 @@ class MultiplierCondensation {
 
   /// Build the reduced system of J x = b (collective). J fill-complete with row map = range
   /// map = domain map = b's map.
-  void condense(const Matrix& J, const Vector& b);
+  /// `declared` (optional): the kinds of the multiplier rows as their writer declares them
+  /// (multiplier_rows.hpp): a pair is of kind A iff its λ-row is declared an identity (or
+  /// pure-λ on its own multiplier alone); undeclared rows are classified from J. Throws
+  /// std::logic_error, on every rank, if a declared identity row of J holds anything but its
+  /// diagonal.
+  void condense(const Matrix& J, const Vector& b, const MultiplierRows* declared = nullptr);
   /// The reduced matrix and right-hand side, on the displacement dofs of J's row map.
   Teuchos::RCP<const Matrix> matrix() const;
   const Vector& rhs() const;

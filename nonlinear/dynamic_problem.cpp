@@ -1,6 +1,7 @@
 #include "nonlinear/dynamic_problem.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -9,19 +10,37 @@
 
 namespace grout {
 
+namespace {
+
+// What each ContactTreatment (io/contact_treatment.hpp) does.
+bool stabilized(ContactTreatment c) {
+  return c != ContactTreatment::standard;
+}
+bool velocity_update(ContactTreatment c) {
+  return c == ContactTreatment::velocity_update_impact ||
+         c == ContactTreatment::velocity_update_tangential ||
+         c == ContactTreatment::velocity_update_balanced;
+}
+bool sliding_update(ContactTreatment c) {
+  return c == ContactTreatment::velocity_update_tangential ||
+         c == ContactTreatment::velocity_update_balanced;
+}
+bool sliding_balance(ContactTreatment c) {
+  return c == ContactTreatment::velocity_update_balanced;
+}
+
+}  // namespace
+
 DynamicProblem::DynamicProblem(MechanicsProblem& problem, int dimension,
-                               Teuchos::RCP<const Matrix> mass, const TimeIntegrator& integrator,
+                               Teuchos::RCP<const Matrix> mass,
+                               std::unique_ptr<const TimeIntegrator> integrator,
                                const std::array<double, 3>& gravity, const Vector& v0,
-                               bool stabilized_contact, bool velocity_update, bool sliding_update,
-                               bool sliding_balance)
+                               ContactTreatment contact, const std::vector<int>& body_of_node)
     : problem_(problem),
       mass_(std::move(mass)),
-      integrator_(integrator),
-      dim_(dimension),
-      stabilized_contact_(stabilized_contact),
-      velocity_update_(stabilized_contact && velocity_update),
-      sliding_update_(stabilized_contact && velocity_update && sliding_update),
-      sliding_balance_(sliding_update_ && sliding_balance) {
+      integrator_(std::move(integrator)),
+      contact_(contact),
+      dim_(dimension) {
   const auto u_map = mass_->getRowMap();
   num_owned_u_ = int(u_map->getNodeNumElements());
   auto make = [&] { return Teuchos::rcp(new Vector(u_map)); };
@@ -36,22 +55,16 @@ DynamicProblem::DynamicProblem(MechanicsProblem& problem, int dimension,
   }
   mass_->apply(g, *f_gravity_);
   free_.assign(num_owned_u_, 1);
-  // Bodies: the element blocks (the same list, in mesh order, on every rank).
-  const SolidProblem& solid = problem_.solid();
+  // Bodies: the connected components of the mesh (io/mesh_bodies.hpp), u dof = node · dim + d.
   body_.assign(num_owned_u_, -1);
-  num_bodies_ = int(solid.local_blocks().size());
-  for (int k = 0; k < num_bodies_; ++k) {
-    const LocalBlock& block = solid.local_blocks()[k];
-    for (std::size_t e = 0; e < block.nodes.extent(0); ++e)
-      for (int a = 0; a < block.nodes_per_element; ++a) {
-        const int c = block.nodes(e, a);
-        if (c >= solid.num_owned_nodes()) continue;
-        for (int d = 0; d < dim_; ++d) {
-          const LO i = u_map->getLocalElement(GO(solid.column_node(c)) * dim_ + d);
-          if (i >= 0) body_[i] = k;
-        }
-      }
+  int local_bodies = 0;
+  for (int i = 0; i < num_owned_u_; ++i) {
+    const GO node = u_map->getGlobalElement(i) / dim_;
+    if (node < GO(body_of_node.size())) body_[i] = body_of_node[node];
+    local_bodies = std::max(local_bodies, body_[i] + 1);
   }
+  Teuchos::reduceAll(*u_map->getComm(), Teuchos::REDUCE_MAX, local_bodies,
+                     Teuchos::outArg(num_bodies_));
 }
 
 DynamicProblem::~DynamicProblem() {
@@ -59,13 +72,7 @@ DynamicProblem::~DynamicProblem() {
 }
 
 void DynamicProblem::acceleration_of(const Vector& u, Vector& a_next) const {
-  const auto uv = u.getLocalViewHost(Tpetra::Access::ReadOnly);
-  const auto un = u_->getLocalViewHost(Tpetra::Access::ReadOnly);
-  const auto vn = v_->getLocalViewHost(Tpetra::Access::ReadOnly);
-  const auto an = a_->getLocalViewHost(Tpetra::Access::ReadOnly);
-  auto out = a_next.getLocalViewHost(Tpetra::Access::OverwriteAll);
-  for (int i = 0; i < num_owned_u_; ++i)
-    out(i, 0) = integrator_.acceleration(uv(i, 0) - un(i, 0), vn(i, 0), an(i, 0), dt_);
+  integrator_->acceleration(u, *u_, *v_, *a_, dt_, a_next);
 }
 
 void DynamicProblem::static_force(Vector& out) const {
@@ -85,7 +92,7 @@ bool DynamicProblem::residual(const Vector& x, Vector& F) {
   // M a_{n+1−αm}(u_{n+1}).
   problem_.displacement(x, *work_);
   acceleration_of(*work_, *work2_);
-  const double am = integrator_.alpha_m, af = integrator_.alpha_f;
+  const double am = integrator_->alpha_m(), af = integrator_->alpha_f();
   work2_->update(am, *a_, 1.0 - am);
   mass_->apply(*work2_, *work_);
   {
@@ -104,7 +111,7 @@ bool DynamicProblem::residual(const Vector& x, Vector& F) {
 
 bool DynamicProblem::jacobian(const Vector& x, Teuchos::RCP<Matrix>& J) {
   if (!problem_.jacobian(x, J)) return false;
-  const double c = integrator_.mass_factor(dt_), scale = 1.0 - integrator_.alpha_f;
+  const double c = integrator_->mass_factor(dt_), scale = 1.0 - integrator_->alpha_f();
   const auto& prescribed = problem_.prescribed();
   const auto& row_map = *J->getRowMap();
   J->resumeFill();
@@ -185,8 +192,9 @@ void DynamicProblem::start(Vector& x0, LinearSolver& linear) {
   f_contact_n_->update(1.0, *f_ext_n_, 1.0);
   balance_ = EnergyBalance();
   measure_state(*u_, *v_);
-  // Energy-momentum: from now on the solid's force of a step is taken from u_n (file comment).
-  if (integrator_.scheme == TimeScheme::energy_momentum) problem_.set_solid_step_start(u_.get());
+  // Energy-momentum: from now on the solid's force of a step is taken from u_n
+  // (energy_momentum_scheme.hpp).
+  if (integrator_->discrete_gradient_force()) problem_.set_solid_step_start(u_.get());
 }
 
 double DynamicProblem::give_back(const Vector& f_contact, double loss, bool sliding) {
@@ -294,8 +302,7 @@ void DynamicProblem::commit_step(const Vector& x) {
   Vector u_next(u_map), a_next(u_map), v_next(u_map), f_static(u_map), f_contact(u_map);
   problem_.displacement(x, u_next);
   acceleration_of(u_next, a_next);
-  v_next.assign(*v_);
-  v_next.update(dt_ * (1.0 - integrator_.gamma), *a_, dt_ * integrator_.gamma, a_next, 1.0);
+  integrator_->velocity(*v_, *a_, a_next, dt_, v_next);
   static_force(f_static);
   const Vector& f_ext = problem_.external_force();
   f_contact.update(1.0, f_static, -1.0, problem_.internal_force(), 0.0);
@@ -325,7 +332,7 @@ void DynamicProblem::commit_step(const Vector& x) {
   v_->assign(v_next);
   a_->assign(a_next);
   f_static_n_->assign(f_static);
-  if (integrator_.scheme == TimeScheme::energy_momentum) {
+  if (integrator_->discrete_gradient_force()) {
     // The step's solid force was 2 f_algo − f_int(u_n); the next step starts from f_int(u_{n+1})
     // (the work terms above use the step's force: ½ (R_n + R_{n+1}) holds f_algo).
     Vector f_int(u_map);
@@ -334,17 +341,17 @@ void DynamicProblem::commit_step(const Vector& x) {
   }
   f_ext_n_->assign(f_ext);
   f_contact_n_->assign(f_contact);
-  if (stabilized_contact_ && problem_.has_contact()) {
+  if (stabilized(contact_) && problem_.has_contact()) {
     // The contact force acted on this step only: a*_{n+1} = a_{n+1} + M⁻¹ f_c,n+1, and
-    // neither it nor f_c,n+1 is carried into the next step (file comment).
+    // neither it nor f_c,n+1 is carried into the next step (docs/design.md §4).
     ContactStepEnergy step_energy;
-    if (velocity_update_) step_energy = problem_.contact_step_energy();  // collective
-    // Sliding contacts (file comment): their closing loss is given back along the sliding.
-    const double sliding_loss = sliding_update_ ? -step_energy.closing_sliding : 0.0;
+    if (velocity_update(contact_)) step_energy = problem_.contact_step_energy();  // collective
+    // Sliding contacts: their closing loss is given back along the sliding.
+    const double sliding_loss = sliding_update(contact_) ? -step_energy.closing_sliding : 0.0;
     const double impact_loss = -step_energy.closing - sliding_loss;
     // Balanced: also the energy of the nodes that stay closed (of either sign; all on
     // interfaces in contact at the last step), so that the step's contact work is zero.
-    const double balanced_loss = sliding_balance_ ? sliding_loss - step_energy.other : 0.0;
+    const double balanced_loss = sliding_balance(contact_) ? sliding_loss - step_energy.other : 0.0;
     Vector rhs(u_map), da(u_map);
     rhs.assign(f_contact);
     {
@@ -359,7 +366,7 @@ void DynamicProblem::commit_step(const Vector& x) {
       // bodies) is no impact: no jump (it would reverse the bodies' approach).
       const double scale = balance_.kinetic + balance_.strain;
       if (impact_loss > 1e-12 * scale) balance_.contact_work += give_back(rhs, impact_loss, false);
-      if (sliding_balance_) {
+      if (sliding_balance(contact_)) {
         if (std::abs(balanced_loss) > 1e-12 * scale)
           balance_.contact_work += give_back(rhs, balanced_loss, true);
       } else if (sliding_loss > 1e-12 * scale) {

@@ -7,17 +7,10 @@
 
 #include <vector>
 
+#include "assembly/contact_terms.hpp"
 #include "assembly/tpetra_types.hpp"
 
 namespace grout {
-
-/// One contact term J(row, col) += value. `key` orders the terms of one row: equal
-/// (row, col) terms are summed in key order, whatever order they come in.
-struct JacobianTerm {
-  GO row, col;
-  long long key;
-  double value;
-};
 
 /// J on `map` (owned displacement rows first, in the order of K_solid's row map, then owned
 /// multiplier rows): row i < K_solid's local rows is K_solid's row i, plus `terms` (owned

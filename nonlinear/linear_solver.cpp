@@ -38,12 +38,9 @@ struct LinearSolver::Impl {
     }
     return self;
   }
-  // --- condensed multipliers ---
-  std::vector<std::pair<GO, GO>> pairing;
-  int dofs_per_node = 1;
-  // --- end condensed multipliers ---
-  std::vector<double> coordinates;
-  std::vector<int> bodies;  // body index per node; empty: one body
+  // The system's layout (system_layout.hpp), with node_bodies emptied when every node is in
+  // one body.
+  SystemLayout layout;
   // The iterative path (type: belos), from the module grout_iterative loaded at the first
   // iterative solve (iterative_module.hpp); it keeps the MueLu hierarchy between solves.
   std::unique_ptr<IterativeSolver> iterative;
@@ -51,7 +48,6 @@ struct LinearSolver::Impl {
     if (!iterative) iterative = create_iterative_solver();
     return *iterative;
   }
-  int dim = 0;
   std::string last_type;
 
   // Whether a solve of `type` condenses the multipliers: as told, else on the iterative path
@@ -98,8 +94,13 @@ std::string auto_linear_solver_type(long long global_unknowns, int dim) {
   return default_direct_type(dim);
 }
 
-LinearSolver::LinearSolver(LinearSolverSettings settings) : impl_(std::make_unique<Impl>()) {
+LinearSolver::LinearSolver(LinearSolverSettings settings, SystemLayout layout)
+    : impl_(std::make_unique<Impl>()) {
   impl_->settings = std::move(settings);
+  impl_->layout = std::move(layout);
+  std::vector<int>& bodies = impl_->layout.node_bodies;
+  if (std::all_of(bodies.begin(), bodies.end(), [&](int b) { return b == bodies.front(); }))
+    bodies.clear();
   const LinearSolverSettings& s = impl_->settings;
   impl_->type = linear_solver_type_name(s.type);
   // The gathered solve orders with AMD unless told otherwise: on 2D Hertz (19 k and 75 k
@@ -132,31 +133,15 @@ LinearSolver::LinearSolver(LinearSolverSettings settings) : impl_(std::make_uniq
   }
 }
 
-LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::string& where)
-    : LinearSolver(linear_solver_settings_from(params, where)) {}
+LinearSolver::LinearSolver(const Teuchos::ParameterList& params, const std::string& where,
+                           SystemLayout layout)
+    : LinearSolver(linear_solver_settings_from(params, where), std::move(layout)) {}
 
 LinearSolver::~LinearSolver() = default;
 
 // --- condensed multipliers ---
-void LinearSolver::set_multiplier_pairing(std::vector<std::pair<GO, GO>> lambda_to_slave_dof,
-                                          int dofs_per_node) {
-  impl_->pairing = std::move(lambda_to_slave_dof);
-  impl_->dofs_per_node = dofs_per_node;
-}
-
 bool LinearSolver::condenses_multipliers() const {
   return impl_->condenses(impl_->type);
-}
-
-void LinearSolver::set_coordinates(std::vector<double> coordinates, int dim) {
-  impl_->coordinates = std::move(coordinates);
-  impl_->dim = dim;
-}
-
-void LinearSolver::set_node_bodies(std::vector<int> body_of_node) {
-  const bool several = std::any_of(body_of_node.begin(), body_of_node.end(),
-                                   [&](int b) { return b != body_of_node.front(); });
-  impl_->bodies = several ? std::move(body_of_node) : std::vector<int>();
 }
 
 int LinearSolver::reused_hierarchies() const {
@@ -171,9 +156,11 @@ bool LinearSolver::last_solve_symmetric() const {
   return impl_->last_symmetric;
 }
 
-int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x) {
+int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
+                        const MultiplierRows* rows) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: linear solve"));
-  const int dim = impl_->dim > 0 ? impl_->dim : 2;  // 2 when set_coordinates was never called
+  const SystemLayout& layout = impl_->layout;
+  const int dim = layout.dim > 0 ? layout.dim : 2;  // 2 when the layout has no dimension
   std::string type = impl_->type != "auto"
                          ? impl_->type
                          : auto_linear_solver_type((long long)K->getGlobalNumRows(), dim);
@@ -182,7 +169,7 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
     type = default_direct_type(dim);
   impl_->last_type = type;
   impl_->last_symmetric = false;
-  if (!impl_->condenses(type) || impl_->pairing.empty())
+  if (!impl_->condenses(type) || layout.multiplier_pairing.empty())
     return solve_system(K, b, x, type,
                         impl_->settings.belos_solver.empty() ? "CG" : impl_->belos_type);
   // The distributed MUMPS path first tries the symmetric (null-space) reduction: for
@@ -192,12 +179,12 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   // Schur-updated direct solves"). Anything else (slip, geometry: current) fails its checks
   // and takes the condensation below.
   if (type == "mumps" && !impl_->settings.mumps.gather) {
-    SymmetricCondensation reduction(impl_->pairing, impl_->dofs_per_node);
+    SymmetricCondensation reduction(layout.multiplier_pairing, layout.dofs_per_node);
     bool applies = false;
     {
       Teuchos::TimeMonitor reduce_timer(
           *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: symmetric reduction"));
-      applies = reduction.condense(*K, b);
+      applies = reduction.condense(*K, b, rows);
     }
     if (applies) {
       Teuchos::TimeMonitor solve_timer(
@@ -216,11 +203,11 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
       return 1;
     }
   }
-  MultiplierCondensation condensation(impl_->pairing, impl_->dofs_per_node);
+  MultiplierCondensation condensation(layout.multiplier_pairing, layout.dofs_per_node);
   {
     Teuchos::TimeMonitor condense_timer(
         *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: condensation"));
-    condensation.condense(*K, b);
+    condensation.condense(*K, b, rows);
   }
   Vector y(condensation.matrix()->getRowMap());
   // A reduced row with a zero diagonal (a prescribed slave dof whose node's multiplier rows
@@ -265,12 +252,9 @@ int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector
   }
 
   // Belos + MueLu, in the module grout_iterative (loaded here at the first iterative solve).
-  const IterativeSettings settings{impl_->settings.belos,
-                                   impl_->settings.muelu,
-                                   impl_->settings.reuse_preconditioner,
-                                   impl_->dim,
-                                   impl_->coordinates,
-                                   impl_->bodies};
+  const IterativeSettings settings{
+      impl_->settings.belos, impl_->settings.muelu,     impl_->settings.reuse_preconditioner,
+      impl_->layout.dim,     impl_->layout.coordinates, impl_->layout.node_bodies};
   return impl_->iterative_solver().solve(K, b, x, belos_type, settings);
 }
 

@@ -23,7 +23,7 @@
 //                            without multipliers (symmetric positive definite), GMRES on the
 //                            condensed one (not symmetric: condensed_solve.hpp); MueLu smoothed
 //                            aggregation for elasticity (elasticity_preconditioner.hpp) when
-//                            the coordinates are given (set_coordinates). The `MueLu` sublist
+//                            the layout has coordinates (system_layout.hpp). The `MueLu` sublist
 //                            overrides any of these settings.
 //                            In the module grout_iterative, loaded at the first
 //                            iterative solve (nonlinear/iterative_module.hpp).
@@ -34,7 +34,7 @@
 // --- condensed multipliers (nonlinear/condensed_solve.hpp) ---
 //   condense_multipliers: true   (default: true on the iterative path and the distributed
 //                            MUMPS path, 3D's default; false on the gathered direct solves
-//                            and amesos2) the paired multipliers (set_multiplier_pairing) are
+//                            and amesos2) the paired multipliers (SystemLayout) are
 //                            condensed per slave node and the displacement-only system is
 //                            solved, then λ is recovered. A reduced system left with a zero
 //                            diagonal (not produced by Grout's contact rows) is solved
@@ -53,6 +53,8 @@
 
 #include "assembly/tpetra_types.hpp"
 #include "io/solver_settings.hpp"
+#include "nonlinear/multiplier_rows.hpp"
+#include "nonlinear/system_layout.hpp"
 
 namespace grout {
 
@@ -69,35 +71,30 @@ std::string auto_linear_solver_type(long long global_unknowns, int dim);
 
 class LinearSolver {
  public:
-  /// A solver with `settings` (io/solver_settings.hpp). Asks Belos (loading the iterative
-  /// module) whether it has `belos_solver` and, with type belos, whether that solver takes the
-  /// `Belos` keys; throws InputError naming `settings.where` when not.
-  explicit LinearSolver(LinearSolverSettings settings);
+  /// A solver with `settings` (io/solver_settings.hpp) for systems laid out as `layout`
+  /// (system_layout.hpp: multiplier pairing, coordinates, bodies; system_layout(problem, mesh)
+  /// builds it for a MechanicsProblem). Asks Belos (loading the iterative module) whether it
+  /// has `belos_solver` and, with type belos, whether that solver takes the `Belos` keys;
+  /// throws InputError naming `settings.where` when not.
+  LinearSolver(LinearSolverSettings settings, SystemLayout layout);
   /// The same with the settings read from a `Linear Solver` sublist (may be empty), named
   /// `where` in errors (linear_solver_settings_from).
-  LinearSolver(const Teuchos::ParameterList& params, const std::string& where);
+  LinearSolver(const Teuchos::ParameterList& params, const std::string& where, SystemLayout layout);
   ~LinearSolver();
 
   /// Solve K x = b; returns the number of linear iterations (1 for a direct solve).
   /// Throws std::runtime_error if the solve fails or does not converge.
-  int solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x);
+  /// `rows` (optional): the kinds of K's multiplier rows as the problem declares them
+  /// (multiplier_rows.hpp), from which the condensations are built.
+  int solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
+            const MultiplierRows* rows = nullptr);
 
   // --- condensed multipliers ---
-  /// The multiplier dofs and the slave dofs carrying them: (λ GID, slave u GID), the same
-  /// complete list on every rank; slave dofs s of one node share s / dofs_per_node. Used by
-  /// solve() when `condense_multipliers: true`; without pairs the system is solved as given.
-  void set_multiplier_pairing(std::vector<std::pair<GO, GO>> lambda_to_slave_dof,
-                              int dofs_per_node = 1);
+  /// Whether solve() condenses the layout's paired multipliers (`condense_multipliers`, or its
+  /// default for the configured type); without pairs the system is solved as given.
   bool condenses_multipliers() const;
   // --- end condensed multipliers ---
 
-  /// Nodal coordinates (node-major x0 y0 [z0] x1 ..., every node on every rank) and the
-  /// dimension: the iterative path builds the rigid-body near-null space of MueLu from them,
-  /// and `type: auto` picks its solver by the dimension (2 when never called).
-  void set_coordinates(std::vector<double> coordinates, int dim);
-  /// Body index of every node (io/mesh_bodies.hpp): with more than one body the iterative
-  /// path's aggregation keeps the bodies apart (elasticity_preconditioner.hpp).
-  void set_node_bodies(std::vector<int> body_of_node);
   /// Solves that reused a MueLu hierarchy (`reuse_preconditioner: true`), since construction.
   int reused_hierarchies() const;
   /// The type of the last solve (auto resolved): mumps, mumps_gathered, amesos2 or belos;

@@ -28,12 +28,11 @@
 
 #include <mpi.h>
 
-#include <map>
 #include <memory>
 #include <vector>
 
-#include "assembly/contact_mortar.hpp"
 #include "assembly/solid_problem.hpp"
+#include "nonlinear/contact_interface.hpp"
 #include "nonlinear/nonlinear_problem.hpp"
 
 namespace grout {
@@ -80,6 +79,15 @@ class MechanicsProblem : public NonlinearProblem {
   /// iterate cannot raise the estimate), combined in quadrature; ε = 2.2e-16. Inactive rows
   /// (λ = 0) are exact.
   double residual_floor() const override { return residual_floor_; }
+  /// The Newton iterate of the step that the next residual() evaluates (0: the initial guess,
+  /// k: after k updates, line-search trials included): the active-set start rules depend on
+  /// it (ActiveSetPolicy). begin_step() resets it to 0.
+  void set_newton_iterate(int k) override { phase_ = newton_phase(k); }
+  /// The owned multiplier rows' kinds at the last residual() (every interface's), or nullptr
+  /// without contact.
+  const MultiplierRows* multiplier_rows() const override {
+    return interfaces_.empty() ? nullptr : &rows_;
+  }
 
   /// Set the load and prescribed displacements of time t, and put the prescribed values
   /// into x (the initial guess of the step).
@@ -111,19 +119,12 @@ class MechanicsProblem : public NonlinearProblem {
   /// ContactStepEnergy of the last residual evaluation, summed over the ranks. Collective.
   ContactStepEnergy contact_step_energy() const;
   /// (λ dof, slave displacement dof) pairs of every interface, all ranks' pairs in λ order,
-  /// for the condensed solve (LinearSolver::set_multiplier_pairing). Collective.
+  /// for the condensed solve (SystemLayout::pairing, system_layout.hpp). Collective.
   std::vector<std::pair<GO, GO>> multiplier_pairing() const;
   /// Slave nodes of every interface (global node indices, each interface's sorted).
   std::vector<GlobalIndex> slave_nodes() const;
 
  private:
-  struct Interface;
-  void ghost_master_faces_of(Interface& c, const Vector* u_base, const Vector* u_old_base);
-  void evaluate_interface(Interface& c, const Vector& x, const Vector& u_base,
-                          const Vector& u_old_base, Vector& F);
-  void add_entry(GO row, GO col, double value);
-  void assemble_contact_forces(Vector& F);
-
   const SolidProblem& solid_;
   const Mesh& mesh_;
   const Input& input_;
@@ -131,34 +132,23 @@ class MechanicsProblem : public NonlinearProblem {
   GO num_u_ = 0;  ///< global displacement dofs
   int num_owned_u_ = 0;
   Teuchos::RCP<const Map> map_;
-  std::vector<std::unique_ptr<Interface>> interfaces_;
+  std::vector<std::unique_ptr<ContactInterface>> interfaces_;
   MPI_Comm raw_comm_ = MPI_COMM_SELF;
   /// Displacement dofs of the nodes of this rank's slave faces and owned master faces.
   Teuchos::RCP<const Map> base_map_;
   Teuchos::RCP<Import> base_import_;
   Teuchos::RCP<Vector> x_last_;  ///< x of the last residual evaluation
   Teuchos::RCP<Vector> x_old_;   ///< x of the last converged step (slip increments)
-  // Contact terms of the displacement rows (row, tag, value), tag = interface and slave node;
-  // summed by the row's owner in tag order (assemble_contact_forces).
-  std::vector<GO> force_rows_;
-  std::vector<long long> force_tags_;
-  std::vector<double> force_values_;
-  std::map<GO, int> remote_owner_;  ///< owner of each row of another rank in the terms
-  long long entry_tag_ = 0;         ///< tag of the slave node being evaluated
-  long long entry_seq_ = 0;         ///< entries emitted for it so far
+  ContactTerms terms_;           ///< contact terms of the last residual evaluation
+  MultiplierRows rows_;          ///< multiplier row kinds of the last residual evaluation
   Teuchos::RCP<Vector> u_, f_int_, f_ext_, reaction_;
   Teuchos::RCP<Matrix> K_solid_;
   const Vector* solid_step_start_ = nullptr;  ///< set_solid_step_start
   bool K_solid_constant_ = false;   ///< K_solid_ assembled and independent of u (small strain)
   std::vector<double> prescribed_;  ///< per global u dof, NaN where free
-  std::vector<GO> entry_rows_, entry_cols_;
-  std::vector<long long> entry_keys_;  ///< tag · 2^24 + emission index: the insertion order
-  std::vector<double> entry_values_;
   int active_size_ = 0, active_changes_ = 0;
   double residual_floor_ = 0.0;
-  double contact_floor2_ = 0.0;  ///< Σ of the squared multiplier-row floors (residual_floor)
-  bool step_start_ = false;      ///< no Newton update yet in this step (proximity active set)
-  bool first_update_ = false;    ///< at the first Newton update of the step (until the next J)
+  NewtonPhase phase_ = NewtonPhase::step_start;  ///< of the next residual evaluation
 };
 
 }  // namespace grout

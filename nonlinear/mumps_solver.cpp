@@ -10,13 +10,14 @@
 #include <algorithm>
 #include <climits>
 #include <cstdlib>
-#include <iterator>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 #include "assembly/raw_mpi_comm.hpp"
-#include "io/errors.hpp"
-#include "nonlinear/schur_update.hpp"
+#include "nonlinear/mumps_numbering.hpp"
+#include "nonlinear/mumps_pattern.hpp"
+#include "nonlinear/mumps_schur.hpp"
 
 namespace grout {
 
@@ -86,24 +87,6 @@ void make_scotch_deterministic() {
   if (const auto seed = reinterpret_cast<Seed>(dlsym(RTLD_DEFAULT, "SCOTCH_randomSeed"))) seed(1);
 }
 
-// The position in `pattern` (sorted, unique) of every key; false if a key is not in it.
-// The increasing keys[0 .. sorted) are found in one forward walk, the others by binary search.
-bool locate(const std::vector<long long>& pattern, const std::vector<long long>& keys,
-            std::size_t sorted, std::vector<std::size_t>& position) {
-  position.assign(keys.size(), 0);
-  auto it = pattern.begin();
-  for (std::size_t k = 0; k < keys.size(); ++k) {
-    if (k < sorted) {
-      while (it != pattern.end() && *it < keys[k]) ++it;
-    } else {
-      it = std::lower_bound(pattern.begin(), pattern.end(), keys[k]);
-    }
-    if (it == pattern.end() || *it != keys[k]) return false;
-    position[k] = std::size_t(it - pattern.begin());
-  }
-  return true;
-}
-
 std::string describe(int code) {
   switch (code) {
     case -5:
@@ -122,47 +105,35 @@ std::string describe(int code) {
   }
 }
 
-// The union over all ranks of sorted 0-based row lists (the same sorted list on every rank).
-std::vector<long long> union_over_ranks(const std::vector<long long>& local, MPI_Comm comm) {
-  int ranks = 1;
-  MPI_Comm_size(comm, &ranks);
-  if (ranks == 1) return local;
-  int count = int(local.size());
-  std::vector<int> counts(static_cast<std::size_t>(ranks), 0), offsets(counts);
-  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  for (int r = 1; r < ranks; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
-  std::vector<long long> all(std::size_t(offsets.back() + counts.back()));
-  MPI_Allgatherv(local.data(), count, MPI_LONG_LONG, all.data(), counts.data(), offsets.data(),
-                 MPI_LONG_LONG, comm);
-  std::sort(all.begin(), all.end());
-  all.erase(std::unique(all.begin(), all.end()), all.end());
-  return all;
-}
-
-// Every rank's Schur deltas on rank 0 (as triplets of doubles: i, j, value).
-std::vector<SchurDelta> gather_deltas(const std::vector<SchurDelta>& local, MPI_Comm comm) {
-  int ranks = 1, rank = 0;
-  MPI_Comm_size(comm, &ranks);
-  MPI_Comm_rank(comm, &rank);
-  if (ranks == 1) return local;
-  std::vector<double> packed;
-  for (const SchurDelta& d : local)
-    packed.insert(packed.end(), {double(d.i), double(d.j), d.value});
-  int count = int(packed.size());
-  std::vector<int> counts(static_cast<std::size_t>(ranks), 0), offsets(counts);
-  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-  for (int r = 1; r < ranks; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
-  std::vector<double> all(rank == 0 ? std::size_t(offsets.back() + counts.back()) : 0);
-  MPI_Gatherv(packed.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
-              MPI_DOUBLE, 0, comm);
-  std::vector<SchurDelta> deltas;
-  for (std::size_t k = 0; k + 2 < all.size(); k += 3)
-    deltas.push_back({int(all[k]), int(all[k + 1]), all[k + 2]});
-  return deltas;
+// x_i = b_i / a_ii on every owned row whose only nonzero is its diagonal (e.g. λ_j = 0 of an
+// open contact node): exact there, where the factorisation's rounding would leave ~1e-16.
+void exact_diagonal_rows(const Matrix& K, const MumpsEntries& entries, const Vector& b, Vector& x) {
+  const auto local = K.getLocalMatrixHost();
+  const LO n_local = LO(entries.row_index.size());
+  auto b_local = b.getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto to = x.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (LO i = 0; i < n_local; ++i) {
+    double diagonal = 0.0;
+    bool only_diagonal = true;
+    for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1) && only_diagonal; ++p) {
+      if (local.values(p) == 0.0) continue;
+      if (entries.column_index[local.graph.entries(p)] == entries.row_index[std::size_t(i)])
+        diagonal = local.values(p);
+      else
+        only_diagonal = false;
+    }
+    if (only_diagonal && diagonal != 0.0) to(i, 0) = b_local(i, 0) / diagonal;
+  }
 }
 
 }  // namespace
 
+static_assert(std::is_same<MUMPS_INT, int>::value,
+              "grout::MumpsSolver: MumpsPattern keeps MUMPS's indices as int (32-bit MUMPS)");
+
+// The MUMPS instance and what the phases keep between solves: the numbering
+// (mumps_numbering.hpp), the analysed pattern (mumps_pattern.hpp), the factorised values and
+// the Schur updates (mumps_schur.hpp).
 struct MumpsSolver::Impl {
   MumpsOptions options;
   DMUMPS_STRUC_C m{};
@@ -173,31 +144,18 @@ struct MumpsSolver::Impl {
   bool factorised = false;
   MumpsStatistics stats;
 
-  // The analysed pattern on this rank: sorted keys row * n + col (0-based, MUMPS
-  // numbering) and MUMPS's 1-based irn, jcn; the values in that order; the matrix entries'
-  // positions in it, and their keys at the last solve (to skip the search when unchanged).
-  GO n = -1;
-  std::vector<long long> pattern, last_keys;
-  std::vector<std::size_t> position;
-  std::vector<MUMPS_INT> irn, jcn;
-  std::vector<double> values;
+  MumpsNumbering numbering;
+  GO n = -1;  // global rows of the analysed pattern
+  MumpsPattern pattern;
+  std::vector<double> values;  // the current matrix's values in pattern order
 
-  // Schur updates (MumpsOptions::schur_updates, schur_update.hpp): the Schur set B of the
-  // last analysis (sorted 0-based rows; MUMPS's 1-based list), the values of the last
-  // factorised matrix (in `pattern` order), its flops with the Schur block's Cholesky, and on
-  // rank 0 the dense Schur complement with the factor of the current matrix.
-  std::vector<long long> schur_rows, changed_ever;
+  // Schur updates (MumpsOptions::schur_updates): the set, the base and the dense factor; MUMPS's
+  // 1-based Schur list, its buffer for S(A) on rank 0, the reduced right-hand side.
+  MumpsSchur schur;
   std::vector<MUMPS_INT> schur_list;
-  std::vector<double> base_values, schur_buffer, reduced_rhs;
-  double full_flops = 0.0;
-  DenseSchur dense;
+  std::vector<double> schur_buffer, reduced_rhs;
 
-  // b gathered to rank 0 and x scattered back: `source` is the row map (global-id numbering)
-  // or its contiguous renumbering.
-  bool gid_numbering = false;
-  Teuchos::RCP<const Map> source, root;
-  Teuchos::RCP<Export> to_root;
-  std::vector<double> rhs;
+  std::vector<double> rhs;  // b, then x, on rank 0
 
   ~Impl() { finish(); }
 
@@ -239,36 +197,7 @@ struct MumpsSolver::Impl {
     }
     analysed = factorised = false;
     n = -1;
-  }
-
-  // The Schur set for the next analysis (0: none); MUMPS orders those rows last.
-  void configure_schur() {
-    schur_list.resize(schur_rows.size());
-    for (std::size_t k = 0; k < schur_rows.size(); ++k)
-      schur_list[k] = MUMPS_INT(schur_rows[k] + 1);
-    icntl(m, 19) = schur_rows.empty() ? 0 : 1;  // centralised Schur complement on rank 0
-    m.size_schur = MUMPS_INT(schur_rows.size());
-    m.listvar_schur = schur_list.empty() ? nullptr : schur_list.data();
-    stats.schur_size = int(schur_rows.size());
-  }
-
-  // After a sparse factorisation with a Schur set: S(A) to the dense solver on rank 0 and its
-  // Cholesky factorisation; false (on every rank) if S(A) is not positive definite.
-  bool take_schur(MPI_Comm c) {
-    int ok = 1;
-    if (!schur_rows.empty() && rank == 0)
-      ok = int(dense.set_base(int(schur_rows.size()), schur_buffer));
-    std::vector<double>().swap(schur_buffer);  // now the previous base: released
-    MPI_Bcast(&ok, 1, MPI_INT, 0, c);
-    return ok != 0;
-  }
-
-  // Whether a Schur set of `size` rows pays: its dense Cholesky factorisation (size³/3 flops)
-  // at most half the last sparse factorisation (with its Schur block), and at most 6000 rows
-  // (288 MB per dense copy).
-  bool schur_pays(std::size_t size) const {
-    const double nb = double(size);
-    return size > 0 && size <= 6000 && nb * nb * nb / 3.0 <= 0.5 * full_flops;
+    numbering = MumpsNumbering{};  // its maps are on the previous communicator
   }
 
   void finish() {
@@ -282,10 +211,11 @@ struct MumpsSolver::Impl {
     initialised = analysed = factorised = false;
   }
 
-  // Run MUMPS job `job`; a negative INFOG(1) throws (the same on every rank).
+  // Run MUMPS job `job` on the pattern and values; a negative INFOG(1) throws (the same on
+  // every rank).
   void run(int job, const char* what) {
-    m.irn_loc = irn.data();
-    m.jcn_loc = jcn.data();
+    m.irn_loc = pattern.irn.data();
+    m.jcn_loc = pattern.jcn.data();
     m.a_loc = values.data();
     m.job = job;
     dmumps_c(&m);
@@ -297,17 +227,37 @@ struct MumpsSolver::Impl {
     }
   }
 
-  // Numeric factorisation; on a workspace shortfall (INFOG(1) = -8 or -9) raise the
-  // workspace relaxation ICNTL(14) (percent over the analysis estimate) and retry.
-  void factorise() {
+  // Symbolic analysis (job 1) of the pattern of n rows with the Schur set schur.rows (none:
+  // empty), MUMPS ordering that set last (centralised Schur complement on rank 0, ICNTL(19)).
+  void analyse() {
+    schur_list.resize(schur.rows.size());
+    for (std::size_t k = 0; k < schur.rows.size(); ++k)
+      schur_list[k] = MUMPS_INT(schur.rows[k] + 1);
+    icntl(m, 19) = schur.rows.empty() ? 0 : 1;
+    m.size_schur = MUMPS_INT(schur.rows.size());
+    m.listvar_schur = schur_list.empty() ? nullptr : schur_list.data();
+    stats.schur_size = int(schur.rows.size());
+    m.n = MUMPS_INT(n);
+    m.nz_loc = MUMPS_INT(pattern.irn.size());
+    m.nnz_loc = MUMPS_INT8(pattern.irn.size());
+    make_scotch_deterministic();
+    run(1, "analysis");
+    ++stats.analyses;
+    analysed = true;
+  }
+
+  // Numeric factorisation (job 2); on a workspace shortfall (INFOG(1) = -8 or -9) raise the
+  // workspace relaxation ICNTL(14) (percent over the analysis estimate) and retry. With a
+  // Schur set MUMPS writes S(A) into schur_buffer on rank 0.
+  void factorise_values() {
     for (int attempt = 0;; ++attempt) {
-      if (!schur_rows.empty() && rank == 0) {
-        schur_buffer = DenseSchur::prepare(int(schur_rows.size()));
+      if (!schur.rows.empty() && rank == 0) {
+        schur_buffer = DenseSchur::prepare(int(schur.rows.size()));
         m.schur = schur_buffer.data();
-        m.schur_lld = MUMPS_INT(schur_rows.size());
+        m.schur_lld = MUMPS_INT(schur.rows.size());
       }
-      m.irn_loc = irn.data();
-      m.jcn_loc = jcn.data();
+      m.irn_loc = pattern.irn.data();
+      m.jcn_loc = pattern.jcn.data();
       m.a_loc = values.data();
       m.job = 2;
       dmumps_c(&m);
@@ -327,10 +277,63 @@ struct MumpsSolver::Impl {
       factorised = true;
       stats.flops = m.rinfog[2];
       stats.factor_entries = infog(m, 29);
-      const double nb = double(schur_rows.size());
-      full_flops = stats.flops + nb * nb * nb / 3.0;
+      const double nb = double(schur.rows.size());
+      schur.full_flops = stats.flops + nb * nb * nb / 3.0;
       return;
     }
+  }
+
+  // After a sparse factorisation with a Schur set: S(A) to the dense solver on rank 0 and its
+  // Cholesky factorisation; false (on every rank) if S(A) is not positive definite.
+  bool take_schur() {
+    int ok = 1;
+    if (!schur.rows.empty() && rank == 0)
+      ok = int(schur.dense.set_base(int(schur.rows.size()), schur_buffer));
+    std::vector<double>().swap(schur_buffer);  // now the previous base: released
+    MPI_Bcast(&ok, 1, MPI_INT, 0, comm);
+    return ok != 0;
+  }
+
+  // The factorisation of the current values, which become the Schur updates' base. S(A) not
+  // positive definite (A is not): analysed and factorised again without a Schur set.
+  void factorise() {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: MUMPS factorisation"));
+    factorise_values();
+    if (!take_schur()) {
+      schur.rows.clear();
+      analyse();
+      factorise_values();
+    }
+    schur.base_values = values;
+  }
+
+  // Forward and backward substitution (job 3) of the right-hand side `rhs` on rank 0, which it
+  // overwrites with the solution. With a Schur set: reduction (forward substitution on the
+  // interior, the reduced right-hand side on the Schur rows), the dense solve there, expansion
+  // (ICNTL(26) = 1, 2). MUMPS does no iterative refinement with a Schur complement; the matrix
+  // is SPD (LDLᵀ of a reduced elastic stiffness), where one is not needed.
+  void substitute() {
+    const bool is_root = rank == 0;
+    m.rhs = is_root ? rhs.data() : nullptr;
+    m.nrhs = 1;
+    m.lrhs = MUMPS_INT(n);
+    if (schur.rows.empty()) {
+      run(3, "solve");
+    } else {
+      const MUMPS_INT nb = MUMPS_INT(schur.rows.size());
+      reduced_rhs.assign(is_root ? std::size_t(nb) : 0, 0.0);
+      m.redrhs = is_root ? reduced_rhs.data() : nullptr;
+      m.lredrhs = nb;
+      icntl(m, 10) = 0;
+      icntl(m, 26) = 1;
+      run(3, "solve (reduction)");
+      if (is_root) schur.dense.solve(reduced_rhs.data());
+      icntl(m, 26) = 2;
+      run(3, "solve (expansion)");
+      icntl(m, 26) = 0;
+      icntl(m, 10) = 1;
+    }
+    ++stats.solves;
   }
 };
 
@@ -344,6 +347,9 @@ const MumpsStatistics& MumpsSolver::statistics() const {
   return impl_->stats;
 }
 
+// The phases: numbering (mumps_numbering.hpp), pattern and analysis while it holds
+// (mumps_pattern.hpp), the numeric factorisation or a Schur update (mumps_schur.hpp), the
+// solve.
 void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x) {
   Impl& s = *impl_;
   const auto& comm = *K->getRowMap()->getComm();
@@ -357,281 +363,61 @@ void MumpsSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   if (LO(b.getLocalLength()) != n_local || LO(x.getLocalLength()) != n_local)
     throw std::logic_error("MumpsSolver::solve: b and x must be on the matrix's row map");
 
-  // MUMPS's numbering. When the row map's global ids are 0 .. n-1 (Grout's maps: node * dim
-  // + component, then the multipliers in slave-node order), they are used as they are: the
-  // matrix MUMPS sees, and so its ordering and pivot sequence, is then the same on any number
-  // of ranks. Otherwise a contiguous renumbering (this rank's rows offset .. offset + n_local
-  // - 1, in the row map's local order). Rebuilt only when the layout changes.
-  const bool gid_numbering = row_map->getMinAllGlobalIndex() == 0 &&
-                             row_map->getMaxAllGlobalIndex() == n - 1 && row_map->isOneToOne();
-  int same_layout = s.source.is_null()
-                        ? 0
-                        : int(s.n == n && s.gid_numbering == gid_numbering &&
-                              (gid_numbering ? s.source->isSameAs(*row_map)
-                                             : LO(s.source->getNodeNumElements()) == n_local));
-  MPI_Allreduce(MPI_IN_PLACE, &same_layout, 1, MPI_INT, MPI_MIN, mpi_comm);
-  if (!same_layout) {
-    s.gid_numbering = gid_numbering;
-    s.source =
-        gid_numbering
-            ? row_map
-            : Teuchos::RCP<const Map>(new Map(n, std::size_t(n_local), 0, row_map->getComm()));
-    s.root =
-        Teuchos::rcp(new Map(n, std::size_t(comm.getRank() == 0 ? n : 0), 0, row_map->getComm()));
-    s.to_root = Teuchos::rcp(new Export(s.source, s.root));
-    // The analysed pattern is in the old numbering.
-    s.analysed = false;
-  }
+  // Numbering: rebuilt only when the layout changes; the analysed pattern is in the old one.
+  if (renumber(s.numbering, row_map, mpi_comm)) s.analysed = false;
+  MumpsEntries entries = mumps_entries(s.numbering, *K, s.options.symmetric);
 
-  // MUMPS index (0-based) of every owned row and of every column of K.
-  std::vector<long long> row_index(std::size_t(n_local), 0);
-  std::vector<long long> column_index(K->getColMap()->getNodeNumElements());
-  if (gid_numbering) {
-    for (LO i = 0; i < n_local; ++i) row_index[std::size_t(i)] = row_map->getGlobalElement(i);
-    const auto& col_map = *K->getColMap();
-    for (std::size_t j = 0; j < column_index.size(); ++j)
-      column_index[j] = col_map.getGlobalElement(LO(j));
-  } else {
-    const GO offset = s.source->getMinGlobalIndex();
-    for (LO i = 0; i < n_local; ++i) row_index[std::size_t(i)] = offset + i;
-    // The owned rows' indices imported to the columns.
-    Vector row_values(row_map), col_values(K->getColMap());
-    {
-      auto r = row_values.getLocalViewHost(Tpetra::Access::OverwriteAll);
-      for (LO i = 0; i < n_local; ++i) r(i, 0) = double(offset + i);
-    }
-    const auto importer = K->getGraph()->getImporter();
-    if (!importer.is_null() && K->getDomainMap()->isSameAs(*row_map)) {
-      col_values.doImport(row_values, *importer, Tpetra::INSERT);
-    } else {
-      col_values.doImport(row_values, Import(row_map, K->getColMap()), Tpetra::INSERT);
-    }
-    auto c = col_values.getLocalViewHost(Tpetra::Access::ReadOnly);
-    for (std::size_t j = 0; j < column_index.size(); ++j) column_index[j] = (long long)(c(j, 0));
-  }
-
-  // This rank's entries (lower triangle only when symmetric) as keys row * n + col (0-based
-  // MUMPS numbering), in the matrix's storage order.
-  const auto local = K->getLocalMatrixHost();
-  std::vector<long long> keys, mirror_keys;
-  std::vector<double> entry_values;
-  keys.reserve(local.nnz());
-  entry_values.reserve(local.nnz());
-  for (LO i = 0; i < n_local; ++i) {
-    const long long row = row_index[std::size_t(i)];
-    for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p) {
-      const long long col = column_index[local.graph.entries(p)];
-      if (s.options.symmetric && col > row) {
-        // An explicit zero above the diagonal stands for its mirror's place in the pattern
-        // (symmetric_condensation.hpp keeps the pattern of rows it eliminates that way, on
-        // the rank owning the row only): it adds the lower key (col, row) and nothing to the
-        // values. Those keys go last, after the rows' own (in row order, on one rank sorted:
-        // found in one forward walk below instead of a binary search each).
-        if (local.values(p) == 0.0) mirror_keys.push_back(col * n + row);
-        continue;
-      }
-      keys.push_back(row * n + col);
-      entry_values.push_back(local.values(p));
-    }
-  }
-  keys.insert(keys.end(), mirror_keys.begin(), mirror_keys.end());
-  entry_values.resize(keys.size(), 0.0);
-
-  // The analysed pattern is kept while the matrix's pattern stays inside it: the Jacobian's
-  // pattern follows the contact state (active set, mortar pairs, nonzero derivatives) and
-  // changes between Newton iterations, mostly within what earlier iterations had. Entries
-  // of the analysed pattern that the matrix lacks are explicit zeros. A new entry leads to
-  // a new analysis of the union of both patterns, or of the new pattern alone if the union
-  // would be more than twice its size.
-  // Keys in increasing order (the gathered matrix: rows in order, each row's columns in
-  // order) are looked up in one forward walk and need no sort.
-  const std::size_t sorted_prefix =
-      std::size_t(std::is_sorted_until(keys.begin(), keys.end()) - keys.begin());
-  const bool keys_sorted = sorted_prefix == keys.size();
-  int missing = 0;
-  if (!(s.analysed && s.n == n && keys == s.last_keys))
-    missing = int(!(s.analysed && s.n == n && locate(s.pattern, keys, sorted_prefix, s.position)));
-  MPI_Allreduce(MPI_IN_PLACE, &missing, 1, MPI_INT, MPI_MAX, mpi_comm);
+  // Pattern: analysed again only when the matrix has an entry outside it (on any rank).
+  const bool valid = s.analysed && s.n == n;
+  const bool missing =
+      pattern_misses(s.pattern, valid, entries.keys, entries.sorted_prefix, mpi_comm);
   // Schur updates: the last factorised matrix (pattern and values) is the base. On any number
   // of ranks: on 2, MUMPS's centralised Schur complement (ICNTL(19) = 1) and the dense update
   // run on rank 0 alone and the set is reused for 2 of 7 iterations on the 11.0 k-node spheres
   // (5 analyses), yet the run takes 0.86x the wall time of refactorising every time on a quiet
   // machine (docs/performance.md, "Condensed, symmetric and
   // Schur-updated direct solves").
-  const bool updates = s.options.symmetric && s.options.schur_updates;
-  const bool have_base =
-      updates && s.analysed && s.factorised && s.n == n && !s.base_values.empty();
-  std::vector<long long> base_pattern;
-  if (have_base && missing) base_pattern = s.pattern;
-  if (missing) {
-    std::vector<long long> sorted = keys;
-    if (!keys_sorted) {  // the unsorted tail sorted, then merged with the sorted prefix
-      const auto middle = sorted.begin() + std::ptrdiff_t(sorted_prefix);
-      std::sort(middle, sorted.end());
-      std::inplace_merge(sorted.begin(), middle, sorted.end());
-    }
-    sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
-    std::vector<long long> merged;
-    if (s.analysed && s.n == n) {
-      std::set_union(s.pattern.begin(), s.pattern.end(), sorted.begin(), sorted.end(),
-                     std::back_inserter(merged));
-    }
-    int use_union = int(!merged.empty() && merged.size() <= 2 * sorted.size());
-    MPI_Allreduce(MPI_IN_PLACE, &use_union, 1, MPI_INT, MPI_MIN, mpi_comm);
-    s.pattern = use_union ? std::move(merged) : std::move(sorted);
-    s.irn.resize(s.pattern.size());
-    s.jcn.resize(s.pattern.size());
-    for (std::size_t e = 0; e < s.pattern.size(); ++e) {
-      s.irn[e] = MUMPS_INT(s.pattern[e] / n) + 1;
-      s.jcn[e] = MUMPS_INT(s.pattern[e] % n) + 1;
-    }
-    locate(s.pattern, keys, sorted_prefix, s.position);
-  }
-  s.last_keys.swap(keys);
+  const bool have_base = s.options.symmetric && s.options.schur_updates && valid && s.factorised &&
+                         !s.schur.base_values.empty();
+  std::vector<long long> base_keys;
+  if (have_base && missing) base_keys = s.pattern.keys;
+  if (missing) rebuild_pattern(s.pattern, valid, entries.keys, entries.sorted_prefix, n, mpi_comm);
+  s.pattern.last_keys.swap(entries.keys);
 
-  std::vector<double> values(s.pattern.size(), 0.0);
-  for (std::size_t k = 0; k < entry_values.size(); ++k) values[s.position[k]] += entry_values[k];
-  int changed[2] = {missing, 0};
-  changed[1] = int(missing || !s.factorised || values != s.values);
-  MPI_Allreduce(MPI_IN_PLACE, &changed[1], 1, MPI_INT, MPI_MAX, mpi_comm);
+  // Values: factorised again when they changed (on any rank).
+  std::vector<double> values = values_in_pattern(s.pattern, entries.values);
+  int changed = int(missing || !s.factorised || values != s.values);
+  MPI_Allreduce(MPI_IN_PLACE, &changed, 1, MPI_INT, MPI_MAX, mpi_comm);
   s.values.swap(values);
-  // The rows whose entries differ from the base's (any rank).
-  std::vector<long long> rows;
-  if (have_base && changed[1])
-    rows = union_over_ranks(
-        changed_rows(missing ? base_pattern : s.pattern, s.base_values, s.pattern, s.values, n),
-        mpi_comm);
-  // Every row changed so far (since the first factorisation of this layout).
-  const bool changed_before = have_base && !s.changed_ever.empty();
-  if (!have_base) s.changed_ever.clear();
-  {
-    std::vector<long long> joined;
-    std::set_union(s.changed_ever.begin(), s.changed_ever.end(), rows.begin(), rows.end(),
-                   std::back_inserter(joined));
-    s.changed_ever.swap(joined);
-  }
+  std::vector<long long> rows;  // the rows whose entries differ from the base's (any rank)
+  if (have_base && changed)
+    rows = rows_changed_on_any_rank(missing ? base_keys : s.pattern.keys, s.schur.base_values,
+                                    s.pattern.keys, s.values, n, mpi_comm);
+  const bool changed_before = note_changed_rows(s.schur, rows, have_base);
 
-  if (changed[0]) {
-    // A new Schur set, at an analysis the pattern asks for anyway (so never an extra one):
-    // every row changed so far (rows that changed once change again in the next Newton
-    // iterations), or those changed since the last factorisation, or none. Not at the first
-    // change: a factorisation with a Schur set costs more than one without (MUMPS orders the
-    // set last; 1.6–1.9× the flops on the 3D Hertz spheres), which pays only if the set is
-    // reused, and a single change is no evidence that the rows keep changing.
-    s.schur_rows = !changed_before                       ? std::vector<long long>{}
-                   : s.schur_pays(s.changed_ever.size()) ? s.changed_ever
-                   : s.schur_pays(rows.size())           ? rows
-                                                         : std::vector<long long>{};
+  if (missing) {
+    s.schur.rows = next_schur_set(s.schur, rows, changed_before);
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: MUMPS analysis"));
     s.n = n;
     s.analysed = s.factorised = false;
-    s.m.n = MUMPS_INT(n);
-    s.m.nz_loc = MUMPS_INT(s.irn.size());
-    s.m.nnz_loc = MUMPS_INT8(s.irn.size());
-    s.configure_schur();
-    make_scotch_deterministic();
-    s.run(1, "analysis");
-    ++s.stats.analyses;
-    s.analysed = true;
+    s.analyse();
   }
   bool updated = false;
-  if (changed[1] && !changed[0] && have_base && !s.schur_rows.empty() &&
-      rows_within(rows, s.schur_rows)) {
+  if (changed && !missing && have_base && !s.schur.rows.empty() &&
+      rows_within(rows, s.schur.rows)) {
     // Only rows of the Schur set changed: S(A') = S(A) + (A' − A)_BB, dense Cholesky.
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: MUMPS Schur update"));
-    std::vector<int> where(std::size_t(n), -1);
-    for (std::size_t k = 0; k < s.schur_rows.size(); ++k)
-      where[std::size_t(s.schur_rows[k])] = int(k);
-    std::vector<SchurDelta> deltas;
-    for (std::size_t p = 0; p < s.pattern.size(); ++p) {
-      const double d = s.values[p] - s.base_values[p];
-      if (d == 0.0) continue;
-      const int i = where[std::size_t(s.pattern[p] / n)], j = where[std::size_t(s.pattern[p] % n)];
-      if (i >= 0 && j >= 0) deltas.push_back({i, j, d});
-    }
-    deltas = gather_deltas(deltas, mpi_comm);
-    int ok = comm.getRank() == 0 ? int(s.dense.update(deltas)) : 1;
-    MPI_Bcast(&ok, 1, MPI_INT, 0, mpi_comm);
-    updated = ok != 0;  // not positive definite: factorise below instead
-    if (updated) ++s.stats.schur_updates;
+    updated = update_schur(s.schur, s.pattern, s.values, n, mpi_comm);
+    if (updated) ++s.stats.schur_updates;  // else not positive definite: factorised below
   }
-  if (changed[1] && !updated) {
-    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: MUMPS factorisation"));
-    s.factorise();
-    if (!s.take_schur(mpi_comm)) {
-      // S(A) not positive definite (A is not): analyse and factorise without a Schur set.
-      s.schur_rows.clear();
-      s.configure_schur();
-      make_scotch_deterministic();
-      s.run(1, "analysis");
-      ++s.stats.analyses;
-      s.factorise();
-    }
-    s.base_values = s.values;
-  }
+  if (changed && !updated) s.factorise();
 
-  // Solve with b gathered on rank 0; scatter x back.
+  // Solve with b gathered on rank 0; x scattered back.
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: MUMPS solve"));
-  Vector b_source(s.source), b_root(s.root);
-  {
-    auto from = b.getLocalViewHost(Tpetra::Access::ReadOnly);
-    auto to = b_source.getLocalViewHost(Tpetra::Access::OverwriteAll);
-    for (LO i = 0; i < n_local; ++i) to(i, 0) = from(i, 0);
-  }
-  b_root.doExport(b_source, *s.to_root, Tpetra::INSERT);
-  const bool is_root = comm.getRank() == 0;
-  if (is_root) {
-    auto r = b_root.getLocalViewHost(Tpetra::Access::ReadOnly);
-    s.rhs.assign(std::size_t(n), 0.0);
-    for (GO i = 0; i < n; ++i) s.rhs[std::size_t(i)] = r(i, 0);
-  }
-  s.m.rhs = is_root ? s.rhs.data() : nullptr;
-  s.m.nrhs = 1;
-  s.m.lrhs = MUMPS_INT(n);
-  if (s.schur_rows.empty()) {
-    s.run(3, "solve");
-  } else {
-    // Reduction (forward substitution on the interior, the reduced right-hand side on the
-    // Schur rows), the dense solve there, expansion (ICNTL(26) = 1, 2). MUMPS does no
-    // iterative refinement with a Schur complement; the matrix is SPD (LDLᵀ of a reduced
-    // elastic stiffness), where one is not needed.
-    const MUMPS_INT nb = MUMPS_INT(s.schur_rows.size());
-    s.reduced_rhs.assign(is_root ? std::size_t(nb) : 0, 0.0);
-    s.m.redrhs = is_root ? s.reduced_rhs.data() : nullptr;
-    s.m.lredrhs = nb;
-    icntl(s.m, 10) = 0;
-    icntl(s.m, 26) = 1;
-    s.run(3, "solve (reduction)");
-    if (is_root) s.dense.solve(s.reduced_rhs.data());
-    icntl(s.m, 26) = 2;
-    s.run(3, "solve (expansion)");
-    icntl(s.m, 26) = 0;
-    icntl(s.m, 10) = 1;
-  }
-  ++s.stats.solves;
-  if (is_root) {
-    auto r = b_root.getLocalViewHost(Tpetra::Access::OverwriteAll);
-    for (GO i = 0; i < n; ++i) r(i, 0) = s.rhs[std::size_t(i)];
-  }
-  b_source.doImport(b_root, *s.to_root, Tpetra::INSERT);
-  auto from = b_source.getLocalViewHost(Tpetra::Access::ReadOnly);
-  auto to = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
-  for (LO i = 0; i < n_local; ++i) to(i, 0) = from(i, 0);
-  // A row whose only nonzero is its diagonal (e.g. λ_j = 0 of an open contact node) fixes
-  // x_i = b_i / a_ii exactly; the factorisation's rounding would leave ~1e-16 there.
-  auto b_local = b.getLocalViewHost(Tpetra::Access::ReadOnly);
-  for (LO i = 0; i < n_local; ++i) {
-    double diagonal = 0.0;
-    bool only_diagonal = true;
-    for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1) && only_diagonal; ++p) {
-      if (local.values(p) == 0.0) continue;
-      if (column_index[local.graph.entries(p)] == row_index[std::size_t(i)])
-        diagonal = local.values(p);
-      else
-        only_diagonal = false;
-    }
-    if (only_diagonal && diagonal != 0.0) to(i, 0) = b_local(i, 0) / diagonal;
-  }
+  s.rhs = gather_to_root(s.numbering, b);
+  s.substitute();
+  scatter_from_root(s.numbering, s.rhs, x);
+  exact_diagonal_rows(*K, entries, b, x);
 }
 
 }  // namespace grout

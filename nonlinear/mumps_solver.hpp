@@ -4,12 +4,18 @@
 // Appl. 23 (2001)), Debian's PT-SCOTCH build, through its C interface dmumps_c.h.
 //
 // Every rank hands MUMPS the rows it owns of the distributed Tpetra matrix (distributed
-// assembled input, ICNTL(18) = 3, 1-based indices: the row map's global ids when they are
-// 0 .. n-1, so that MUMPS sees the same matrix on any number of ranks, else a contiguous
-// renumbering of the row map); the right-hand side is gathered on rank 0 and the solution scattered
-// back with a Tpetra Export/Import. The symbolic analysis (ordering) is done once per sparsity
-// pattern and reused while only the values change (Newton iterations with an unchanged active set);
-// the numeric factorisation is reused while the values do not change either.
+// assembled input, ICNTL(18) = 3). A solve goes through the phases of a sparse direct solver,
+// each in its own file and each keeping what the next solve can reuse:
+//   numbering   MUMPS's global indices of the rows (the row map's global ids when they are
+//               0 .. n-1, else a contiguous renumbering), this rank's entries as keys, the
+//               right-hand side gathered to rank 0 and the solution scattered back
+//               (mumps_numbering.hpp); rebuilt when the row map changes;
+//   pattern     the symbolic analysis (ordering), done once per sparsity pattern and reused
+//               while the matrices' patterns stay inside it (mumps_pattern.hpp);
+//   numeric     the factorisation, reused while the values do not change; with Schur updates
+//               (symmetric matrices) a dense update of the Schur complement on the rows that
+//               changed instead (mumps_schur.hpp, schur_update.hpp);
+//   solve       the forward and backward substitution on rank 0.
 
 #include <memory>
 #include <string>

@@ -4,6 +4,7 @@
 #include <Teuchos_RCP.hpp>
 
 #include "assembly/tpetra_types.hpp"
+#include "nonlinear/multiplier_rows.hpp"
 
 namespace grout {
 
@@ -27,6 +28,15 @@ class NonlinearProblem {
   /// Round-off estimate of ‖F‖₂ at the last residual() call: no iterate can be expected to
   /// bring ‖F‖₂ much below it (NewtonOptions::floor_factor). 0 = unknown.
   virtual double residual_floor() const { return 0.0; }
+  /// The Newton iterate of the current step that the next residual() calls evaluate (0: the
+  /// step's initial guess; k: after k Newton updates, line-search trials of update k
+  /// included). Set by the Newton solver before each evaluation, so that what depends on the
+  /// iterate (the contact active set's start rules) never depends on the order of residual()
+  /// and jacobian() calls. Default: ignored.
+  virtual void set_newton_iterate(int /*k*/) {}
+  /// The kinds of the multiplier rows of J at the last residual() call, as the problem
+  /// declares them (multiplier_rows.hpp; the condensations are built from them), or nullptr.
+  virtual const MultiplierRows* multiplier_rows() const { return nullptr; }
 };
 
 }  // namespace grout

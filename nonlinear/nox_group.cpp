@@ -61,7 +61,9 @@ NOX::Abstract::Group& NoxGroup::operator=(const NOX::Abstract::Group& base) {
   static_cast<NOX::Abstract::Vector&>(*gradient_) = *source.gradient_;
   static_cast<NOX::Abstract::Vector&>(*newton_) = *source.newton_;
   jacobian_ = source.jacobian_;  // shared: only read after the copy
+  rows_ = source.rows_;
   x_tag_ = source.x_tag_;
+  iterate_ = source.iterate_;
   is_f_ = source.is_f_;
   is_jacobian_ = source.is_jacobian_;
   is_gradient_ = source.is_gradient_;
@@ -88,12 +90,14 @@ void NoxGroup::setX(const NOX::Abstract::Vector& y) {
 void NoxGroup::computeX(const NOX::Abstract::Group& grp, const NOX::Abstract::Vector& d,
                         double step) {
   x_->update(1.0, grp.getX(), step, d, 0.0);  // x = x_grp + step d
+  iterate_ = dynamic_cast<const NoxGroup&>(grp).iterate_ + 1;
   new_x();
 }
 
 NOX::Abstract::Group::ReturnType NoxGroup::computeF() {
   if (is_f_) return Ok;
   auto& problem = context_->problem;
+  problem.set_newton_iterate(iterate_);
   const bool ok = all_ranks([&] { return problem.residual(x_->tpetra(), f_->tpetra()); },
                             *x_->tpetra().getMap()->getComm());
   context_->evaluated_x_tag = x_tag_;
@@ -123,6 +127,7 @@ NOX::Abstract::Group::ReturnType NoxGroup::computeJacobian() {
   if (context_->evaluated_x_tag != x_tag_) {
     // The problem last evaluated another x (a line-search trial): bring it back here.
     grout::Vector scratch(f_->tpetra().getMap());
+    problem.set_newton_iterate(iterate_);
     all_ranks([&] { return problem.residual(x_->tpetra(), scratch); },
               *x_->tpetra().getMap()->getComm());
     context_->evaluated_x_tag = x_tag_;
@@ -133,6 +138,8 @@ NOX::Abstract::Group::ReturnType NoxGroup::computeJacobian() {
     context_->failure = "jacobian evaluation failed";
     return Failed;
   }
+  const MultiplierRows* rows = problem.multiplier_rows();  // of J's evaluation point
+  rows_ = rows ? std::make_shared<const MultiplierRows>(*rows) : nullptr;
   is_jacobian_ = true;
   return Ok;
 }
@@ -152,7 +159,8 @@ NOX::Abstract::Group::ReturnType NoxGroup::computeNewton(Teuchos::ParameterList&
   rhs.update(-1.0, f_->tpetra(), 0.0);
   newton_->init(0.0);
   try {
-    context_->last_linear_iterations = context_->linear.solve(jacobian_, rhs, newton_->tpetra());
+    context_->last_linear_iterations =
+        context_->linear.solve(jacobian_, rhs, newton_->tpetra(), rows_.get());
   } catch (const ExitCodeError&) {
     throw;  // e.g. the iterative module cannot be loaded: no smaller step cures that
   } catch (const std::exception& e) {

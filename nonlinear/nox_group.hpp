@@ -1,4 +1,6 @@
 #pragma once
+
+#include <memory>
 // NOX::Abstract::Group over a NonlinearProblem (docs/design.md, "Toolchain notes": NOX route B): F
 // and J come from the problem, the Newton step J Δx = −F from LinearSolver. The Jacobian (and its
 // graph) is whatever the problem hands back at each iterate, so contact pairs and the
@@ -81,7 +83,12 @@ class NoxGroup : public NOX::Abstract::Group {
   Teuchos::RCP<NewtonContext> context_;
   Teuchos::RCP<NoxTpetraVector> x_, f_, gradient_, newton_;
   Teuchos::RCP<Matrix> jacobian_;
+  std::shared_ptr<const MultiplierRows> rows_;  ///< J's multiplier row kinds (declared)
   long x_tag_ = -1;
+  /// The Newton iterate of the step x is (0: the initial guess; computeX from a group at
+  /// iterate k gives k + 1, line-search trials included): handed to the problem before each
+  /// residual (NonlinearProblem::set_newton_iterate). setX keeps it.
+  int iterate_ = 0;
   bool is_f_ = false, is_jacobian_ = false, is_gradient_ = false, is_newton_ = false;
   double norm_f_ = 0.0;
   bool residual_failed_ = false;

@@ -12,6 +12,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "kernels/small_dense_lu.hpp"
 #include "nonlinear/row_table.hpp"
 
 namespace grout {
@@ -68,28 +69,12 @@ std::vector<std::pair<int, int>> complete_pivots(std::vector<double> a, int m, i
   return pivots_of(std::move(a), m, n, allowed, max_pivots, tolerance);
 }
 
-// Inverse of the n×n matrix a (row-major), Gauss-Jordan with partial pivoting; false if
-// singular.
+// Inverse of the n×n matrix a (row-major) by the small dense LU with partial pivoting
+// (kernels/small_dense_lu.hpp); false if singular (an exactly zero pivot).
 bool invert(std::vector<double> a, int n, std::vector<double>& inverse) {
   inverse.assign(std::size_t(n) * n, 0.0);
-  for (int i = 0; i < n; ++i) inverse[i * n + i] = 1.0;
-  for (int c = 0; c < n; ++c) {
-    int p = c;
-    for (int i = c + 1; i < n; ++i)
-      if (std::abs(a[i * n + c]) > std::abs(a[p * n + c])) p = i;
-    if (a[p * n + c] == 0.0) return false;
-    for (int k = 0; k < n; ++k) std::swap(a[c * n + k], a[p * n + k]);
-    for (int k = 0; k < n; ++k) std::swap(inverse[c * n + k], inverse[p * n + k]);
-    const double d = a[c * n + c];
-    for (int k = 0; k < n; ++k) a[c * n + k] /= d, inverse[c * n + k] /= d;
-    for (int i = 0; i < n; ++i) {
-      if (i == c || a[i * n + c] == 0.0) continue;
-      const double f = a[i * n + c];
-      for (int k = 0; k < n; ++k) a[i * n + k] -= f * a[c * n + k];
-      for (int k = 0; k < n; ++k) inverse[i * n + k] -= f * inverse[c * n + k];
-    }
-  }
-  return true;
+  std::vector<int> pivot(static_cast<std::size_t>(n));
+  return small_lu_invert(n, a.data(), n, pivot.data(), inverse.data(), n);
 }
 
 // λ -> (displacement row, C[row, λ]): the multiplier columns of J's displacement rows.
@@ -113,6 +98,7 @@ struct NodeData {
 
 struct SymmetricCondensation::Impl {
   int dofs_per_node = 1;
+  const MultiplierRows* declared = nullptr;  ///< of the current condense(), or none
   std::vector<GO> lambda, slave;
   std::unordered_map<GO, int> by_lambda, by_slave;
   std::map<GO, std::vector<int>> nodes;  ///< slave node -> its pairs (replicated)
@@ -303,6 +289,20 @@ std::string SymmetricCondensation::Impl::reduce_node(NodeData& nd, MultiplierCol
         why = at + "a multiplier row holds another node's multiplier";
       } else {
         has_u = true;
+      }
+    }
+    const GO gid = m.lambda[nd.pairs[i]];
+    if (const LambdaRow* kind = m.declared ? m.declared->find(gid) : nullptr) {
+      // The declaration decides; J's row must not contradict it.
+      const bool said_lambda = *kind == LambdaRow::identity || *kind == LambdaRow::pure_lambda;
+      if (*kind == LambdaRow::mixed) {
+        why = at + "a multiplier row is declared mixed (friction slip or geometry: current)";
+        break;
+      }
+      if ((said_lambda && has_u) || (*kind == LambdaRow::constraint && has_lambda)) {
+        why = at + "multiplier row " + std::to_string(gid) +
+              " does not have the structure its writer declared";
+        break;
       }
     }
     if (has_u && has_lambda)
@@ -706,8 +706,10 @@ void SymmetricCondensation::Impl::build_reduced_matrix(
   m.A->fillComplete(m.reduced_map, m.reduced_map);
 }
 
-bool SymmetricCondensation::condense(const Matrix& J, const Vector& b) {
+bool SymmetricCondensation::condense(const Matrix& J, const Vector& b,
+                                     const MultiplierRows* declared) {
   Impl& m = *impl_;
+  m.declared = declared;
   const auto comm = J.getRowMap()->getComm();
   const auto& row_map = *J.getRowMap();
   const int n_pairs = int(m.lambda.size());

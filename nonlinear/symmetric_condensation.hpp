@@ -63,7 +63,11 @@ class SymmetricCondensation {
   /// Build K̃ and b̃ of J x = b (collective). J fill-complete with row map = range map =
   /// domain map = b's map. Returns false, the same on every rank, if J is not of the form
   /// above (reason() says why); matrix(), rhs() and expand() are then not to be used.
-  bool condense(const Matrix& J, const Vector& b);
+  /// `declared` (optional, multiplier_rows.hpp): each λ-row is pure-λ, a constraint or mixed
+  /// (then condense() returns false) as its writer declares it, and J's row must agree (a
+  /// disagreement is reported as a failed check naming the row, so that the caller falls
+  /// back); undeclared rows are classified from J.
+  bool condense(const Matrix& J, const Vector& b, const MultiplierRows* declared = nullptr);
   /// K̃ and b̃ on the reduced map. K̃'s values are symmetric; the product's exact zeros (J's
   /// prescribed rows and columns) are dropped, and the eliminated rows hold explicit zeros
   /// (in their row only) for the pattern (above).

@@ -81,6 +81,7 @@
 #include "nonlinear/linear_solver.hpp"
 #include "nonlinear/load_stepping.hpp"
 #include "nonlinear/mechanics_problem.hpp"
+#include "nonlinear/newmark.hpp"
 #include "perf/bench_main.hpp"
 
 namespace grout {
@@ -276,13 +277,16 @@ void newton_benchmark(benchmark::State& state, int dim, std::string solver_type)
         max_over_ranks(timer_seconds("grout: contact (search, integration, assembly)") - contact0);
     jacobian = timed([&] { ok &= problem.jacobian(*c.x, c.J); }, &iteration_cpu);
     rhs.update(-1.0, *c.F, 0.0);
-    LinearSolver linear(solver_params(solver_type), "bench_newton");
-    linear.set_multiplier_pairing(problem.multiplier_pairing(), dim);
-    // As the driver: the iterative path's MueLu defaults for elasticity (block size, rigid-body
-    // modes, bodies kept apart) need the coordinates; without them MueLu ran with its scalar
-    // defaults.
-    linear.set_coordinates(c.mesh.coordinates, dim);
-    linear.set_node_bodies(c.bodies);
+    // As the driver (system_layout.hpp), with the case's bodies computed once: the iterative
+    // path's MueLu defaults for elasticity (block size, rigid-body modes, bodies kept apart)
+    // need the coordinates; without them MueLu ran with its scalar defaults.
+    SystemLayout layout;
+    layout.multiplier_pairing = problem.multiplier_pairing();
+    layout.dofs_per_node = dim;
+    layout.coordinates = c.mesh.coordinates;
+    layout.dim = dim;
+    layout.node_bodies = c.bodies;
+    LinearSolver linear(solver_params(solver_type), "bench_newton", std::move(layout));
     try {
       solve = timed([&] { iterations = linear.solve(c.J, rhs, dx); }, &solve_cpu);
       iteration_cpu += solve_cpu;
@@ -379,17 +383,16 @@ void step_benchmark(benchmark::State& state, int dim, bool dynamic) {
   SteppingOptions stepping;
   stepping.end_time = t_end;
   stepping.steps = steps;
-  LinearSolver linear(Teuchos::ParameterList(), "bench_newton");
-  linear.set_multiplier_pairing(problem.multiplier_pairing(), dim);
-  linear.set_coordinates(mesh.coordinates, dim);  // `auto` picks by dimension: MUMPS in 3D
-  LinearSolver mass_solver(Teuchos::ParameterList(), "bench_newton: mass");
-  mass_solver.set_coordinates(mesh.coordinates, dim);
+  // As the driver: `auto` picks by the layout's dimension (MUMPS in 3D).
+  LinearSolver linear(Teuchos::ParameterList(), "bench_newton", system_layout(problem, mesh));
+  LinearSolver mass_solver(Teuchos::ParameterList(), "bench_newton: mass",
+                           mass_matrix_layout(mesh));
   std::unique_ptr<DynamicProblem> dyn;
   if (dynamic) {
     Vector v0(solid.owned_map());
-    dyn = std::make_unique<DynamicProblem>(problem, dim, assemble_mass_matrix(solid, false),
-                                           TimeIntegrator::of(TimeScheme::newmark, 1.0),
-                                           std::array<double, 3>{0.0, 0.0, 0.0}, v0, true);
+    dyn = std::make_unique<DynamicProblem>(
+        problem, dim, assemble_mass_matrix(solid, false), std::make_unique<Newmark>(),
+        std::array<double, 3>{0.0, 0.0, 0.0}, v0, ContactTreatment::stabilized, node_bodies(mesh));
     Vector x0(dyn->map());
     dyn->start(x0, mass_solver);
   }

@@ -20,7 +20,6 @@
 #include "assembly/contact_surface.hpp"
 #include "assembly/solid_problem.hpp"
 #include "io/errors.hpp"
-#include "io/mesh_bodies.hpp"
 #include "io/mesh_generators.hpp"
 #include "nonlinear/condensed_solve.hpp"
 #include "nonlinear/linear_solver.hpp"
@@ -339,6 +338,14 @@ System without_undetermined_multipliers(const System& sys, int* redundant = null
   return out;
 }
 
+/// The layout of a synthetic or mechanics system given by its pairing alone (no coordinates:
+/// `type: auto` picks as in 2D).
+SystemLayout pairing_layout(const System& sys) {
+  SystemLayout layout;
+  layout.multiplier_pairing = sys.pairing, layout.dofs_per_node = sys.dim;
+  return layout;
+}
+
 /// Full direct solve vs condensed solves (amesos2 and, unless skipped, Belos + MueLu). The
 /// full solve is of without_undetermined_multipliers(sys); the condensed solutions must also
 /// satisfy sys itself (up to the dropped rows of kind R multipliers: their right-hand side,
@@ -348,22 +355,24 @@ void compare(const System& given, double tolerance, bool with_belos, const std::
   const System sys = without_undetermined_multipliers(given);
   const auto map = sys.J->getRowMap();
   Vector x_full(map), x_direct(map), x_belos(map);
-  LinearSolver full(direct_params(false), "test");
-  full.set_multiplier_pairing(sys.pairing, sys.dim);  // ignored: condense_multipliers false
+  // The pairing is ignored with condense_multipliers: false.
+  LinearSolver full(direct_params(false), "test", pairing_layout(sys));
   full.solve(sys.J, *sys.b, x_full);
   EXPECT_LT(relative_residual(*sys.J, x_full, *sys.b), 1e-12) << label;
 
-  LinearSolver direct(direct_params(true), "test");
-  direct.set_multiplier_pairing(sys.pairing, sys.dim);
+  LinearSolver direct(direct_params(true), "test", pairing_layout(sys));
   EXPECT_TRUE(direct.condenses_multipliers());
   direct.solve(given.J, *given.b, x_direct);
   EXPECT_LT(relative_difference(x_direct, x_full), tolerance) << label << " (amesos2)";
   EXPECT_LT(relative_residual(*sys.J, x_direct, *sys.b), tolerance) << label << " (amesos2)";
 
   if (!with_belos) return;
-  LinearSolver belos(belos_params(sys.dim, coarse_max_size), "test");
-  belos.set_multiplier_pairing(sys.pairing, sys.dim);
-  if (!sys.coordinates.empty()) belos.set_coordinates(sys.coordinates, sys.dim);
+  SystemLayout layout = pairing_layout(sys);
+  if (!sys.coordinates.empty()) {
+    layout.coordinates = sys.coordinates;
+    layout.dim = sys.dim;
+  }
+  LinearSolver belos(belos_params(sys.dim, coarse_max_size), "test", std::move(layout));
   const int iterations = belos.solve(given.J, *given.b, x_belos);
   // Solved to a residual of 1e-10 on the multilevel cases: x to the condition number. The 3D
   // frictional one (current geometry: the objective slip's stick rows carry the x·dM terms of
@@ -444,8 +453,7 @@ void check_round_off_tie(double round_off) {
   // λ_x of node 2 (the 9th slave: GID 32 + 2 × 8) is 0, and the solution satisfies J x = b
   // as given.
   Vector x(sys.J->getRowMap());
-  LinearSolver direct(direct_params(true), "test");
-  direct.set_multiplier_pairing(sys.pairing, sys.dim);
+  LinearSolver direct(direct_params(true), "test", pairing_layout(sys));
   direct.solve(sys.J, *sys.b, x);
   EXPECT_LT(relative_residual(*sys.J, x, *sys.b), 1e-12) << label;
   const GO lambda_x = 32 + 2 * 8;
@@ -557,9 +565,14 @@ void check_tied_patch_with_symmetry_planes(int dim) {
     const std::string p = path;
     Teuchos::ParameterList params =
         p == "condensed belos" ? belos_params(dim) : direct_params(p == "condensed direct");
-    LinearSolver solver(params, "test");
-    solver.set_multiplier_pairing(problem.multiplier_pairing(), dim);
-    if (p == "condensed belos") solver.set_coordinates(mesh.coordinates, dim);
+    SystemLayout layout;
+    layout.multiplier_pairing = problem.multiplier_pairing();
+    layout.dofs_per_node = dim;
+    if (p == "condensed belos") {
+      layout.coordinates = mesh.coordinates;
+      layout.dim = dim;
+    }
+    LinearSolver solver(params, "test", std::move(layout));
     solver.solve(J, b, dx);
     x.update(1.0, dx, 1.0);
     double error = 0.0, error_all = 0.0, lambda_max = 0.0, lambda_max_all = 0.0;
@@ -621,10 +634,7 @@ void check_iteration_growth(int dim, ContactKind type, double mu, const std::vec
     Teuchos::ParameterList p;
     p.set("type", "belos");
     p.sublist("MueLu").set("coarse: max size", 100);
-    LinearSolver solver(p, "test");
-    solver.set_multiplier_pairing(mc.sys.pairing, dim);
-    solver.set_coordinates(mc.mesh.coordinates, dim);
-    solver.set_node_bodies(node_bodies(mc.mesh));  // as the driver
+    LinearSolver solver(p, "test", system_layout(mc.sys.pairing, mc.mesh));  // as the driver
     Vector x(mc.sys.J->getRowMap());
     iterations.push_back(solver.solve(mc.sys.J, *mc.sys.b, x));
     unknowns.push_back(double(mc.sys.J->getGlobalNumRows()));
@@ -678,14 +688,9 @@ TEST(CondensedSolve, ReusedHierarchySolvesTheNextSystem) {
   p.set("type", "belos");
   p.set("reuse_preconditioner", true);
   p.sublist("MueLu").set("coarse: max size", 100);  // a multilevel hierarchy
-  LinearSolver reusing(p, "test");
+  LinearSolver reusing(p, "test", system_layout(first.sys.pairing, first.mesh));
   p.set("reuse_preconditioner", false);
-  LinearSolver fresh(p, "test");
-  for (LinearSolver* s : {&reusing, &fresh}) {
-    s->set_multiplier_pairing(first.sys.pairing, 3);
-    s->set_coordinates(first.mesh.coordinates, 3);
-    s->set_node_bodies(node_bodies(first.mesh));
-  }
+  LinearSolver fresh(p, "test", system_layout(first.sys.pairing, first.mesh));
   // The first system with other values, same pattern: every entry scaled by 1 + 0.2 sin(k).
   auto J_values = Teuchos::rcp(new Matrix(*first.sys.J, Teuchos::Copy));
   J_values->resumeFill();
@@ -720,20 +725,20 @@ TEST(CondensedSolve, OptionIsValidated) {
   p.set("type", "belos");
   p.set("condense_multipliers", std::string("yes"));
   try {
-    LinearSolver solver(p, "case.yaml: grout/solver/Linear Solver");
+    LinearSolver solver(p, "case.yaml: grout/solver/Linear Solver", {});
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("grout/solver/Linear Solver/condense_multipliers"),
               std::string::npos)
         << e.what();
   }
-  LinearSolver off(Teuchos::ParameterList(), "test");
+  LinearSolver off(Teuchos::ParameterList(), "test", {});
   EXPECT_FALSE(off.condenses_multipliers());
   Teuchos::ParameterList q;
   q.set("type", "belos");
   q.set("reuse_preconditioner", 1);
   try {
-    LinearSolver solver(q, "case.yaml: grout/solver/Linear Solver");
+    LinearSolver solver(q, "case.yaml: grout/solver/Linear Solver", {});
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("grout/solver/Linear Solver/reuse_preconditioner"),
@@ -750,8 +755,8 @@ TEST(CondensedSolve, InvalidPairingIsRejected) {
 TEST(CondensedSolve, WithoutPairingTheSystemIsSolvedAsGiven) {
   const System sys = synthetic_system(false);
   Vector x_full(sys.J->getRowMap()), x(sys.J->getRowMap());
-  LinearSolver(direct_params(false), "test").solve(sys.J, *sys.b, x_full);
-  LinearSolver(direct_params(true), "test").solve(sys.J, *sys.b, x);
+  LinearSolver(direct_params(false), "test", {}).solve(sys.J, *sys.b, x_full);
+  LinearSolver(direct_params(true), "test", {}).solve(sys.J, *sys.b, x);
   EXPECT_LT(relative_difference(x, x_full), 1e-14);
 }
 

@@ -40,6 +40,13 @@ struct Case {
   int active = 0;
 };
 
+// The layout of `pairing` alone (system_layout.hpp), `dim` dofs per slave node.
+SystemLayout pairing_layout(const MultiplierPairing& pairing, int dim) {
+  SystemLayout layout;
+  layout.multiplier_pairing = pairing, layout.dofs_per_node = dim;
+  return layout;
+}
+
 // J and −F at a perturbed state with a mix of active and inactive slave nodes.
 void build(Case& mc, int dim, ContactKind type, double mu, ContactGeometry geometry, int k = 1) {
   const auto comm = Tpetra::getDefaultComm();
@@ -126,7 +133,7 @@ void check_applies(int dim, ContactKind type, const std::string& label, int k = 
   EXPECT_GT(mc.active, 0) << label;
   const auto map = mc.J->getRowMap();
   Vector x_full(map), x(map), x_solver(map);
-  LinearSolver full(params("amesos2", false), "test");
+  LinearSolver full(params("amesos2", false), "test", {});
   full.solve(mc.J, *mc.b, x_full);
 
   SymmetricCondensation reduction(mc.pairing, dim);
@@ -144,8 +151,7 @@ void check_applies(int dim, ContactKind type, const std::string& label, int k = 
   EXPECT_LT(relative_difference(x, x_full, mc.n_u, false), 1e-10) << label << " (u)";
   EXPECT_LT(relative_difference(x, x_full, mc.n_u, true), 1e-10) << label << " (lambda)";
 
-  LinearSolver solver(params("mumps", true), "test");
-  solver.set_multiplier_pairing(mc.pairing, dim);
+  LinearSolver solver(params("mumps", true), "test", pairing_layout(mc.pairing, dim));
   solver.solve(mc.J, *mc.b, x_solver);
   EXPECT_TRUE(solver.last_solve_symmetric()) << label;
   EXPECT_LT(relative_difference(x_solver, x_full, mc.n_u, false), 1e-10) << label << " (u)";
@@ -166,10 +172,9 @@ void check_declines(Case& mc, int dim, const std::string& label) {
   EXPECT_FALSE(reduction.reason().empty()) << label;
   const auto map = mc.J->getRowMap();
   Vector x_full(map), x(map);
-  LinearSolver full(params("amesos2", false), "test");
+  LinearSolver full(params("amesos2", false), "test", {});
   full.solve(mc.J, *mc.b, x_full);
-  LinearSolver solver(params("mumps", true), "test");
-  solver.set_multiplier_pairing(mc.pairing, dim);
+  LinearSolver solver(params("mumps", true), "test", pairing_layout(mc.pairing, dim));
   solver.solve(mc.J, *mc.b, x);
   EXPECT_FALSE(solver.last_solve_symmetric()) << label;
   EXPECT_LT(relative_difference(x, x_full, mc.n_u, false), 1e-8) << label;

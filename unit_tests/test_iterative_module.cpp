@@ -53,7 +53,7 @@ double solve_with(const std::string& type) {
   const auto A = tridiagonal(300);
   Vector b(A->getRowMap()), x(A->getRowMap()), r(A->getRowMap());
   b.putScalar(1.0);
-  LinearSolver solver(params, "test");
+  LinearSolver solver(params, "test", {});
   solver.solve(A, b, x);
   A->apply(x, r);
   r.update(1.0, b, -1.0);

@@ -77,7 +77,7 @@ void check_solver(const Teuchos::ParameterList& params) {
   const auto A = tridiagonal(200);
   Vector b(A->getRowMap()), x(A->getRowMap());
   b.randomize();
-  LinearSolver solver(params, "test");
+  LinearSolver solver(params, "test", {});
   const int iterations = solver.solve(A, b, x);
   EXPECT_GE(iterations, 1);
   EXPECT_LT(relative_residual(*A, x, b), 1e-10);
@@ -125,7 +125,7 @@ TEST(LinearSolver, AutoPicksTheDirectSolverForSmallSystems) {
   EXPECT_EQ(default_direct_type(2), "mumps_gathered");
   // No coordinates given: 2D. Both sides of the small-system threshold, solved.
   for (const int n : {200, int(small)}) {
-    LinearSolver solver(Teuchos::ParameterList(), "test");
+    LinearSolver solver(Teuchos::ParameterList(), "test", {});
     const auto A = tridiagonal(n);
     Vector b(A->getRowMap()), x(A->getRowMap());
     b.randomize();
@@ -136,7 +136,7 @@ TEST(LinearSolver, AutoPicksTheDirectSolverForSmallSystems) {
   // A MUMPS sublist asks for MUMPS: kept below the small-system threshold.
   Teuchos::ParameterList with_mumps;
   with_mumps.sublist("MUMPS").set("ordering", "amd");
-  LinearSolver solver(with_mumps, "test");
+  LinearSolver solver(with_mumps, "test", {});
   const auto A = tridiagonal(200);
   Vector b(A->getRowMap()), x(A->getRowMap());
   b.randomize();
@@ -159,7 +159,7 @@ TEST(LinearSolver, GatheredMumpsIsTheSameBitForBitOnAnyRankCount) {
   const auto A = grid(g, comm);
   Vector b(A->getRowMap()), x(A->getRowMap());
   fill_rhs(b);
-  LinearSolver all(Teuchos::ParameterList(), "test");  // type: auto, 2D: gathered MUMPS
+  LinearSolver all(Teuchos::ParameterList(), "test", {});  // type: auto, 2D: gathered MUMPS
   EXPECT_EQ(all.solve(A, b, x), 1);
   EXPECT_EQ(all.last_type(), "mumps_gathered");
   EXPECT_LT(relative_residual(*A, x, b), 1e-12);
@@ -174,7 +174,7 @@ TEST(LinearSolver, GatheredMumpsIsTheSameBitForBitOnAnyRankCount) {
   const auto A1 = grid(g, self);
   Vector b1(A1->getRowMap()), x1(A1->getRowMap());
   fill_rhs(b1);
-  LinearSolver one(Teuchos::ParameterList(), "test");
+  LinearSolver one(Teuchos::ParameterList(), "test", {});
   one.solve(A1, b1, x1);
   auto a = x_root.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto c = x1.getLocalViewHost(Tpetra::Access::ReadOnly);
@@ -194,7 +194,7 @@ TEST(LinearSolver, GatheredSingularSystemThrowsOnEveryRank) {
       params.set("type", "mumps");
       params.sublist("MUMPS").set("gather", true);
     }
-    LinearSolver solver(params, "test");
+    LinearSolver solver(params, "test", {});
     const auto A = grid(20, Tpetra::getDefaultComm(), true);
     Vector b(A->getRowMap()), x(A->getRowMap());
     fill_rhs(b);
@@ -206,7 +206,7 @@ TEST(LinearSolver, UnknownTypeIsAnInputError) {
   Teuchos::ParameterList params;
   params.set("type", "superlu");
   try {
-    LinearSolver solver(params, "case.yaml: grout/solver/Linear Solver");
+    LinearSolver solver(params, "case.yaml: grout/solver/Linear Solver", {});
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("superlu"), std::string::npos);

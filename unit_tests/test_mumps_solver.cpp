@@ -124,8 +124,8 @@ TEST(MumpsSolver, AgreesWithKlu2) {
   Teuchos::ParameterList mumps, klu;
   klu.set("type", "amesos2");
   mumps.set("type", "mumps");
-  LinearSolver(mumps, "test").solve(A, b, x_mumps);
-  LinearSolver(klu, "test").solve(A, b, x_klu);
+  LinearSolver(mumps, "test", {}).solve(A, b, x_mumps);
+  LinearSolver(klu, "test", {}).solve(A, b, x_klu);
   EXPECT_LT(relative_difference(x_klu, x_mumps), 1e-10);
 }
 

@@ -166,7 +166,7 @@ NewtonOptions quiet_options() {
 }
 
 NewtonReport solve(NonlinearProblem& problem, Vector& x, const NewtonOptions& options) {
-  LinearSolver linear(Teuchos::ParameterList(), "test");
+  LinearSolver linear(Teuchos::ParameterList(), "test", {});
   const NewtonReport report = solve_newton(problem, x, linear, options, "  test");
   if (options.verbose && problem.map()->getComm()->getRank() == 0) {
     std::printf("  -> %s after %d iterations\n", report.reason.c_str(), report.iterations);
@@ -302,7 +302,7 @@ TEST(Newton, BacktrackingRescuesAnOvershootingFullStep) {
 // Backtrack, which converges, so the step passes with no cut-back and damped updates.
 TEST(MarchSteps, RetriesAFailedFullStepWithBacktrackBeforeCutting) {
   AtanProblem problem;
-  LinearSolver linear(Teuchos::ParameterList(), "test");
+  LinearSolver linear(Teuchos::ParameterList(), "test", {});
   SteppingOptions stepping;
   stepping.max_cuts = 0;  // a cut-back would be a failure
   const auto start_at_two = [](double, Vector& x) { x.putScalar(2.0); };
@@ -334,7 +334,7 @@ TEST(MarchSteps, RetriesAFailedFullStepWithBacktrackBeforeCutting) {
 TEST(MarchSteps, AFailureAtTheStartPointIsNotRetried) {
   CubicProblem problem;
   problem.fail_from_call = 1;
-  LinearSolver linear(Teuchos::ParameterList(), "test");
+  LinearSolver linear(Teuchos::ParameterList(), "test", {});
   SteppingOptions stepping;
   stepping.max_cuts = 0;
   EXPECT_THROW(march_steps(
@@ -368,7 +368,7 @@ TEST(Newton, LogsOneLinePerIterationOnRankZero) {
   CubicProblem problem;
   Vector x(problem.map());
   NewtonOptions options;  // verbose
-  LinearSolver linear(Teuchos::ParameterList(), "test");
+  LinearSolver linear(Teuchos::ParameterList(), "test", {});
   testing::internal::CaptureStdout();
   const NewtonReport report = solve_newton(problem, x, linear, options, "  test");
   const std::string out = testing::internal::GetCapturedStdout();

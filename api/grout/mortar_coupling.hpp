@@ -4,7 +4,7 @@
 // <grout/mortar_coupling.hpp>, target Grout::mortar.
 //
 // For a slave surface Γ¹ and a master surface Γ² (LINE2 in 2D, TRI3/QUAD4 in 3D), with the
-// multiplier basis Φ_j (Popp et al. 2010, eqs. 9-10, 30; DESIGN.md §2):
+// multiplier basis Φ_j (Popp et al. 2010, eqs. 9-10, 30; docs/design.md §2):
 //   D_jk = ∫ Φ_j N¹_k dA             slave nodes j, k (CRS); diagonal for the dual basis:
 //                                    D_jj = ∫ Φ_j dA per slave node (D())
 //   M_jl = ∫ Φ_j (N²_l ∘ χ) dA       slave node j → master node l (CRS)
@@ -25,9 +25,20 @@
 // forces are then this rank's contributions: the host sums them over the ranks by node id, as
 // it assembles element contributions. Normals and tangents are complete on every rank.
 //
+// Lifetime of the results: every const reference returned (D, the CRS arrays, gaps, normals,
+// tangents, row_status, the derivative triplets) refers to a std::vector owned by the coupling,
+// the same object for the coupling's life; each update() overwrites its contents (per-row
+// arrays keep their size; M's CRS arrays and the triplets may change size, so their data()
+// pointers may move). Copy what must outlive the next update. contact_forces returns a value
+// the host owns.
+//
 // Errors: every check of the host's data throws MortarCouplingError with the offending value
 // (with a communicator, on every rank: an error one rank finds is agreed on collectively).
-// Nothing returned is NaN.
+// The constructor also checks that the two surfaces face each other (a surface whose faces are
+// ordered into its body flips its normals; for the slave, the sign of every gap): over the
+// overlapping face pairs, the overlap-weighted mean of n_slave · n_master must be negative;
+// with inside_points, every face's normal must point away from its point. Nothing returned is
+// NaN. Rows a master covers only in part: row_status().
 
 #include <mpi.h>
 #include <Kokkos_Core.hpp>
@@ -37,7 +48,18 @@
 #include <stdexcept>
 #include <vector>
 
-#include "kernels/mortar_types.hpp"
+// The two option enums. Installed, this header includes nothing of Grout's internals (a host
+// sees only <grout/...> names); inside Grout's own build, or for a host that also uses Grout's
+// internal headers (Grout::grout puts them on the include path), they come from
+// kernels/mortar_types.hpp, whose definitions these repeat token for token (one type either way).
+#if __has_include(<kernels/mortar_types.hpp>)
+#include <kernels/mortar_types.hpp>
+#else
+namespace grout {
+enum class MortarIntegration : int { exact = 0, collocation = 1 };
+enum class MultiplierBasis : int { dual = 0, standard = 1 };
+}  // namespace grout
+#endif
 
 namespace grout {
 
@@ -72,6 +94,10 @@ struct SurfaceArrays {
   /// (required with a communicator of more than one rank). Default: slave rows 0 … n_s − 1,
   /// master rows n_s … n_s + n_m − 1.
   const long long* node_ids = nullptr;
+  /// Optional: per face, dim coordinates of a point inside the body the face bounds (e.g. its
+  /// element's centroid). Given, the constructor checks that every face normal points away
+  /// from it and names the first face that does not (a surface oriented into its body).
+  const double* inside_points = nullptr;
 };
 
 /// Helper: SurfaceArrays over std::vectors (they must outlive the constructor call).
@@ -92,6 +118,38 @@ struct SurfaceViews {
   HostFaces faces;
   HostCoordinates coordinates;
   HostNodeIds node_ids;
+  /// Optional (n_faces × dim, or empty): SurfaceArrays::inside_points.
+  HostCoordinates inside_points = {};
+};
+
+/// How a slave row is covered by the master surface at the last update (row_status()).
+/// With the dual basis a node whose faces are only partly covered gets a D_jj that can be small
+/// or negative, and a weighted gap g̃_j that can be negative where the bodies are apart: it is
+/// not a penetration. Grout's driver takes D_jj ≤ 1e-8 max_k D_kk as "no master" (λ_j = 0).
+enum class RowStatus : int {
+  /// No master under the node: c_j ≤ 1e-8 max_k c_k (c_j = D_jj, standard: Σ_k D_jk; the
+  /// driver's threshold), or no faces. Its D, M and g̃ are not to be used; set λ_j = 0.
+  uncovered = 0,
+  /// Some face around the node is only partly covered: c_j differs from w_j = ∫ N¹_j dA over
+  /// the node's faces by more than 1e-6 w_j. D_jj (dual) may be small or negative and g̃_j < 0
+  /// need not mean penetration.
+  partial = 1,
+  full = 2  ///< Every face around the node is covered: c_j = w_j (within 1e-6 w_j).
+};
+
+/// contact_forces: each rank's own contributions (the default), or summed over the ranks and
+/// delivered to the owner of each node (the lowest rank that passes it as a row).
+enum class ForceSum : int { contributions = 0, owners = 1 };
+
+/// The slave row and the master node of one entry of M_values (MortarCoupling::M_entry).
+struct MEntry {
+  std::size_t row;
+  long long master_node;
+};
+/// A derivative column as a node id and a coordinate component (MortarCoupling::dof).
+struct Dof {
+  long long node;
+  int component;
 };
 
 /// One entry of a sparse derivative: ∂(quantity `row`) / ∂(coordinate `column`), with
@@ -169,10 +227,28 @@ class MortarCoupling {
   /// (slave face, master face) pairs with a non-empty overlap in the last update.
   int overlapping_pairs() const;
 
+  /// Per slave row, how the master covers it (RowStatus: uncovered, partial, full). With a
+  /// communicator the status is of the node's faces on all ranks (c_j and w_j summed by id),
+  /// the same on every rank that has the row.
+  const std::vector<RowStatus>& row_status() const;
+
   /// Forces of the multiplier field lambda (per slave row × dim): f¹_k = Σ_j D_jk λ_j at the
-  /// slave rows, f²_l = −Σ_j M_jl λ_j at master_nodes.
-  ContactForces contact_forces(const double* lambda) const;
-  ContactForces contact_forces(const std::vector<double>& lambda) const;
+  /// slave rows, f²_l = −Σ_j M_jl λ_j at master_nodes. ForceSum::owners (collective with a
+  /// communicator): both summed over the ranks; `slave` holds the total at the rows this rank
+  /// owns (0 at the others), `master_nodes` the master nodes it owns that have a force.
+  ContactForces contact_forces(const double* lambda, ForceSum sum = ForceSum::contributions) const;
+  ContactForces contact_forces(const std::vector<double>& lambda,
+                               ForceSum sum = ForceSum::contributions) const;
+
+  /// Index spaces. Slave rows are the host's slave coordinate rows (D, g̃, normals, the CRS
+  /// rows, row_status, the rows of the D and gap derivatives); CRS columns and ContactForces::
+  /// master_nodes are node ids; derivative columns are node id · dim + component; the rows of
+  /// M_derivatives are positions k in M_values. These accessors translate them.
+  long long slave_id(std::size_t row) const;  ///< node id of a slave row
+  long long slave_row(long long id) const;    ///< slave row of a node id, −1 if none
+  /// Slave row and master node id of M_values[k]. M's pattern (and so k) belongs to one update.
+  MEntry M_entry(std::size_t k) const;
+  Dof dof(long long column) const;  ///< a derivative column as (node id, component)
 
   /// Exact derivatives (options.derivatives): rows are slave rows for D and the gaps, and
   /// positions in M_values for M. Throw MortarCouplingError if derivatives were not requested.
@@ -183,6 +259,7 @@ class MortarCoupling {
   struct Impl;
 
  private:
+  void check_orientation() const;
   std::unique_ptr<Impl> impl_;
 };
 

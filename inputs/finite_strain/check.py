@@ -3,7 +3,11 @@
 1. Homogeneous finite deformation patch tests (stretch_quad4: Neo-Hookean, plane strain;
    shear_hex8: St. Venant-Kirchhoff, 3D): u = (F - I) X on the boundary, so the exact
    solution is u = (F - I) X everywhere with the Cauchy stress of the law at F; displacement
-   and element stresses to 1e-10 relative.
+   and element stresses to 1e-10 relative. Plane stress (plane: stress, strain: finite):
+   stretch_quad4_plane_stress, a Neo-Hookean sheet in uniaxial stretch, against the closed form
+   l(s) = s^-2 exp(mu (1 - s^2) / lambda), sigma_xx = mu (l^2 - s^2) / (l s^2) at every step;
+   shear_quad4_plane_stress, St. Venant-Kirchhoff under a general in-plane F, against
+   E_33 = -lambda (E_11 + E_22) / (lambda + 2 mu), sigma = F S F^T / J.
 2. Large-deflection cantilever (Neo-Hookean, nu = 0, L/h = 20, P L^2 / EI = 2 at t = 1) on
    three nested meshes against the elastica (elastica.py; Mattiasson 1981, Table I:
    u/L = 0.16064, w/L = 0.49346): the tip errors fall by at least 3x per refinement, the finest
@@ -44,7 +48,7 @@ def svk_cauchy(F):
 
 
 def check_patch(name, F, sigma):
-    dim = 2 if name.endswith("quad4") else 3
+    dim = 2 if "quad4" in name else 3
     names = (["stress_xx", "stress_yy", "stress_xy", "stress_zz"] if dim == 2 else
              ["stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_zx"])
     index = {"xx": (0, 0), "yy": (1, 1), "zz": (2, 2), "xy": (0, 1), "yz": (1, 2), "zx": (0, 2)}
@@ -72,6 +76,57 @@ F2 = np.array([[1.5, 0.4, 0.0], [-0.1, 0.8, 0.0], [0.0, 0.0, 1.0]])
 check_patch("stretch_quad4", F2, neo_hookean_cauchy(F2))
 F3 = np.eye(3) + np.array([[0.3, 0.2, 0.0], [0.0, -0.1, 0.25], [0.1, 0.0, 0.2]])
 check_patch("shear_hex8", F3, svk_cauchy(F3))
+
+# 1b. Plane stress (model: {plane: stress, strain: finite}).
+# Neo-Hookean sheet in uniaxial stretch, F = diag(l, s, s): P_22 = P_33 = 0 give
+# mu (s^2 - 1) + lambda ln(l s^2) = 0, so l(s) = s^-2 exp(mu (1 - s^2) / lambda), and
+# sigma_xx = mu (l^2 - s^2) / (l s^2) (derivation: unit_tests/test_kernels_plane_stress.cpp).
+# At t = 1 the prescribed l_1 = l(0.9); at every step the measured lateral stretch s must give
+# back the prescribed l(t) through l(s), and the stresses their closed forms.
+L1 = math.exp(0.19 / 1.5) / 0.81
+
+
+def stretch_of(s):
+    return math.exp(MU * (1.0 - s * s) / LAM) / (s * s)
+
+
+S1 = 0.9
+F_ps = np.diag([stretch_of(S1), S1, S1])
+sigma_ps = np.diag([MU * (F_ps[0, 0] ** 2 - S1 ** 2) / (F_ps[0, 0] * S1 ** 2), 0.0, 0.0])
+check_patch("stretch_quad4_plane_stress", F_ps, sigma_ps)
+for np_ in (1, 2):
+    r = Results("np%d/stretch_quad4_plane_stress.e" % np_)
+    x, y = r.coordinates()
+    top = y > 0.5
+    worst = 0.0
+    for step, t in enumerate(r.times()):
+        if t == 0.0:
+            continue
+        s = 1.0 + np.mean(r.nodal("displ_y", step)[top] / y[top])
+        l_prescribed = 1.0 + t * (L1 - 1.0)
+        sxx = MU * (l_prescribed ** 2 - s * s) / (l_prescribed * s * s)
+        err = max(abs(stretch_of(s) / l_prescribed - 1.0),
+                  np.abs(r.element("stress_xx", step) - sxx).max() / sxx,
+                  max(np.abs(r.element(n, step)).max() for n in ("stress_yy", "stress_xy",
+                                                                 "stress_zz")) / sxx)
+        worst = max(worst, err)
+    print("stretch_quad4_plane_stress np%d: every step, l(s) and sigma against the closed form: "
+          "max rel. error %.2e" % (np_, worst))
+    if not worst < 1e-10:
+        failures.append("stretch_quad4_plane_stress np%d: closed form missed by %.2e" % (np_, worst))
+
+
+def svk_plane_stress_cauchy(F):
+    """St. Venant-Kirchhoff sheet: E_33 = -lambda (E_11 + E_22) / (lambda + 2 mu), S_33 = 0."""
+    F = F.copy()
+    E2 = 0.5 * (F[:2, :2].T @ F[:2, :2] - np.eye(2))
+    E33 = -LAM * np.trace(E2) / (LAM + 2 * MU)
+    F[2, 2] = math.sqrt(1.0 + 2.0 * E33)
+    return svk_cauchy(F)
+
+
+F_svk = np.array([[1.3, 0.3, 0.0], [-0.2, 0.9, 0.0], [0.0, 0.0, 1.0]])
+check_patch("shear_quad4_plane_stress", F_svk, svk_plane_stress_cauchy(F_svk))
 
 # 2. Cantilever.
 L, H, K_END = 10.0, 0.5, 2.0
@@ -131,7 +186,8 @@ except ImportError:
 
 # 3. Quadratic convergence.
 checked = 0
-for name in ("stretch_quad4", "shear_hex8", "cantilever_1", "cantilever_2", "cantilever_3"):
+for name in ("stretch_quad4", "shear_hex8", "stretch_quad4_plane_stress", "shear_quad4_plane_stress",
+             "cantilever_1", "cantilever_2", "cantilever_3"):
     for np_ in (1, 2):
         rows = list(csv.DictReader(open("np%d/%s_newton.csv" % (np_, name))))
         steps = sorted({(int(r["step"]), float(r["time"])) for r in rows})

@@ -3,7 +3,8 @@ published curves of the Kratos example (Poulios & Renard 2015), digitised into r
 by digitize_reference.py.
 
 Usage: check.py CASE MU [--plateau T0 T1] [--fy-tolerance TOL] [--fx-tolerance TOL]
-                [--ratio-range LO HI] [--plane-strain] [--ranks 1 2] [--force-set NAME]
+                [--ratio-range LO HI] [--plane-strain | --plane-stress] [--ranks 1 2]
+                [--force-set NAME]
                 [--label TEXT]
 
 The defaults are #19's pass, which is for the reference's own model, 3D on Kratos' mesh
@@ -14,7 +15,8 @@ published curve is not plane strain: +18 % on F_y measured, docs/verification.md
 and F_x/F_y are printed against the reference, not checked. What such a run checks is what
 holds for any model: Coulomb's law at the nodes, frictionless F_x = 0, 1 = 2 ranks; its
 forces are checked against GetFEM's plane-strain solution by getfem_compare.py (ctest
-shallow_ironing/getfem).
+shallow_ironing/getfem). --plane-stress: the same for the 2D plane-stress model
+(ci_plane_stress_*.yaml, full_plane_stress_*.yaml: the ironing hypothesis, #19).
 
 Reads np<r>/CASE.csv: F_x = reaction_NAME_x (the drag force, > 0 along the sliding
 direction), F_y = -reaction_NAME_y (the pressing force, > 0): the signs of the reference
@@ -59,10 +61,16 @@ ap.add_argument("--ratio-range", type=float, nargs=2, default=[1.00, 1.06])
 ap.add_argument("--plane-strain", action="store_true",
                 help="2D plane strain: F_y and F_x/F_y printed against the 3D reference, "
                      "not checked (#19)")
+ap.add_argument("--plane-stress", action="store_true",
+                help="2D plane stress: printed, not checked, as --plane-strain")
 ap.add_argument("--ranks", type=int, nargs="+", default=[1, 2])
 ap.add_argument("--force-set", default="die_top_nodes")
 ap.add_argument("--label", default="plane strain", help="the model, in the plot's legend")
 a = ap.parse_args()
+MODEL_2D = "plane stress" if a.plane_stress else "plane strain"
+if a.plane_stress and a.label == "plane strain":
+    a.label = "plane stress"
+a.plane_strain = a.plane_strain or a.plane_stress  # a 2D model: printed, not checked
 
 reference = np.loadtxt(os.path.join(HERE, "reference_%s.csv" % (
     "frictionless" if a.mu == 0 else "frictional")), delimiter=",", skiprows=1)
@@ -99,9 +107,9 @@ def slave_nodes(np_, steps):
                    bool(on_plane[node]))
 
 
-TARGET_FY = ("plane strain: reported beside 3D, not checked" if a.plane_strain
+TARGET_FY = (MODEL_2D + ": reported beside 3D, not checked" if a.plane_strain
              else "#19: within %g %%" % (100 * a.fy_tolerance))
-TARGET_RATIO = ("plane strain: reported, not checked" if a.plane_strain
+TARGET_RATIO = (MODEL_2D + ": reported, not checked" if a.plane_strain
                 else "#19: in [%g, %g]" % tuple(a.ratio_range))
 failures = []
 results = {}

@@ -10,6 +10,7 @@
 //     its results must agree with the reference (same math whichever macro path is taken).
 // GROUT_KERNEL_PROBES lists the probes once for all three.
 
+#include "kernels/contact_law.hpp"
 #include "kernels/dual_basis.hpp"
 #include "kernels/dual_basis_3d.hpp"
 #include "kernels/face_normal.hpp"
@@ -35,6 +36,7 @@
   X(slave_frame)               \
   X(mortar_pair_gradient_2d)   \
   X(mortar_pair_gradient_3d)   \
+  X(contact_law)               \
   X(linear_elastic_2d)         \
   X(linear_elastic_3d)
 
@@ -290,6 +292,61 @@ GROUT_INLINE_FUNCTION void probe_mortar_pair_gradient_3d(ProbeOutput& out) {
       for (int v = 0; v < Vars::count; v += 3) out.put(g.dM[j][l][v]);  // every third: capacity
     }
   }
+}
+
+/// One node of the contact law (contact_law.hpp) in AD: status, and per row the value, kind,
+/// identity component and ∂C/∂v over the ContactLawLayout.
+GROUT_INLINE_FUNCTION void put_contact_law(ProbeOutput& out, const ContactLawParameters& p,
+                                           const ContactLawNode& x) {
+  ContactLawResult r;
+  contact_law(p, x, true, r);
+  out.put(r.status);
+  for (int row = 0; row < p.dim; ++row) {
+    out.put(r.C[row]);
+    out.put(r.kind[row]);
+    out.put(r.component[row]);
+    for (int v = 0; v < ContactLawLayout::count; ++v) out.put(r.dC[row][v]);
+  }
+}
+
+/// The contact law at a slave node with its derivatives (the work item of evaluate_contact_law,
+/// contact_laws.hpp): 2D Coulomb slip; 3D Coulomb slip (both tangents), stick with a held
+/// tangent, frictionless; 3D tied with a held component.
+GROUT_INLINE_FUNCTION void probe_contact_law(ProbeOutput& out) {
+  ContactLawParameters p{2, coulomb_law, 120.0, 40.0, 0.3, 1e-8};
+  ContactLawNode x{};
+  x.paired = 1;
+  x.n[0] = 0.1, x.n[1] = -1.0;
+  normalize_vector<2>(x.n);
+  tangent_2d(x.n, x.t[0]);
+  x.lambda[0] = 0.4, x.lambda[1] = -1.5;  // λ_n ≈ 1.53, λ_τ ≈ 0.25
+  x.gap = -1e-3, x.slip[0] = 0.02;        // ξ ≈ 1.05 > μ s ≈ 0.5: slip
+  put_contact_law(out, p, x);
+
+  p.dim = 3;
+  x = ContactLawNode{};
+  x.paired = 1;
+  x.n[0] = 0.1, x.n[1] = -0.2, x.n[2] = -1.0;
+  normalize_vector<3>(x.n);
+  tangents_3d(x.n, x.t[0], x.t[1]);
+  x.lambda[0] = 0.3, x.lambda[1] = -0.2, x.lambda[2] = -1.2;
+  x.gap = -2e-3, x.slip[0] = 0.01, x.slip[1] = -0.015;
+  put_contact_law(out, p, x);  // slip
+  x.slip[0] = x.slip[1] = 0.0;
+  x.lambda[0] = x.lambda[1] = 0.0;
+  x.gap = 0.0;
+  x.n[0] = 0.0, x.n[1] = 0.02, x.n[2] = -1.0;  // tangents_3d: τ_0 = e_x
+  normalize_vector<3>(x.n);
+  tangents_3d(x.n, x.t[0], x.t[1]);
+  x.prescribed[0] = 1, x.free_share[0] = 0.05;
+  x.slip[1] = 1e-3;
+  put_contact_law(out, p, x);  // stick (|ξ_1| ≈ 0.06 < μ s ≈ 0.36), τ_0 held
+  p.kind = frictionless_law;
+  put_contact_law(out, p, x);
+  p.kind = tied_law;
+  x.tied[0] = 1e-3, x.tied[1] = -2e-3, x.tied[2] = 5e-4;
+  x.prescribed[1] = 1, x.free_share[1] = 0.0;
+  put_contact_law(out, p, x);
 }
 
 /// Force, stiffness and mean stress of one solid element with a non-trivial displacement.
