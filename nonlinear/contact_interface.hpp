@@ -147,7 +147,15 @@ class ContactInterface {
   std::vector<char> committed_active_;  ///< active at the last converged state (commit_step)
   std::vector<double> step_energy_;     ///< e_j of ContactStepEnergy at the last evaluation
   std::vector<char> closing_;           ///< active at the last evaluation, not committed
-  std::vector<std::array<LambdaRow, 3>> row_kinds_;             ///< per owned node, of its rows
+  std::vector<std::array<LambdaRow, 3>> row_kinds_;  ///< per owned node, of its rows
+  // The contact law's launch: inputs and results per owned slave node (write_rows), kept
+  // between residuals while their size holds.
+  using LawSpace = Kokkos::DefaultExecutionSpace;
+  using LawMemory = LawSpace::memory_space;
+  using LawNodes = Kokkos::View<ContactLawNode*, LawMemory>;
+  using LawResults = Kokkos::View<ContactLawResult*, LawMemory>;
+  LawNodes law_nodes_;
+  LawResults law_results_;
   std::vector<ClosureCandidate> candidates_;                    ///< of prepare_active_set
   std::vector<std::array<double, 3>> slip_increment_;           ///< ū_k of the step
   std::vector<std::array<double, 3>> slip_accumulated_;         ///< Σ ū_k τ_k (vector)

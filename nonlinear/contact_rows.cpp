@@ -138,11 +138,15 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
   law.kind = tied ? tied_law : coulomb ? coulomb_law : frictionless_law;
   law.c_hat = c_hat_, law.c_t_hat = c_t_hat_;
   law.mu = input_.friction_coefficient, law.active_tolerance = active_tolerance_;
-  using LawSpace = Kokkos::DefaultExecutionSpace;
-  Kokkos::View<ContactLawNode*, LawSpace::memory_space> law_nodes("grout::contact_law_nodes",
-                                                                  n_owned);
-  auto nodes_host = Kokkos::create_mirror_view(law_nodes);
+  if (int(law_nodes_.extent(0)) != n_owned) {
+    law_nodes_ =
+        LawNodes(Kokkos::ViewAllocateWithoutInitializing("grout::contact_law_nodes"), n_owned);
+    law_results_ =
+        LawResults(Kokkos::ViewAllocateWithoutInitializing("grout::contact_law_results"), n_owned);
+  }
+  auto nodes_host = Kokkos::create_mirror_view(law_nodes_);
   std::vector<double> slip_value(n_owned * 2, 0.0);
+  std::vector<std::array<double, 3>> weighted(n_owned);  // D x¹_j − Σ_l M_jl x²_l
   std::vector<std::array<SparseGradient, 2>> dslip(coulomb ? n_owned : 0);
   for (int q = 0; q < n_owned; ++q) {
     const int j = owned_[q];
@@ -180,7 +184,8 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
     // g = g̃ / D, g̃ = −n·(D x¹_j − Σ_l M_jl x²_l).
     double g_tilde = 0.0, lambda_n = 0.0;
     for (int a = 0; a < dim; ++a) {
-      double v = D * position(node, a);
+      double& v = weighted[q][a];
+      v = D * position(node, a);
       for (auto it = m_begin; it != m_end; ++it)
         v -= it->second.value * position(it->first.second, a);
       g_tilde -= fr.n[a] * v;
@@ -197,13 +202,10 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
       for (int k = 0; k < dim - 1; ++k) in.slip[k] = slip_value[2 * q + k];
     }
   }
-  Kokkos::deep_copy(law_nodes, nodes_host);
-  Kokkos::View<ContactLawResult*, LawSpace::memory_space> law_results("grout::contact_law_results",
-                                                                      n_owned);
-  evaluate_contact_law(LawSpace(), law,
-                       Kokkos::View<const ContactLawNode*, LawSpace::memory_space>(law_nodes), true,
-                       law_results);
-  auto results = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), law_results);
+  Kokkos::deep_copy(law_nodes_, nodes_host);
+  evaluate_contact_law(LawSpace(), law, Kokkos::View<const ContactLawNode*, LawMemory>(law_nodes_),
+                       true, law_results_);
+  auto results = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), law_results_);
 
   // Contact forces f¹_k = D_kk λ_k, f²_l = −Σ_j M_jl λ_j of owned slave node q.
   const auto add_forces = [&](int q) {
@@ -274,12 +276,8 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
     for (int row = 0; row < dim; ++row) uses_gap = uses_gap || r.dC[row][L::gap()] != 0.0;
     if (uses_gap) {
       const double rD = 1.0 / D;
-      double v[3] = {0.0, 0.0, 0.0}, n_dot_x = 0.0;
-      for (int a = 0; a < dim; ++a) {
-        v[a] = D * position(node, a);
-        for (auto it = m_begin; it != m_end; ++it)
-          v[a] -= it->second.value * position(it->first.second, a);
-      }
+      const double* v = weighted[q].data();  // of the law's inputs
+      double n_dot_x = 0.0;
       for (int a = 0; a < dim; ++a) {
         n_dot_x += fr.n[a] * position(node, a);
         for (const auto& [dof, dn] : fr.dn[a]) dg.emplace_back(dof, -rD * v[a] * dn);
