@@ -9,8 +9,7 @@
 # their own references to themselves (OpenBLAS 13.5 k of 74 k, Teuchos ParameterList 7.7 k,
 # Tpetra 6.5 k, libcrypto 4.0 k, ...), which the natural order put at positions 47, 9, 6 and
 # 59. Named first, the scope positions walked by `grout --help`'s look-ups fall from 1.96 M to
-# 0.87 M and its CPU time (start-up and MPI only) from 72 to 63 ms (docs/performance.md, "Process
-# start-up").
+# 0.81 M (docs/performance.md, "Process start-up").
 #
 # Which definition wins does not change where it matters: a symbol defined strongly by two
 # libraries binds to the one earlier in the scope, so the list keeps the order of the

@@ -23,8 +23,8 @@
 //   HWLOC_COMPONENTS=-linuxio, HWLOC_PLUGINS_BLACKLIST=hwloc_pci,hwloc_gl,...   CPUs and memory
 //   only
 // The same components do the same work, so nothing else changes (the selections above are
-// Open MPI 4.1's, Debian 12's; with them a singleton's start-up and MPI_Init/MPI_Finalize cost
-// ~15 ms less CPU: docs/performance.md, "Process start-up").
+// Open MPI 4.1's, Debian 12's; with them a singleton's MPI start-up takes 0.02 s:
+// docs/performance.md, "Running in parallel: Open MPI settings").
 // Under Open MPI's mpirun with every rank on this machine (OMPI_COMM_WORLD_LOCAL_SIZE equal
 // to OMPI_COMM_WORLD_SIZE, both set by mpirun for each rank) the first two are set as well:
 // the ranks need no network transport, and a plain `mpirun -np 2` then starts in 0.22 s
