@@ -241,6 +241,7 @@ void ContactInterface::update_geometry(const Vector& u_base, const Vector& u_old
   }
   current_ = current_geometry_ ? evaluate_contact_mortar(s, positions_, options_) : ContactMortar();
   const ContactMortar& m = current_geometry_ ? current_ : reference_;
+  build_stencil(m);
   const int n_owned = int(owned_.size());
   for (int q = 0; q < n_owned; ++q)
     for (int k = 0; k < dim - 1; ++k)
@@ -268,6 +269,21 @@ void ContactInterface::update_geometry(const Vector& u_base, const Vector& u_old
       history_set_ = true;
     }
     rows_of(m, last_rows_);
+  }
+}
+
+void ContactInterface::build_stencil(const ContactMortar& m) {
+  const int n_owned = int(owned_.size());
+  slave_pos_.resize(n_owned);
+  stencil_begin_.assign(n_owned + 1, 0);
+  stencil_.clear();
+  for (int q = 0; q < n_owned; ++q) {
+    const int j = owned_[q];
+    slave_pos_[q] = position_of(surface_.slave_nodes[j]);
+    for (auto it = m.M.lower_bound({j, std::numeric_limits<GlobalIndex>::min()});
+         it != m.M.end() && it->first.first == j; ++it)
+      stencil_.push_back({it->first.second, position_of(it->first.second), &it->second});
+    stencil_begin_[q + 1] = stencil_.size();
   }
 }
 

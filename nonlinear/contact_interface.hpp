@@ -106,6 +106,8 @@ class ContactInterface {
   void ghost_master_faces(const Vector* u_base, const Vector* u_old_base);
   GO lambda_gid(int q, int c) const { return lambda_offset_ + lambda_index_[q] * dim_ + c; }
   std::size_t position_of(GlobalIndex node) const;
+  /// The owned slave nodes' mortar rows at positions in surface_.nodes (update_geometry).
+  void build_stencil(const ContactMortar& m);
   LambdaRow declared_kind(const ContactLawResult& law, int r) const;
   /// The Newton step's tangential hold of owned node q (frictionless, active): Jacobian only.
   void add_tangential_hold(int q, ContactTerms& terms) const;
@@ -137,6 +139,16 @@ class ContactInterface {
   // Per node of surface_.nodes at the last evaluation: reference coordinates, displacement,
   // displacement of the last converged step; positions X + u.
   std::vector<std::array<double, 3>> X_, u_, u_old_, positions_;
+  // The mortar rows of the owned slave nodes with the nodes' positions in surface_.nodes, set
+  // by update_geometry: slave_pos_[q], and master terms stencil_[stencil_begin_[q] ..
+  // stencil_begin_[q + 1]) in M's order (a row read without a search per term).
+  struct MasterTerm {
+    GlobalIndex node;      ///< master node l
+    std::size_t pos;       ///< its index in surface_.nodes
+    const MortarValue* M;  ///< M_jl in the ContactMortar in use
+  };
+  std::vector<std::size_t> slave_pos_, stencil_begin_;
+  std::vector<MasterTerm> stencil_;
   // Per owned slave node: results of the last evaluation and the slip history.
   std::vector<double> pressure_, gap_;
   std::vector<double> iterate_gap_;  ///< g_j at the last evaluation (if gap_known_)

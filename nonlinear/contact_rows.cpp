@@ -35,7 +35,6 @@ LambdaRow ContactInterface::declared_kind(const ContactLawResult& law, int r) co
 ClosureCounts ContactInterface::prepare_active_set(const Vector& x, NewtonPhase phase) {
   const int dim = dim_;
   const ContactMortar& m = current_geometry_ ? current_ : reference_;
-  const ContactSurface& s = surface_;
   const int n_owned = int(owned_.size());
   {
     const auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
@@ -44,22 +43,18 @@ ClosureCounts ContactInterface::prepare_active_set(const Vector& x, NewtonPhase 
       for (int d = 0; d < dim; ++d) lambda_[q][d] = xv(map.getLocalElement(lambda_gid(q, d)), 0);
   }
   if (input_.type == ContactKind::tied) return {};
-  const auto m_range = [&](int j) {
-    return m.M.lower_bound({j, std::numeric_limits<GlobalIndex>::min()});
-  };
-  const auto position = [&](GlobalIndex node, int d) { return positions_[position_of(node)][d]; };
-  const auto old_position = [&](GlobalIndex node, int d) {
-    const std::size_t i = position_of(node);
-    return X_[i][d] + u_old_[i][d];
-  };
-  // g_j = −n_j·(D_jj x_j − Σ_l M_jl x_l) / D_jj at the given positions.
-  const auto nodal_gap = [&](int j, const auto& at) {
+  // Positions by index in surface_.nodes: current, and of the last converged step.
+  const auto position = [&](std::size_t i, int d) { return positions_[i][d]; };
+  const auto old_position = [&](std::size_t i, int d) { return X_[i][d] + u_old_[i][d]; };
+  // g_j = −n_j·(D_jj x_j − Σ_l M_jl x_l) / D_jj at the given positions (owned node q).
+  const auto nodal_gap = [&](int q, const auto& at) {
+    const int j = owned_[q];
     const SlaveFrame& fr = m.frames[j];
     double g = 0.0;
     for (int a = 0; a < dim; ++a) {
-      double v = m.D[j].value * at(s.slave_nodes[j], a);
-      for (auto it = m_range(j); it != m_range(j + 1); ++it)
-        v -= it->second.value * at(it->first.second, a);
+      double v = m.D[j].value * at(slave_pos_[q], a);
+      for (std::size_t e = stencil_begin_[q]; e < stencil_begin_[q + 1]; ++e)
+        v -= stencil_[e].M->value * at(stencil_[e].pos, a);
       g -= fr.n[a] * v;
     }
     return g / m.D[j].value;
@@ -71,11 +66,11 @@ ClosureCounts ContactInterface::prepare_active_set(const Vector& x, NewtonPhase 
     node.paired = m.D[j].value > D_tol_;
     if (!node.paired) continue;
     node.was_active = active_[q] != 0;
-    node.gap = nodal_gap(j, position);
+    node.gap = nodal_gap(q, position);
     // The base of the update: the last evaluation's gap; at the first update a node that
     // had no master then is measured from its last converged position.
     node.gap_old = gap_known_[q]                        ? iterate_gap_[q]
-                   : phase == NewtonPhase::first_update ? nodal_gap(j, old_position)
+                   : phase == NewtonPhase::first_update ? nodal_gap(q, old_position)
                                                         : 0.0;
     double lambda_n = 0.0;
     for (int a = 0; a < dim; ++a) lambda_n += m.frames[j].n[a] * lambda_[q][a];
@@ -118,14 +113,18 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
   const auto begin_node = [&](GlobalIndex node) {
     terms.begin_node(GO(index_) * GO(mesh_.num_nodes()) + node);
   };
-  const auto pos = [&](GlobalIndex node) { return position_of(node); };
-  const auto position = [&](GlobalIndex node, int d) { return positions_[pos(node)][d]; };
+  // Positions by global node (the weighted slip's interface) and by index in surface_.nodes.
+  const auto position = [&](GlobalIndex node, int d) { return positions_[position_of(node)][d]; };
   const auto old_position = [&](GlobalIndex node, int d) {
-    const std::size_t i = pos(node);
+    const std::size_t i = position_of(node);
     return X_[i][d] + u_old_[i][d];
   };
-  const auto m_range = [&](int j) {
-    return m.M.lower_bound({j, std::numeric_limits<GlobalIndex>::min()});
+  const auto x_at = [&](std::size_t i, int d) { return positions_[i][d]; };
+  const auto x_old_at = [&](std::size_t i, int d) { return X_[i][d] + u_old_[i][d]; };
+  // The master terms of owned node q's row (build_stencil).
+  const auto terms_of = [&](int q) {
+    return std::make_pair(stencil_.data() + stencil_begin_[q],
+                          stencil_.data() + stencil_begin_[q + 1]);
   };
   const double D_tol = D_tol_;
 
@@ -152,7 +151,8 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
     const int j = owned_[q];
     const GlobalIndex node = s.slave_nodes[j];
     const double D = m.D[j].value;
-    const auto m_begin = m_range(j), m_end = m_range(j + 1);
+    const auto [m_begin, m_end] = terms_of(q);
+    const std::size_t i = slave_pos_[q];
     const SlaveFrame& fr = m.frames[j];
     ContactLawNode& in = nodes_host(q);
     in = ContactLawNode();
@@ -167,16 +167,14 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
     for (int a = 0; a < dim; ++a) {  // held components: prescribed slave dof, free masters' share
       in.prescribed[a] = !std::isnan(prescribed[node * dim + a]);
       double free_sum = 0.0;
-      for (auto it = m_begin; it != m_end; ++it)
-        if (std::isnan(prescribed[it->first.second * dim + a]))
-          free_sum += std::abs(it->second.value);
+      for (const MasterTerm* t = m_begin; t != m_end; ++t)
+        if (std::isnan(prescribed[t->node * dim + a])) free_sum += std::abs(t->M->value);
       in.free_share[a] = free_sum / D;
     }
     if (tied) {  // t_a = (D u¹_j − Σ_l M_jl u²_l) / D
       for (int a = 0; a < dim; ++a) {
-        double v = D * u_[pos(node)][a];
-        for (auto it = m_begin; it != m_end; ++it)
-          v -= it->second.value * u_[pos(it->first.second)][a];
+        double v = D * u_[i][a];
+        for (const MasterTerm* t = m_begin; t != m_end; ++t) v -= t->M->value * u_[t->pos][a];
         in.tied[a] = v / D;
       }
       continue;
@@ -185,9 +183,8 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
     double g_tilde = 0.0, lambda_n = 0.0;
     for (int a = 0; a < dim; ++a) {
       double& v = weighted[q][a];
-      v = D * position(node, a);
-      for (auto it = m_begin; it != m_end; ++it)
-        v -= it->second.value * position(it->first.second, a);
+      v = D * x_at(i, a);
+      for (const MasterTerm* t = m_begin; t != m_end; ++t) v -= t->M->value * x_at(t->pos, a);
       g_tilde -= fr.n[a] * v;
       lambda_n += fr.n[a] * lambda_[q][a];
     }
@@ -195,7 +192,7 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
     in.near = policy_.near(q, lambda_n, in.gap, phase);
     if (coulomb) {  // ū_k, objective on the current geometry (assembly/weighted_slip.hpp)
       std::vector<MortarRowEntry> m_row;
-      for (auto it = m_begin; it != m_end; ++it) m_row.emplace_back(it->first.second, &it->second);
+      for (const MasterTerm* t = m_begin; t != m_end; ++t) m_row.emplace_back(t->node, t->M);
       const bool objective = current_geometry_ && history_[q].D > D_tol;
       weighted_slip_increment(dim, node, fr, m.D[j], m_row, objective ? &history_[q] : nullptr,
                               position, old_position, &slip_value[2 * q], dslip[q].data());
@@ -218,9 +215,10 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
       add_entry(row, lambda_gid(q, a), D.value);
       for (const auto& [dof, dv] : D.gradient) add_entry(row, dof, lambda_[q][a] * dv);
     }
-    for (auto it = m_range(j); it != m_range(j + 1); ++it) {
-      const GlobalIndex master = it->first.second;
-      const MortarValue& M = it->second;
+    const auto [m_begin, m_end] = terms_of(q);
+    for (const MasterTerm* t = m_begin; t != m_end; ++t) {
+      const GlobalIndex master = t->node;
+      const MortarValue& M = *t->M;
       for (int a = 0; a < dim; ++a) {
         const GO row = master * dim + a;
         add_F_(row, -M.value * lambda_[q][a]);
@@ -236,7 +234,8 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
     begin_node(node);  // one tag per node: its forces, rows and hold, keys unique per row
     add_forces(q);
     const double D = m.D[j].value;
-    const auto m_begin = m_range(j), m_end = m_range(j + 1);
+    const auto [m_begin, m_end] = terms_of(q);
+    const std::size_t i = slave_pos_[q];
     const SlaveFrame& fr = m.frames[j];
     const ContactLawNode& in = nodes_host(q);
     const ContactLawResult& r = results(q);
@@ -246,10 +245,9 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
     {  // e_j = −½ λ_j·(D Δx_j − Σ_l M_jl Δx_l), Δ since the last converged state
       double w = 0.0;
       for (int a = 0; a < dim; ++a) {
-        double wa = D * (position(node, a) - old_position(node, a));
-        for (auto it = m_begin; it != m_end; ++it)
-          wa -= it->second.value *
-                (position(it->first.second, a) - old_position(it->first.second, a));
+        double wa = D * (x_at(i, a) - x_old_at(i, a));
+        for (const MasterTerm* t = m_begin; t != m_end; ++t)
+          wa -= t->M->value * (x_at(t->pos, a) - x_old_at(t->pos, a));
         w += lambda_[q][a] * wa;
       }
       step_energy_[q] = -0.5 * w;
@@ -264,7 +262,7 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
     }
     if (r.status != node_open) {  // round-off of rows that carry ĉ × (a gap or a slip)
       double x_max = 0.0;
-      for (int a = 0; a < dim; ++a) x_max = std::max(x_max, std::abs(X_[pos(node)][a]));
+      for (int a = 0; a < dim; ++a) x_max = std::max(x_max, std::abs(X_[i][a]));
       const double row =
           std::numeric_limits<double>::epsilon() * std::max(c_hat_, c_t_hat_) * x_max;
       sums.floor2 += dim * row * row;
@@ -279,20 +277,19 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
       const double* v = weighted[q].data();  // of the law's inputs
       double n_dot_x = 0.0;
       for (int a = 0; a < dim; ++a) {
-        n_dot_x += fr.n[a] * position(node, a);
+        n_dot_x += fr.n[a] * x_at(i, a);
         for (const auto& [dof, dn] : fr.dn[a]) dg.emplace_back(dof, -rD * v[a] * dn);
         dg.emplace_back(node * dim + a, -rD * fr.n[a] * D);
       }
       for (const auto& [dof, dD] : m.D[j].gradient)
         dg.emplace_back(dof, -rD * (n_dot_x + in.gap) * dD);
-      for (auto it = m_begin; it != m_end; ++it) {
-        const GlobalIndex l = it->first.second;
+      for (const MasterTerm* t = m_begin; t != m_end; ++t) {
         double n_dot_xl = 0.0;
         for (int a = 0; a < dim; ++a) {
-          n_dot_xl += fr.n[a] * position(l, a);
-          dg.emplace_back(l * dim + a, rD * fr.n[a] * it->second.value);
+          n_dot_xl += fr.n[a] * x_at(t->pos, a);
+          dg.emplace_back(t->node * dim + a, rD * fr.n[a] * t->M->value);
         }
-        for (const auto& [dof, dM] : it->second.gradient) dg.emplace_back(dof, rD * n_dot_xl * dM);
+        for (const auto& [dof, dM] : t->M->gradient) dg.emplace_back(dof, rD * n_dot_xl * dM);
       }
       compress_gradient(dg);
     }
@@ -314,8 +311,8 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
         for (int k = 0; k < dim - 1; ++k) chain(fr.dt[k][a], dC[L::tangent(k, a)]);
         if (dC[L::tied(a)] != 0.0) {
           J.emplace_back(node * dim + a, dC[L::tied(a)]);
-          for (auto it = m_begin; it != m_end; ++it)
-            J.emplace_back(it->first.second * dim + a, -dC[L::tied(a)] * it->second.value / D);
+          for (const MasterTerm* t = m_begin; t != m_end; ++t)
+            J.emplace_back(t->node * dim + a, -dC[L::tied(a)] * t->M->value / D);
         }
       }
       chain(dg, dC[L::gap()]);
@@ -362,15 +359,15 @@ void ContactInterface::add_tangential_hold(int q, ContactTerms& terms) const {
   const int j = owned_[q];
   const GlobalIndex node = surface_.slave_nodes[j];
   const double D = m.D[j].value;
-  const auto m_begin = m.M.lower_bound({j, std::numeric_limits<GlobalIndex>::min()});
-  const auto m_end = m.M.lower_bound({j + 1, std::numeric_limits<GlobalIndex>::min()});
+  const MasterTerm* m_begin = stencil_.data() + stencil_begin_[q];
+  const MasterTerm* m_end = stencil_.data() + stencil_begin_[q + 1];
   const SlaveFrame& fr = m.frames[j];
   for (int k = 0; k < dim - 1; ++k) {
     SparseGradient w;
     for (int a = 0; a < dim; ++a) {
       w.emplace_back(node * dim + a, fr.t[k][a]);
-      for (auto it = m_begin; it != m_end; ++it)
-        w.emplace_back(it->first.second * dim + a, -fr.t[k][a] * it->second.value / D);
+      for (const MasterTerm* t = m_begin; t != m_end; ++t)
+        w.emplace_back(t->node * dim + a, -fr.t[k][a] * t->M->value / D);
     }
     compress_gradient(w);
     const double spring = hold_ * D;
