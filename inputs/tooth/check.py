@@ -193,6 +193,11 @@ def picture(stem, title, path):
     fig.tight_layout()
     fig.savefig(path, dpi=100)
     plt.close(fig)
+    try:  # 128 colours: a third of the size (Pillow comes with Debian's python3-matplotlib)
+        from PIL import Image
+        Image.open(path).convert("RGB").quantize(colors=128).save(path, optimize=True)
+    except ImportError:
+        pass
     print("wrote %s" % path)
 
 
