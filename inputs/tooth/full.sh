@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The tooth model's full-size study (README.md): three nested meshes of each variant at the
 # default sizes of tooth.py (contact size 0.005, 0.0025, 0.00125 mm), each run on 1 rank
-# (and on 2 ranks with --ranks 2), then check.py on them. Wall time of every run printed.
+# (and on 2 ranks with --ranks 2), then check.py on them. The wall and CPU times of every run are printed.
 # Usage: inputs/tooth/full.sh BUILD_DIR OUT_DIR [--ranks 2]
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -21,14 +21,12 @@ for variant in ec edc; do
     stems+=("$stem")
     /usr/bin/python3 "$here/tooth.py" "$stem.exo" $dentine --level "$level"
     cp "$here/$stem.yaml" .
-    start=$(date +%s.%N)
-    "$build/bin/grout" "$stem.yaml" --output-dir np1 > "np1/$stem.log" 2>&1
-    echo "$stem: 1 rank: $(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN {printf "%.1f", b - a}') s wall"
+    TIMEFORMAT="$stem: 1 rank: %R s wall, %U s user, %S s sys (all processes)"
+    time "$build/bin/grout" "$stem.yaml" --output-dir np1 > "np1/$stem.log" 2>&1
     if [ $two = 1 ]; then
-      start=$(date +%s.%N)
-      "$here/../../tools/local_mpi_env" mpirun --oversubscribe --allow-run-as-root -np 2 \
+      TIMEFORMAT="$stem: 2 ranks: %R s wall, %U s user, %S s sys (all processes)"
+      time "$here/../../tools/local_mpi_env" mpirun --oversubscribe --allow-run-as-root -np 2 \
         "$build/bin/grout" "$stem.yaml" --output-dir np2 > "np2/$stem.log" 2>&1
-      echo "$stem: 2 ranks: $(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN {printf "%.1f", b - a}') s wall"
     fi
   done
 done
