@@ -12,8 +12,9 @@ x >= 0, y >= 0: symmetry faces "x0" (x = 0) and "y0" (y = 0) of both bodies. Ele
 (default 0.03) within distance D0 (default 0.25 R) of the apex, growing linearly to the far
 size (default 0.3) at distance D1 (default R); with --rim-size H2 the flat faces' curved
 edges are meshed at H2, growing to the far size over a distance of the far size (a load on
-the flat face then sums to q pi R^2 / 4 to the polygon's (H2/R)^2/24). Blocks "lower",
-"upper".
+the flat face then sums to q pi R^2 / 4 within the polygon's area deficit (H2/R)^2/6: each
+chord of angle H2/R misses (H2/R)^3 R^2 / 12, and the quarter circle has (pi/2)/(H2/R) of
+them). Blocks "lower", "upper".
 """
 import argparse
 import os
