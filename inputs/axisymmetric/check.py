@@ -13,7 +13,10 @@ forms, on 1 and 2 ranks (which must agree to 1e-10):
   decreases at O(h^2) (observed rates > 1.8) and is below 0.5 % on the finest mesh;
 - flat punch on a cylinder end (contact patch test, non-matching distorted meshes, two
   materials): sigma_zz = -p, u_r = nu p r / E, u_z = -p z / E in each body, contact_pressure = p
-  at every slave node, to 1e-8 (contact_common/contact_check.py, check_uniform).
+  at every slave node, to 1e-8 (contact_common/contact_check.py, check_uniform);
+- the same punch under finite strain (Neo-Hookean, both bodies alike, dead pressure p):
+  F = diag(l_r, l_z, l_r) with P_rr = P_tt = 0, P_zz = -p, u = ((l_r - 1) r, (l_z - 1) z) and
+  contact_pressure = p / l_r^2 (Cauchy, current area) at every slave node, to 1e-8.
 """
 import math
 import os
@@ -114,6 +117,45 @@ upper = cc.body_state(sigma, 2.069e11, 0.29, 2, origin=[0.0, 1.0],
                       offset=lower["grad"] @ [0.0, 1.0] + lower["offset"])
 failures += cc.check_uniform_case("punch_patch", {"lower": lower, "upper": upper}, "upper_bottom",
                                   P_C, tol=1e-8)
+
+# The punch under finite strain: solve P_rr(l_r, l_z) = 0, P_zz(l_r, l_z) = -p by Newton.
+P_N, E_N, NU_N = 2.0e10, 2.069e11, 0.29
+LAM_N = E_N * NU_N / ((1 + NU_N) * (1 - 2 * NU_N))
+MU_N = E_N / (2 * (1 + NU_N))
+
+
+def nominal_stress(lr, lz):
+    log_j = math.log(lr * lr * lz)
+    return np.array([MU_N * (lr - 1 / lr) + LAM_N * log_j / lr,
+                     MU_N * (lz - 1 / lz) + LAM_N * log_j / lz + P_N])
+
+
+st = np.array([1.0, 1.0])
+for _ in range(30):
+    f0 = nominal_stress(*st)
+    jac = np.zeros((2, 2))
+    for k in range(2):
+        d = np.zeros(2)
+        d[k] = 1e-7
+        jac[:, k] = (nominal_stress(*(st + d)) - f0) / 1e-7
+    st -= np.linalg.solve(jac, f0)
+LR, LZ = st
+for np_ in (1, 2):
+    r = Results("np%d/punch_patch_finite.e" % np_)
+    x, y = r.coordinates()[:2]
+    err_u = max(np.abs(r.nodal("displ_x") - (LR - 1) * x).max(),
+                np.abs(r.nodal("displ_y") - (LZ - 1) * y).max()) / (abs(LZ - 1) * np.abs(y).max())
+    s_nodes = cc.side_set_nodes(r, "upper_bottom")
+    cp = r.nodal("contact_pressure")[s_nodes]
+    err_p = np.abs(cp - P_N / LR**2).max() / (P_N / LR**2)
+    err_s = np.abs(r.element("stress_yy") + P_N / LR**2).max() / (P_N / LR**2)
+    print("punch_patch_finite np%d (l_r = %.6f, l_z = %.6f): displacement %.2e, contact_pressure "
+          "%.2e, sigma_zz %.2e" % (np_, LR, LZ, err_u, err_p, err_s))
+    if not (err_u < 1e-8 and err_p < 1e-8 and err_s < 1e-8):
+        failures.append("punch_patch_finite np%d: errors %.2e, %.2e, %.2e above 1e-8"
+                        % (np_, err_u, err_p, err_s))
+print("punch_patch_finite 1 vs 2 ranks: %.1e"
+      % rank_difference("punch_patch_finite", ["displ_x", "displ_y", "contact_pressure"]))
 
 for f in failures:
     print("FAIL:", f)
