@@ -98,9 +98,10 @@ Mesh cylinder_on_plane_mesh(int level, double radius = 6.1237, double contact_wi
 /// and y <= R (the right half of cylinder_on_plane's half disc: the cross-section of a
 /// hemisphere), block "plane" = [0, 2R] x [-2R, 0] (8 x 4 QUAD4 times 2^(level-1), graded
 /// towards the contact point: x = 2R sinh(5 t)/sinh(5), -y likewise, t uniform; the plane's
-/// element at the contact point is R/60/2^(level-1) wide, the sphere's R/72/2^(level-1)). Sets: "sphere_contact" (arc sides with x <= contact_width), "sphere_top" (the
-/// flat face y = R), "sphere_axis" (the sides on x = 0), the plane's rectangle sets with prefix
-/// "plane_"; node set "plane" (all plane nodes).
+/// element at the contact point is R/60/2^(level-1) wide, the sphere's R/72/2^(level-1)). Sets:
+/// "sphere_contact" (arc sides with x <= contact_width), "sphere_top" (the flat face y = R),
+/// "sphere_axis" (the sides on x = 0), the plane's rectangle sets with prefix "plane_"; node set
+/// "plane" (all plane nodes).
 Mesh sphere_on_plane_axisymmetric_mesh(int level, double radius = 6.1237,
                                        double contact_width = 2.5);
 
