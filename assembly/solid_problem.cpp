@@ -132,6 +132,7 @@ void SolidProblem::build_blocks(const Partition& partition) {
     lb.topology = block.topology;
     lb.nodes_per_element = npe;
     lb.finite_strain = input_.model.strain == StrainKind::finite;
+    lb.axisymmetric = dim_ == 2 && input_.model.plane == PlaneKind::axisymmetric;
     // Finite-strain plane stress: the 3D Lamé constants and a law that finds F33 from S33 = 0
     // (kernels/plane_stress_material.hpp); small strain: the plane-stress lambda* instead.
     lb.constants = elastic_constants(material.youngs_modulus, material.poissons_ratio, dim_,
@@ -279,6 +280,7 @@ bool SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K,
     const int npe = block.nodes_per_element;
     const ElasticConstants constants = block.constants;
     const bool finite_strain = block.finite_strain;
+    const bool axisymmetric = block.axisymmetric;
     const HyperelasticLaw law = block.law;
     GlobalIndex first_inverted = std::numeric_limits<GlobalIndex>::max();
     const Kokkos::View<int, Kokkos::HostSpace> collapsed("grout::collapsed_elements");
@@ -300,13 +302,17 @@ bool SolidProblem::assemble(const Vector& u, Vector& f_int, Matrix* K,
             }
           }
           double* const Ke_or_null = with_tangent ? Ke : nullptr;
+          // Axisymmetric models have no dynamics (io/input.cpp), so no energy-momentum path.
           const ElementStatus status =
-              !finite_strain
+              !finite_strain && axisymmetric
+                  ? axisymmetric_elastic_element<double>(topology, X, ue, constants, fe, Ke_or_null)
+              : !finite_strain
                   ? linear_elastic_element<double>(topology, dim, X, ue, constants, fe, Ke_or_null)
-              : energy_momentum ? energy_momentum_force_and_tangent(topology, dim, X, ue_start, ue,
-                                                                    law, constants, fe, Ke_or_null)
-                                : total_lagrangian_force_and_tangent(topology, dim, X, ue, law,
-                                                                     constants, fe, Ke_or_null);
+              : energy_momentum
+                  ? energy_momentum_force_and_tangent(topology, dim, X, ue_start, ue, law,
+                                                      constants, fe, Ke_or_null)
+                  : total_lagrangian_force_and_tangent(topology, dim, X, ue, law, constants, fe,
+                                                       Ke_or_null, axisymmetric);
           if (status == ElementStatus::collapsed) {
             Kokkos::atomic_increment(&collapsed());
             return;
@@ -403,10 +409,14 @@ double SolidProblem::stored_energy(const Vector& u) const {
         // W of a state assemble() accepted: no collapsed element (the status is then ok).
         double W = 0.0;
         if (total_lagrangian_element<double>(block.topology, dim_, X, ue, block.law,
-                                             block.constants, fe, &W) == ElementStatus::ok)
+                                             block.constants, fe, &W,
+                                             block.axisymmetric) == ElementStatus::ok)
           local += W;
       } else {
-        linear_elastic_element<double>(block.topology, dim_, X, ue, block.constants, fe, nullptr);
+        if (block.axisymmetric)
+          axisymmetric_elastic_element<double>(block.topology, X, ue, block.constants, fe, nullptr);
+        else
+          linear_elastic_element<double>(block.topology, dim_, X, ue, block.constants, fe, nullptr);
         double W = 0.0;
         for (int k = 0; k < n; ++k) W += ue[k] * fe[k];
         local += 0.5 * W;
@@ -419,6 +429,7 @@ double SolidProblem::stored_energy(const Vector& u) const {
 }
 
 void SolidProblem::external_force(double t, Vector& f_ext) const {
+  const bool axisymmetric = dim_ == 2 && input_.model.plane == PlaneKind::axisymmetric;
   f_ext.putScalar(0.0);
   auto f = Kokkos::subview(f_ext.getLocalViewHost(Tpetra::Access::ReadWrite), Kokkos::ALL(), 0);
   for (const auto& face : faces_) {
@@ -435,7 +446,8 @@ void SolidProblem::external_force(double t, Vector& f_ext) const {
       }
     }
     const bool pressure = load.type == LoadKind::pressure;
-    surface_load(face.topology, dim_, X, pressure ? p : nullptr, pressure ? nullptr : tr, fe);
+    surface_load(face.topology, dim_, X, pressure ? p : nullptr, pressure ? nullptr : tr, fe,
+                 axisymmetric);
     for (int a = 0; a < face.num_nodes; ++a) {
       if (face.nodes[a] >= num_owned_nodes_) continue;
       for (int d = 0; d < dim_; ++d) f(face.nodes[a] * dim_ + d) += fe[a * dim_ + d];
@@ -483,7 +495,10 @@ void SolidProblem::element_stresses(const Vector& u,
       }
       if (block.finite_strain) {
         // Elements collapsed at a converged state cannot occur (assemble refuses them).
-        total_lagrangian_cauchy_stress(block.topology, dim_, X, ue, block.law, block.constants, s);
+        total_lagrangian_cauchy_stress(block.topology, dim_, X, ue, block.law, block.constants, s,
+                                       block.axisymmetric);
+      } else if (block.axisymmetric) {
+        axisymmetric_elastic_stress(block.topology, X, ue, block.constants, s);  // zz: hoop
       } else {
         linear_elastic_stress(block.topology, dim_, X, ue, block.constants, plane_strain,
                               block.poissons_ratio, s);

@@ -16,6 +16,7 @@
 #include "assembly/partition.hpp"
 #include "assembly/tpetra_types.hpp"
 #include "io/input.hpp"
+#include "kernels/axisymmetric_elastic.hpp"
 #include "kernels/linear_elastic.hpp"
 #include "kernels/total_lagrangian.hpp"
 
@@ -30,6 +31,8 @@ struct LocalBlock {
   double poissons_ratio = 0.0;
   double density = 0.0;
   bool finite_strain = false;  ///< total-Lagrangian element with `law` (else small strain)
+  /// model/plane: axisymmetric (x = r; kernels/axisymmetric_elastic.hpp)
+  bool axisymmetric = false;
   HyperelasticLaw law = HyperelasticLaw::saint_venant_kirchhoff;
   Kokkos::View<int**> nodes;          ///< [element][a] column-map node index
   Kokkos::View<GlobalIndex*> global;  ///< global element index

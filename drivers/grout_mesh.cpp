@@ -65,6 +65,13 @@ kinds and their options (defaults in brackets):
                    half disc cylinder (centre (0,R)) on plane [-2R,2R]x[-2R,0]; sets
                    cylinder_contact cylinder_top plane_top plane_bottom plane_left
                    plane_right; node set plane (all plane nodes)
+  sphere_on_plane_axisymmetric --level [1] --radius [6.1237] --contact-width [2.5]
+                   x >= 0 half of cylinder_on_plane's cylinder (centre (0,R)) on plane
+                   [0,2R]x[-2R,0], for model/plane: axisymmetric; sets sphere_contact
+                   sphere_top sphere_axis plane_top plane_bottom plane_left plane_right;
+                   node set plane (all plane nodes)
+  quarter_disc     --level [1] --radius [1]   quarter disc x >= 0, y <= 0 (a solid sphere,
+                   axisymmetric); sets sphere_surface sphere_equator sphere_axis
   dong_blocks      --nx-lower [40] --ny-lower [6] --nx-upper [8] --ny-upper [10]
                    --width-lower [0.35] --height-lower [0.075] --width-upper [0.1]
                    --height-upper [0.125] --x-upper [0] --gap [0] --triangles-lower
@@ -317,6 +324,17 @@ grout::Mesh generate(const std::string& kind, int argc, char** argv, std::string
     output = o.text("--output", "");
     return grout::cylinder_on_plane_mesh(int(o.integer("--level", 1)), o.real("--radius", 6.1237),
                                          o.real("--contact-width", 2.5));
+  }
+  if (kind == "sphere_on_plane_axisymmetric") {
+    const Options o(argc, argv, {"--level", "--radius", "--contact-width"}, {});
+    output = o.text("--output", "");
+    return grout::sphere_on_plane_axisymmetric_mesh(
+        int(o.integer("--level", 1)), o.real("--radius", 6.1237), o.real("--contact-width", 2.5));
+  }
+  if (kind == "quarter_disc") {
+    const Options o(argc, argv, {"--level", "--radius"}, {});
+    output = o.text("--output", "");
+    return grout::quarter_disc_mesh(int(o.integer("--level", 1)), o.real("--radius", 1.0));
   }
   if (kind == "dong_blocks") {
     const Options o(argc, argv,

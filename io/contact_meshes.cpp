@@ -356,7 +356,77 @@ SidePredicate on_line_y(double y, double tol) {
   return all_nodes([=](const Point& p) { return near(p[1], y, tol); });
 }
 
+SidePredicate on_line_x(double x, double tol) {
+  return all_nodes([=](const Point& p) { return near(p[0], x, tol); });
+}
+
+/// The elements of a one-block 2D mesh without sets whose centroid lies at x > 0, their nodes
+/// renumbered in the order of first use (the half disc's mid line x = 0 is a mesh line with
+/// exact zeros: sinh(0) = 0).
+Mesh right_half(const Mesh& mesh) {
+  const ElementBlock& in = mesh.blocks.at(0);
+  std::vector<GlobalIndex> renumber(mesh.num_nodes(), -1);
+  Mesh out;
+  out.dimension = 2;
+  ElementBlock block;
+  block.name = in.name;
+  block.id = 1;
+  block.topology = in.topology;
+  block.nodes_per_element = in.nodes_per_element;
+  const int npe = in.nodes_per_element;
+  for (GlobalIndex e = 0; e < in.num_elements(); ++e) {
+    double cx = 0.0;
+    for (int a = 0; a < npe; ++a) cx += node_point(mesh, in.connectivity[e * npe + a])[0];
+    if (!(cx > 0.0)) continue;
+    for (int a = 0; a < npe; ++a) {
+      const GlobalIndex n = in.connectivity[e * npe + a];
+      if (renumber[n] < 0) {
+        renumber[n] = GlobalIndex(out.coordinates.size() / 2);
+        out.coordinates.push_back(mesh.coordinates[2 * n]);
+        out.coordinates.push_back(mesh.coordinates[2 * n + 1]);
+      }
+      block.connectivity.push_back(renumber[n]);
+    }
+  }
+  out.blocks.push_back(std::move(block));
+  return out;
+}
+
 }  // namespace
+
+Mesh quarter_disc_mesh(int level, double radius) {
+  const double R = radius, tol = 1e-9 * R;
+  Mesh m = right_half(half_disc_mesh(level, R, 3.5, "sphere"));
+  add_side_set(m, "sphere", "sphere_surface", on_arc(0.0, R, R));
+  add_side_set(m, "sphere", "sphere_equator", on_line_y(0.0, tol));
+  add_side_set(m, "sphere", "sphere_axis", on_line_x(0.0, tol));
+  return checked(std::move(m), "quarter_disc_mesh");
+}
+
+Mesh sphere_on_plane_axisymmetric_mesh(int level, double radius, double contact_width) {
+  if (!(contact_width > 0.0 && contact_width < radius))
+    throw std::invalid_argument("sphere_on_plane_axisymmetric_mesh: need 0 < contact_width < R");
+  const double R = radius, tol = 1e-9 * R;
+  Mesh sphere = right_half(half_disc_mesh(level, R, 3.5, "sphere"));
+  transform(sphere, [&](const Point& p) { return Point{p[0], p[1] + R, 0.0}; });
+  // The plane is graded towards the contact point (x = sinh(5 t)/sinh(5), t uniform, in both
+  // directions: 0.067 of the uniform size there), so that it can be the slave side.
+  const int m = 1 << (level - 1);
+  Mesh plane = rectangle_mesh(8 * m, 4 * m, 0.0, 1.0, 0.0, 1.0, false, 0, 1, "plane");
+  const auto grade = [](double t) { return std::sinh(5.0 * t) / std::sinh(5.0); };
+  transform(plane, [&](const Point& p) {
+    return Point{2 * R * grade(p[0]), -2 * R * grade(1.0 - p[1]), 0.0};
+  });
+  add_prefix(plane, "plane_");
+  NodeSet all{"plane", 0, {}};
+  for (GlobalIndex n = 0; n < plane.num_nodes(); ++n) all.nodes.push_back(n);
+  plane.node_sets.push_back(std::move(all));
+  Mesh mesh = append_mesh(sphere, plane);
+  add_side_set(mesh, "sphere", "sphere_contact", on_arc(R, R, contact_width));
+  add_side_set(mesh, "sphere", "sphere_top", on_line_y(R, tol));
+  add_side_set(mesh, "sphere", "sphere_axis", on_line_x(0.0, tol));
+  return checked(std::move(mesh), "sphere_on_plane_axisymmetric_mesh");
+}
 
 Mesh hertz_cylinders_mesh(int level, double radius, double gap, double contact_width) {
   if (!(gap >= 0.0 && contact_width > 0.0 && contact_width < radius))

@@ -93,6 +93,23 @@ Mesh hertz_cylinders_mesh(int level, double radius = 8.0, double gap = 0.0,
 /// the plane, to hold it rigid).
 Mesh cylinder_on_plane_mesh(int level, double radius = 6.1237, double contact_width = 2.5);
 
+/// Axisymmetric sphere on a rigid plane (docs/verification.md #10, model/plane: axisymmetric,
+/// x = r): block "sphere" = the quarter of the disc of radius R centred at (0, R) with x >= 0
+/// and y <= R (the right half of cylinder_on_plane's half disc: the cross-section of a
+/// hemisphere), block "plane" = [0, 2R] x [-2R, 0] (8 x 4 QUAD4 times 2^(level-1), graded
+/// towards the contact point: x = 2R sinh(5 t)/sinh(5), -y likewise, t uniform; the plane's
+/// element at the contact point is R/60/2^(level-1) wide, the sphere's R/72/2^(level-1)). Sets:
+/// "sphere_contact" (arc sides with x <= contact_width), "sphere_top" (the flat face y = R),
+/// "sphere_axis" (the sides on x = 0), the plane's rectangle sets with prefix "plane_"; node set
+/// "plane" (all plane nodes).
+Mesh sphere_on_plane_axisymmetric_mesh(int level, double radius = 6.1237,
+                                       double contact_width = 2.5);
+
+/// Solid sphere, axisymmetric: block "sphere" = the quarter disc x >= 0, y <= 0 of radius R
+/// centred at the origin (the right half of half_disc_mesh). Sets: "sphere_surface" (the arc),
+/// "sphere_equator" (y = 0), "sphere_axis" (x = 0).
+Mesh quarter_disc_mesh(int level, double radius = 1.0);
+
 /// Half-disc building block (see the file comment): centre at the origin, flat face y = 0,
 /// arc below, QUAD4, no sets. Element counts: the level-1 counts times 2^(level-1).
 Mesh half_disc_mesh(int level, double radius, double beta, const std::string& block_name);

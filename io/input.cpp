@@ -191,12 +191,18 @@ std::string resolve(const std::string& directory, const std::string& file) {
 
 ModelInput read_model(const Section& grout) {
   const Section model = grout.section(
-      "model", {Key::integer("dimension").one_of({"2", "3"}).required(),
-                Key::choice("plane", {"strain", "stress"}, "plane kind").defaults("strain"),
-                Key::choice("strain", {"small", "finite"}, "strain measure").defaults("small")});
+      "model",
+      {Key::integer("dimension").one_of({"2", "3"}).required(),
+       Key::choice("plane", {"strain", "stress", "axisymmetric"}, "plane kind").defaults("strain"),
+       Key::choice("strain", {"small", "finite"}, "strain measure").defaults("small")});
   ModelInput m;
   m.dimension = model.integer("dimension");
-  m.plane = model.string("plane") == "stress" ? PlaneKind::stress : PlaneKind::strain;
+  const std::string plane = model.string("plane");
+  m.plane = plane == "stress"         ? PlaneKind::stress
+            : plane == "axisymmetric" ? PlaneKind::axisymmetric
+                                      : PlaneKind::strain;
+  if (m.plane == PlaneKind::axisymmetric && m.dimension != 2)
+    model.fail("plane", "axisymmetric needs dimension: 2 (x = r, y = the axis)");
   m.strain = model.string("strain") == "finite" ? StrainKind::finite : StrainKind::small;
   return m;
 }
@@ -395,6 +401,15 @@ Input read_input_text(const std::string& raw, const std::string& path) {
   }
   read_min_step_size(time, input.time);
   read_dynamics(grout, input);
+  if (input.model.plane == PlaneKind::axisymmetric) {
+    // The mass matrix and the dynamics' rigid-body velocity updates are not weighted by 2 pi r.
+    if (grout.has("dynamics"))
+      grout.fail("dynamics", "not available with model/plane: axisymmetric (quasi-static only)");
+    for (const ContactInput& c : input.contact)
+      if (c.integration == ContactIntegration::collocation)
+        grout.fail("contact/" + c.name + "/integration",
+                   "collocation is not available with model/plane: axisymmetric (use exact)");
+  }
 
   input.solver = solver_settings_from(grout.raw_section("solver"), path);
 

@@ -13,7 +13,10 @@
 
 namespace grout {
 
-enum class PlaneKind { strain, stress };
+/// 2D models: plane strain, plane stress (unit thickness) or axisymmetric (x = r >= 0, y = the
+/// axis; every volume, surface and mortar integral weighted by 2 pi r: totals over the full
+/// circle).
+enum class PlaneKind { strain, stress, axisymmetric };
 enum class StrainKind { small, finite };
 
 struct ModelInput {

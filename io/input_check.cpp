@@ -3,11 +3,13 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <unordered_map>
 
 #include "io/errors.hpp"
 #include "io/input.hpp"
+#include "io/input_schema.hpp"
 
 namespace grout {
 
@@ -165,6 +167,47 @@ void check_no_reverse_pairs(const Input& input, const Mesh& mesh, const MeshChec
   }
 }
 
+/// model/plane: axisymmetric (docs/input.md, "Axisymmetric models"): x is the radius, so no
+/// element node may lie at x < 0, and a node on the axis (x = 0) must have u_x held at 0 (the
+/// hoop strain u_r/r is finite there only if u_r = 0; the 2 pi r weights vanish on the axis).
+/// A node counts as on the axis when |x| <= 1e-10 of the mesh's extent in x.
+void check_axisymmetric(const Input& input, const Mesh& mesh, const MeshCheck& check) {
+  double x_max = 0.0;
+  for (GlobalIndex n = 0; n < mesh.num_nodes(); ++n)
+    x_max = std::max(x_max, std::abs(mesh.coordinates[n * 2]));
+  const double tol = 1e-10 * x_max;
+  std::vector<char> held(mesh.num_nodes(), 0);  // u_x = 0 prescribed at t = 0 and t = end
+  for (const DirichletInput& d : input.dirichlet) {
+    const NodeSet* set = mesh.find_node_set(d.node_set);
+    if (d.component != 0 || !set) continue;
+    for (GlobalIndex n : set->nodes) {
+      const double x = mesh.coordinates[n * 2], y = mesh.coordinates[n * 2 + 1];
+      if (d.value(0.0, x, y, 0.0) == 0.0 && d.value(input.time.end, x, y, 0.0) == 0.0) held[n] = 1;
+    }
+  }
+  for (const ElementBlock& b : mesh.blocks) {
+    for (GlobalIndex e = 0; e < b.num_elements(); ++e) {
+      for (int a = 0; a < b.nodes_per_element; ++a) {
+        const GlobalIndex n = b.connectivity[e * b.nodes_per_element + a];
+        const double r = mesh.coordinates[n * 2];
+        const std::string node = "node " + std::to_string(n + 1) + " of element block '" + b.name +
+                                 "' in " + check.mesh_name();
+        if (r < -tol) {
+          check.fail("grout/model/plane", node + " has x = " + input_schema::format_number(r) +
+                                              " < 0: an axisymmetric mesh lies in x = r >= 0");
+        }
+        if (r <= tol && !held[n]) {
+          check.fail("grout/dirichlet",
+                     node +
+                         " lies on the axis (x = 0) without u_x = 0: an axisymmetric model "
+                         "needs a dirichlet condition with component: x, value: \"0\" on "
+                         "every node of the axis");
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 
 const MaterialInput* find_material(const Input& input, const ElementBlock& block) {
@@ -236,6 +279,8 @@ void check_input_against_mesh(const Input& input, const Mesh& mesh) {
   }
   check.boundary_faces();
   check_no_reverse_pairs(input, mesh, check);
+  if (input.model.plane == PlaneKind::axisymmetric && mesh.dimension == 2)
+    check_axisymmetric(input, mesh, check);
 }
 
 }  // namespace grout

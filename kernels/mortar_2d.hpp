@@ -293,6 +293,70 @@ GROUT_INLINE_FUNCTION MortarStatus integrate_mortar_2d(const Scalar xs[2][2], co
   return integrate_mortar_2d(s, xm, n_gauss, out);
 }
 
+/// \brief Axisymmetric LINE2 dual basis Φ_j = Σ_k A_jk N_k (x = r, dA = 2π r ds): the
+/// biorthogonality ∫_e Φ_j N_k r ds = δ_jk ∫_e N_j r ds in the r-weighted inner product, so that D
+/// stays diagonal. A = D_e M_e⁻¹ (dual_basis.hpp) with r = r₁N₁ + r₂N₂ and the exact integrals
+/// (∫N₁³ = 1/4, ∫N₁²N₂ = 1/12 of the length): 12 M_e/L = [[3r₁+r₂, r₁+r₂], [r₁+r₂, r₁+3r₂]],
+/// 12 D_e/L = diag(4r₁+2r₂, 2r₁+4r₂), det(12 M_e/L) = 2(r₁² + 4r₁r₂ + r₂²); r₁ = r₂ gives the
+/// closed form of line2_dual_shape, and Σ_j A_jk = 1 for any r₁, r₂ (Σ_j Φ_j = 1).
+/// \return degenerate unless r₁, r₂ ≥ 0 and r₁ + r₂ > 0 (a segment on the axis has no area).
+template <class Scalar>
+GROUT_INLINE_FUNCTION MortarStatus line2_dual_coefficients_axisymmetric(const Scalar& r1,
+                                                                        const Scalar& r2,
+                                                                        Scalar A[2][2]) {
+  A[0][0] = A[0][1] = A[1][0] = A[1][1] = 0.0;
+  if (r1 < 0.0 || r2 < 0.0 || !(r1 + r2 > 0.0)) return MortarStatus::degenerate;
+  const Scalar det = 2.0 * (r1 * r1 + 4.0 * r1 * r2 + r2 * r2);
+  const Scalar d1 = (4.0 * r1 + 2.0 * r2) / det, d2 = (2.0 * r1 + 4.0 * r2) / det;
+  A[0][0] = d1 * (r1 + 3.0 * r2);
+  A[0][1] = -d1 * (r1 + r2);
+  A[1][0] = -d2 * (r1 + r2);
+  A[1][1] = d2 * (3.0 * r1 + r2);
+  return MortarStatus::ok;
+}
+
+/// \brief Axisymmetric variant of integrate_mortar_2d (x = r ≥ 0, y the axis): every integral
+/// weighted by 2π r(ξ), r the slave point's radius, with the weighted dual basis
+/// (line2_dual_coefficients_axisymmetric):
+///   D_jj = ∫ Φ_j 2π r ds,  M_jl = ∫ Φ_j N²_l(η(ξ)) 2π r ds,  overlap = ∫ 2π r ds,
+/// so that D_jj λ_j is the force on the full circle and λ_j the traction. The exact segmentation
+/// is that of integrate_mortar_2d; the extra linear factor r(ξ) needs one more Gauss point than
+/// the plane kernel for the same exactness (the caller passes it).
+/// \return as integrate_mortar_2d; degenerate for a slave segment on the axis or at r < 0.
+template <class Scalar>
+GROUT_INLINE_FUNCTION MortarStatus
+integrate_mortar_2d_axisymmetric(const MortarSlave2D<Scalar>& slave, const Scalar xm[2][2],
+                                 int n_gauss, MortarPairResult<Scalar>& out) {
+  zero_pair_result_2d(out);
+  Scalar A[2][2];
+  const Scalar r1 = slave.a[0] - slave.b[0], r2 = slave.a[0] + slave.b[0];
+  if (line2_dual_coefficients_axisymmetric(r1, r2, A) != MortarStatus::ok)
+    return MortarStatus::degenerate;
+  Scalar xi[max_gauss_line_points], eta[max_gauss_line_points], w[max_gauss_line_points];
+  const MortarStatus s = mortar_integration_points_2d(slave, xm, n_gauss, xi, eta, w);
+  if (s != MortarStatus::ok) return s;
+  constexpr double two_pi = 6.283185307179586476925286766559;
+  Scalar overlap = 0.0, D[2] = {0.0, 0.0}, M[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
+  for (int g = 0; g < n_gauss; ++g) {
+    Scalar Ns[2], Nm[2];
+    line2_shape(xi[g], Ns);
+    line2_shape(eta[g], Nm);
+    const Scalar wr = two_pi * (slave.a[0] + xi[g] * slave.b[0]) * w[g];
+    overlap += wr;
+    for (int j = 0; j < 2; ++j) {
+      const Scalar wp = wr * (A[j][0] * Ns[0] + A[j][1] * Ns[1]);
+      D[j] += wp;
+      for (int l = 0; l < 2; ++l) M[j][l] += wp * Nm[l];
+    }
+  }
+  out.overlap = overlap;
+  for (int j = 0; j < 2; ++j) {
+    out.D[j] = D[j];
+    for (int l = 0; l < 2; ++l) out.M[j][l] = M[j][l];
+  }
+  return MortarStatus::ok;
+}
+
 /// \brief integrate_mortar_2d with mortar_2d_gauss_points points: the 2D pair kernel. The 3D pair
 /// kernel (mortar_3d.hpp) has the signature
 /// `integrate_mortar_3d(int n_slave, const Scalar xs[4][3], const Scalar ns[4][3], int n_master,

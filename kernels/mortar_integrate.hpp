@@ -41,6 +41,9 @@ struct MortarOptions {
   MortarIntegration scheme = MortarIntegration::exact;
   int n_gauss = mortar_2d_gauss_points;  ///< Gauss points per 2D overlap segment (1..8)
   int n_collocation = 16;  ///< points per slave element for collocation (3D: k × k, k = ⌊√n⌋)
+  /// 2D exact dual path only: x = r, every integral weighted by 2π r
+  /// (integrate_mortar_2d_axisymmetric); the other paths refuse it (degenerate).
+  bool axisymmetric = false;
 };
 
 /// \brief The MortarOptions of a scheme whose collocation points are counted as the input and
@@ -117,6 +120,17 @@ struct MortarPairKernel<2> {
       return MortarStatus::degenerate;
     }
     const Scalar xm2[2][2] = {{xm[0][0], xm[0][1]}, {xm[1][0], xm[1][1]}};
+    if (options.axisymmetric) {
+      if (options.scheme == MortarIntegration::collocation) {
+        zero_pair_result_2d(out);
+        return MortarStatus::degenerate;
+      }
+      // One point more than the plane kernel for the factor r(ξ): with parallel slave normals
+      // Φ_j N²_l r is cubic in ξ, so the 3-point rule is exact with a degree to spare.
+      const int n_axi = slave.parallel_normals && options.n_gauss > 2 ? 3 : options.n_gauss + 1;
+      return integrate_mortar_2d_axisymmetric(
+          slave.segment, xm2, n_axi < max_gauss_line_points ? n_axi : max_gauss_line_points, out);
+    }
     if (options.scheme == MortarIntegration::collocation)
       return integrate_mortar_2d_collocation(slave.xs, slave.ns, xm2, options.n_collocation, out);
     // With parallel slave normals the 2-point rule is exact (Φ_j N²_l quadratic in ξ).
@@ -130,7 +144,7 @@ struct MortarPairKernel<2> {
                                                        const Scalar xm[max_face_nodes][3],
                                                        const MortarOptions& options,
                                                        MortarPairMatrices<Scalar>& out) {
-    if (slave.n_nodes != 2 || n_master != 2) {
+    if (slave.n_nodes != 2 || n_master != 2 || options.axisymmetric) {
       reset_pair_matrices(2, 2, out);
       return MortarStatus::degenerate;
     }

@@ -7,7 +7,9 @@
 // with n dA = a dxi, a the side's area vector (shape_functions.hpp: 2D a = (T_y, -T_x),
 // 3D a = T_1 x T_2), so f_a = sum_q w_q N_a (-p a + t |a|) (Hughes, The Finite Element
 // Method, §3.8; Zienkiewicz & Taylor vol. 1, §6.7). p > 0 pushes into the body when the side's
-// node order gives the outward normal (topology.hpp).
+// node order gives the outward normal (topology.hpp). Axisymmetric (2D, x = r): dA = 2 pi r ds,
+// r = sum_b N_b X_b,r, so the forces are totals over the full circle; on a straight side the
+// integrand N_a p r is cubic and the 2-point rule stays exact.
 
 #include <Kokkos_Core.hpp>
 
@@ -27,7 +29,8 @@ namespace grout {
 /// of zero area gets zero forces).
 KOKKOS_INLINE_FUNCTION ElementStatus surface_load(Topology side_topology, int dimension,
                                                   const double* X, const double* p_nodal,
-                                                  const double* t_nodal, double* f) {
+                                                  const double* t_nodal, double* f,
+                                                  bool axisymmetric = false) {
   const int dim = dimension;
   const bool supported =
       (dim == 2 && side_topology == Topology::line2) ||
@@ -57,6 +60,11 @@ KOKKOS_INLINE_FUNCTION ElementStatus surface_load(Topology side_topology, int di
         for (int b = 0; b < nodes; ++b) t += N[b] * t_nodal[b * dim + i];
         load[i] += t * area;
       }
+    if (axisymmetric && dim == 2) {
+      double r = 0.0;
+      for (int b = 0; b < nodes; ++b) r += N[b] * X[b * 2];
+      for (int i = 0; i < 2; ++i) load[i] *= 6.283185307179586476925286766559 * r;
+    }
     for (int b = 0; b < nodes; ++b)
       for (int i = 0; i < dim; ++i) f[b * dim + i] += point.weight * N[b] * load[i];
   }

@@ -11,13 +11,18 @@
 // knows nothing of the law. Plane strain: F33 = 1, unit thickness; plane stress (the
 // *_plane_stress laws): the law sets F33 itself, unit reference thickness, so that f_int and
 // Pi_int are per unit reference thickness. Full Gauss integration as
-// the small-strain element. The tangent K = d f_int / d u is the Jacobian of the same
-// function evaluated with Sacado forward-AD scalars (exact to round-off).
+// the small-strain element. Axisymmetric (axisymmetric = true, 2D tri3/quad4, x = R, y = Z):
+// F_tt = 1 + u_r / R (hoop stretch), the 3D law, dV = 2 pi R dA and
+// f_int_{a r} += int P_tt N_a / R dV (Bonet & Wood §8.3 with the hoop term of the
+// axisymmetric element, kernels/axisymmetric_elastic.hpp; its quadrature). The tangent K = d f_int
+// / d u is the Jacobian of the same function evaluated with Sacado forward-AD scalars (exact to
+// round-off).
 
 #include <Kokkos_Core.hpp>
 #include <Sacado.hpp>
 #include <type_traits>
 
+#include "kernels/axisymmetric_elastic.hpp"
 #include "kernels/element_tangent_ad.hpp"
 #include "kernels/hyperelastic_material.hpp"
 #include "kernels/linear_elastic.hpp"
@@ -43,28 +48,39 @@ KOKKOS_INLINE_FUNCTION void deformation_gradient(int dim, int nodes, const Scala
 /// \return unsupported unless topology_dimension(topology) == dimension in {2, 3}; inverted if
 /// the reference element has det J <= 0; collapsed if det F <= 0 at a quadrature point.
 template <class Scalar>
-KOKKOS_INLINE_FUNCTION ElementStatus total_lagrangian_element(Topology topology, int dimension,
-                                                              const double* X, const Scalar* u,
-                                                              HyperelasticLaw law,
-                                                              ElasticConstants c, Scalar* f_int,
-                                                              Scalar* energy) {
+KOKKOS_INLINE_FUNCTION ElementStatus total_lagrangian_element(
+    Topology topology, int dimension, const double* X, const Scalar* u, HyperelasticLaw law,
+    ElasticConstants c, Scalar* f_int, Scalar* energy, bool axisymmetric = false) {
   const int dim = dimension;
   if (dim < 2 || dim > 3 || topology_dimension(topology) != dim) return ElementStatus::unsupported;
+  if (axisymmetric && dim != 2) return ElementStatus::unsupported;
   const int nodes = topology_num_nodes(topology);
   for (int r = 0; r < nodes * dim; ++r) f_int[r] = 0.0;
   if (energy) *energy = 0.0;
 
-  const int degree = full_integration_degree(topology);
+  const int degree =
+      axisymmetric ? axisymmetric_integration_degree(topology) : full_integration_degree(topology);
   const int num_points = quadrature_num_points(topology, degree);
   for (int q = 0; q < num_points; ++q) {
     const QuadraturePoint p = quadrature_point(topology, degree, q);
-    double G[max_element_nodes * 3], det_J = 0.0;  // G[a * dim + J] = dN_a/dX_J
-    const ElementStatus status = shape_gradients(topology, dim, X, p.xi, nullptr, G, det_J);
+    double G[max_element_nodes * 3], det_J = 0.0;       // G[a * dim + J] = dN_a/dX_J
+    double N[max_element_nodes], h[max_element_nodes];  // axisymmetric: N_a, N_a / R
+    const ElementStatus status =
+        shape_gradients(topology, dim, X, p.xi, axisymmetric ? N : nullptr, G, det_J);
     if (status != ElementStatus::ok) return status;
-    const double dV = p.weight * det_J;
+    double dV = p.weight * det_J;
 
     Scalar F[3][3];
     deformation_gradient(dim, nodes, u, G, F);
+    if (axisymmetric) {
+      const double radius = axisymmetric_radius(nodes, X, N);
+      if (!(radius > 0.0)) return ElementStatus::inverted;
+      dV *= axisymmetric_two_pi * radius;
+      for (int a = 0; a < nodes; ++a) {
+        h[a] = N[a] / radius;
+        F[2][2] += u[a * 2] * h[a];  // F_tt = 1 + u_r / R
+      }
+    }
     Scalar P[3][3], W;
     if (first_piola_kirchhoff(law, c, F, P, W) != MaterialStatus::ok)
       return ElementStatus::collapsed;
@@ -73,6 +89,7 @@ KOKKOS_INLINE_FUNCTION ElementStatus total_lagrangian_element(Topology topology,
       for (int i = 0; i < dim; ++i) {
         Scalar f = 0.0;
         for (int J = 0; J < dim; ++J) f += P[i][J] * G[a * dim + J];
+        if (axisymmetric && i == 0) f += P[2][2] * h[a];
         f_int[a * dim + i] += f * dV;
       }
     if (energy) *energy += W * dV;
@@ -86,14 +103,16 @@ KOKKOS_INLINE_FUNCTION ElementStatus total_lagrangian_element(Topology topology,
 /// \return as total_lagrangian_element.
 KOKKOS_INLINE_FUNCTION ElementStatus total_lagrangian_force_and_tangent(
     Topology topology, int dimension, const double* X, const double* u, HyperelasticLaw law,
-    ElasticConstants c, double* f_int, double* K) {
+    ElasticConstants c, double* f_int, double* K, bool axisymmetric = false) {
   if (!K)
-    return total_lagrangian_element<double>(topology, dimension, X, u, law, c, f_int, nullptr);
+    return total_lagrangian_element<double>(topology, dimension, X, u, law, c, f_int, nullptr,
+                                            axisymmetric);
   if (dimension < 2 || dimension > 3 || topology_dimension(topology) != dimension)
     return ElementStatus::unsupported;
   const auto evaluate = [&](const auto* u_ad, auto* f_ad) {
     using Fad = std::remove_pointer_t<decltype(f_ad)>;
-    return total_lagrangian_element<Fad>(topology, dimension, X, u_ad, law, c, f_ad, nullptr);
+    return total_lagrangian_element<Fad>(topology, dimension, X, u_ad, law, c, f_ad, nullptr,
+                                         axisymmetric);
   };
   return force_and_tangent_by_ad(topology_num_nodes(topology) * dimension, u, evaluate, f_int, K);
 }
@@ -104,26 +123,36 @@ KOKKOS_INLINE_FUNCTION ElementStatus total_lagrangian_force_and_tangent(
 /// in the Voigt order of linear_elastic_stress (2D: xx, yy, xy, zz; 3D: xx, yy, zz, xy, yz, xz).
 /// In plane strain sigma_zz = P_33 / J from the law with F33 = 1; in plane stress F33 and J
 /// are the law's (complete_deformation_gradient) and sigma_zz = 0 to round-off.
+/// Axisymmetric: F_tt = 1 + u_r / R, volumes of revolution, and the "zz" slot holds sigma_tt.
 /// \pre X, u: [nodes * dimension] node-major; stress: room for 6.
 /// \return as total_lagrangian_element (stress undefined unless ok).
-KOKKOS_INLINE_FUNCTION ElementStatus
-total_lagrangian_cauchy_stress(Topology topology, int dimension, const double* X, const double* u,
-                               HyperelasticLaw law, ElasticConstants c, double* stress) {
+KOKKOS_INLINE_FUNCTION ElementStatus total_lagrangian_cauchy_stress(
+    Topology topology, int dimension, const double* X, const double* u, HyperelasticLaw law,
+    ElasticConstants c, double* stress, bool axisymmetric = false) {
   const int dim = dimension;
   if (dim < 2 || dim > 3 || topology_dimension(topology) != dim) return ElementStatus::unsupported;
+  if (axisymmetric && dim != 2) return ElementStatus::unsupported;
   const int nodes = topology_num_nodes(topology);
   double tau_int[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};  // int P F^T dV
   double volume = 0.0;                                                         // int J dV
-  const int degree = full_integration_degree(topology);
+  const int degree =
+      axisymmetric ? axisymmetric_integration_degree(topology) : full_integration_degree(topology);
   const int num_points = quadrature_num_points(topology, degree);
   for (int q = 0; q < num_points; ++q) {
     const QuadraturePoint p = quadrature_point(topology, degree, q);
-    double G[max_element_nodes * 3], det_J = 0.0;
-    const ElementStatus status = shape_gradients(topology, dim, X, p.xi, nullptr, G, det_J);
+    double G[max_element_nodes * 3], det_J = 0.0, N[max_element_nodes];
+    const ElementStatus status =
+        shape_gradients(topology, dim, X, p.xi, axisymmetric ? N : nullptr, G, det_J);
     if (status != ElementStatus::ok) return status;
-    const double dV = p.weight * det_J;
+    double dV = p.weight * det_J;
     double F_2[3][3], F[3][3];
     deformation_gradient(dim, nodes, u, G, F_2);
+    if (axisymmetric) {
+      const double radius = axisymmetric_radius(nodes, X, N);
+      if (!(radius > 0.0)) return ElementStatus::inverted;
+      dV *= axisymmetric_two_pi * radius;
+      for (int a = 0; a < nodes; ++a) F_2[2][2] += u[a * 2] * N[a] / radius;
+    }
     if (complete_deformation_gradient(law, c, F_2, F) != MaterialStatus::ok)  // plane stress: F33
       return ElementStatus::collapsed;
     double P[3][3], W = 0.0;

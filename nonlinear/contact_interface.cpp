@@ -70,6 +70,7 @@ ContactInterface::ContactInterface(const Mesh& mesh, const Input& input, const C
                                        ? MortarIntegration::collocation
                                        : MortarIntegration::exact,
                                    ci.collocation_points > 0 ? ci.collocation_points : 20);
+  options_.mortar.axisymmetric = input.model.plane == PlaneKind::axisymmetric;  // 2π r weights
   const ContactGeometry geometry = ci.geometry != ContactGeometry::automatic ? ci.geometry
                                    : input.model.strain == StrainKind::small
                                        ? ContactGeometry::reference

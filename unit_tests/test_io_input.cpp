@@ -380,7 +380,10 @@ TEST(InputErrors, UnknownChoices) {
                     "of: linear_elastic, neo_hookean)"});
   expect_bad_input("plane", replaced(minimal, "dimension: 2", "dimension: 2, plane: strains"),
                    {"grout/model/plane: unknown plane kind 'strains' (expected one of: strain, "
-                    "stress)"});
+                    "stress, axisymmetric)"});
+  expect_bad_input("axisymmetric_3d",
+                   replaced(minimal, "dimension: 2", "dimension: 3, plane: axisymmetric"),
+                   {"grout/model/plane: axisymmetric needs dimension: 2"});
   expect_bad_input("contact_type", minimal + R"yaml(  contact:
     pair: {slave: a, master: b, type: glued}
 )yaml",
