@@ -2,7 +2,56 @@
 
 #include <algorithm>
 
+#include "assembly/raw_mpi_comm.hpp"
+
 namespace grout {
+
+namespace {
+
+// The rank owning each column of K (K's column map's local order): the ranks imported from
+// the row map, as the column indices are above.
+std::vector<int> column_owners(const Matrix& K) {
+  const auto row_map = K.getRowMap();
+  Vector owner_on_rows(row_map), owner_on_columns(K.getColMap());
+  owner_on_rows.putScalar(double(row_map->getComm()->getRank()));
+  const auto importer = K.getGraph()->getImporter();
+  if (!importer.is_null() && K.getDomainMap()->isSameAs(*row_map)) {
+    owner_on_columns.doImport(owner_on_rows, *importer, Tpetra::INSERT);
+  } else {
+    owner_on_columns.doImport(owner_on_rows, Import(row_map, K.getColMap()), Tpetra::INSERT);
+  }
+  auto c = owner_on_columns.getLocalViewHost(Tpetra::Access::ReadOnly);
+  std::vector<int> owners(c.extent(0));
+  for (std::size_t j = 0; j < owners.size(); ++j) owners[j] = int(c(j, 0));
+  return owners;
+}
+
+// Each of `keys` sent to the rank owners[k] and appended there to `received`, with the keys
+// the other ranks send here. Collective.
+void send_to_owners(const Comm& comm, const std::vector<int>& owners,
+                    const std::vector<long long>& keys, std::vector<long long>& received) {
+  const int ranks = comm.getSize();
+  std::vector<int> send_counts(std::size_t(ranks), 0), recv_counts(send_counts);
+  for (const int owner : owners) ++send_counts[std::size_t(owner)];
+  std::vector<int> send_offsets(std::size_t(ranks), 0), recv_offsets(send_offsets);
+  for (std::size_t r = 1; r < send_offsets.size(); ++r)
+    send_offsets[r] = send_offsets[r - 1] + send_counts[r - 1];
+  std::vector<long long> ordered(keys.size());
+  std::vector<int> next = send_offsets;
+  for (std::size_t k = 0; k < keys.size(); ++k)
+    ordered[std::size_t(next[std::size_t(owners[k])]++)] = keys[k];
+  const MPI_Comm mpi_comm = raw_mpi_comm(comm);
+  MPI_Alltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT, mpi_comm);
+  for (std::size_t r = 1; r < recv_offsets.size(); ++r)
+    recv_offsets[r] = recv_offsets[r - 1] + recv_counts[r - 1];
+  const std::size_t old_size = received.size();
+  received.resize(old_size + std::size_t(recv_offsets.back() + recv_counts.back()));
+  MPI_Alltoallv(ordered.data(), send_counts.data(), send_offsets.data(), MPI_LONG_LONG,
+                received.data() + old_size, recv_counts.data(), recv_offsets.data(), MPI_LONG_LONG,
+                mpi_comm);
+}
+
+}  // namespace
 
 bool renumber(MumpsNumbering& numbering, const Teuchos::RCP<const Map>& row_map, MPI_Comm comm) {
   const LO n_local = LO(row_map->getNodeNumElements());
@@ -61,23 +110,37 @@ MumpsEntries mumps_entries(const MumpsNumbering& numbering, const Matrix& K, boo
   }
 
   const auto local = K.getLocalMatrixHost();
-  std::vector<long long> mirror_keys;
+  const auto& comm = *row_map->getComm();
+  const int rank = comm.getRank();
+  const bool distributed = symmetric && comm.getSize() > 1;
+  const std::vector<int> owner = distributed ? column_owners(K) : std::vector<int>();
+  std::vector<long long> mirror_keys, foreign_keys;
+  std::vector<int> foreign_owners;
   e.keys.reserve(local.nnz());
   e.values.reserve(local.nnz());
   for (LO i = 0; i < n_local; ++i) {
     const long long row = e.row_index[std::size_t(i)];
     for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p) {
-      const long long col = e.column_index[local.graph.entries(p)];
+      const LO j = local.graph.entries(p);
+      const long long col = e.column_index[std::size_t(j)];
       if (symmetric && col > row) {
         // The mirror keys go last, after the rows' own (in row order, on one rank sorted:
-        // found in one forward walk instead of a binary search each; mumps_pattern.hpp).
-        if (local.values(p) == 0.0) mirror_keys.push_back(col * n + row);
+        // found in one forward walk instead of a binary search each; mumps_pattern.hpp), on
+        // the rank owning their row.
+        if (local.values(p) != 0.0) continue;
+        if (!distributed || owner[std::size_t(j)] == rank) {
+          mirror_keys.push_back(col * n + row);
+        } else {
+          foreign_keys.push_back(col * n + row);
+          foreign_owners.push_back(owner[std::size_t(j)]);
+        }
         continue;
       }
       e.keys.push_back(row * n + col);
       e.values.push_back(local.values(p));
     }
   }
+  if (distributed) send_to_owners(comm, foreign_owners, foreign_keys, mirror_keys);
   e.keys.insert(e.keys.end(), mirror_keys.begin(), mirror_keys.end());
   e.values.resize(e.keys.size(), 0.0);
   e.sorted_prefix =

@@ -142,6 +142,7 @@ struct MumpsSolver::Impl {
   bool initialised = false;
   bool analysed = false;
   bool factorised = false;
+  bool parallel_analysis = false;  // ordering ptscotch on 2+ ranks
   MumpsStatistics stats;
 
   MumpsNumbering numbering;
@@ -188,13 +189,9 @@ struct MumpsSolver::Impl {
     // a matrix-vector product and a second forward/backward substitution.
     icntl(m, 10) = 1;
     m.cntl[1] = 1e-15;
-    if (options.ordering == "ptscotch" && num_ranks > 1) {
-      icntl(m, 28) = 2;  // parallel analysis
-      icntl(m, 29) = 1;  // PT-SCOTCH
-    } else {
-      icntl(m, 28) = 1;  // sequential analysis
-      icntl(m, 7) = options.ordering == "amd" ? 0 : options.ordering == "pord" ? 4 : 3;
-    }
+    parallel_analysis = options.ordering == "ptscotch" && num_ranks > 1;
+    icntl(m, 28) = 1;  // sequential analysis (parallel: set per analysis, analyse())
+    icntl(m, 7) = options.ordering == "amd" ? 0 : options.ordering == "pord" ? 4 : 3;
     analysed = factorised = false;
     n = -1;
     numbering = MumpsNumbering{};  // its maps are on the previous communicator
@@ -229,7 +226,12 @@ struct MumpsSolver::Impl {
 
   // Symbolic analysis (job 1) of the pattern of n rows with the Schur set schur.rows (none:
   // empty), MUMPS ordering that set last (centralised Schur complement on rank 0, ICNTL(19)).
+  // PT-SCOTCH's parallel analysis (ICNTL(28) = 2, ICNTL(29) = 1) only without a Schur set:
+  // MUMPS refuses the two together (INFOG(1) = −39); with one, SCOTCH on rank 0.
   void analyse() {
+    const bool parallel = parallel_analysis && schur.rows.empty();
+    icntl(m, 28) = parallel ? 2 : 1;
+    if (parallel) icntl(m, 29) = 1;
     schur_list.resize(schur.rows.size());
     for (std::size_t k = 0; k < schur.rows.size(); ++k)
       schur_list[k] = MUMPS_INT(schur.rows[k] + 1);

@@ -4,7 +4,8 @@
 // nor ordered by rank; the analysis is reused while only values change or the pattern stays
 // inside the analysed one, the factorisation while values do not change either, and both are
 // redone when new entries appear; the same matrix gives the same solution to the last bit.
-// The answer agrees with Amesos2 KLU2 (independent solver).
+// The answer agrees with Amesos2 KLU2 (independent solver). A symmetric matrix's placeholder
+// entries keep the analysis on 2 ranks as on 1.
 
 #include <gtest/gtest.h>
 
@@ -177,6 +178,48 @@ TEST(MumpsSolver, NewPatternIsAnalysedAgain) {
     EXPECT_EQ(solver.statistics().analyses, step.analyses) << step.active << " active";
   }
   EXPECT_EQ(solver.statistics().factorisations, 5);
+}
+
+// Symmetric storage (lower triangle): an explicit zero above the diagonal in row r holds the
+// place of its mirror (c, r) in the pattern (mumps_numbering.hpp), which a later matrix fills
+// from row c. On 2 ranks rows r = 5 and c = 20 live on different ranks (cyclic map): the
+// placeholder must reach row c's rank, or that rank sees a new entry and MUMPS analyses again.
+Teuchos::RCP<Matrix> chain_with_coupling(bool coupled) {
+  const auto comm = Tpetra::getDefaultComm();
+  const GO n = 40, r = 5, c = 20;
+  std::vector<GO> mine;
+  for (GO i = 0; i < n; ++i)
+    if (i % comm->getSize() == comm->getRank()) mine.push_back(i);
+  const auto map =
+      Teuchos::rcp(new Map(Tpetra::global_size_t(n), mine.data(), mine.size(), 0, comm));
+  auto A = Teuchos::rcp(new Matrix(map, 4));
+  for (GO i : mine) {
+    std::vector<GO> cols = {i};
+    std::vector<double> vals = {4.0};
+    if (i > 0) cols.push_back(i - 1), vals.push_back(-1.0);
+    if (i + 1 < n) cols.push_back(i + 1), vals.push_back(-1.0);
+    if (i == r) cols.push_back(c), vals.push_back(coupled ? -0.5 : 0.0);
+    if (i == c && coupled) cols.push_back(r), vals.push_back(-0.5);
+    A->insertGlobalValues(i, Teuchos::ArrayView<const GO>(cols),
+                          Teuchos::ArrayView<const double>(vals));
+  }
+  A->fillComplete();
+  return A;
+}
+
+TEST(MumpsSolver, SymmetricPlaceholderKeepsTheAnalysisOnAnyRankCount) {
+  MumpsOptions options;
+  options.symmetric = true;
+  MumpsSolver solver(options);
+  for (bool coupled : {false, true}) {
+    const auto A = chain_with_coupling(coupled);
+    Vector b(A->getRowMap()), x(A->getRowMap());
+    b.randomize();
+    solver.solve(A, b, x);
+    EXPECT_LT(relative_residual(*A, x, b), 1e-14) << "coupled " << coupled;
+  }
+  EXPECT_EQ(solver.statistics().analyses, 1);
+  EXPECT_EQ(solver.statistics().factorisations, 2);
 }
 
 TEST(MumpsSolver, EveryOrderingAndSymmetricLdlt) {
