@@ -1,5 +1,5 @@
-// Zoltan2 RCB over element centroids (parallel/element_partition.hpp). The only translation
-// unit that includes Zoltan2's headers.
+// Zoltan2 RCB (Zoltan's RCB underneath in Trilinos 13.2) over element centroids
+// (parallel/element_partition.hpp). The only translation unit that includes Zoltan2's headers.
 
 #include "parallel/element_partition.hpp"
 
@@ -28,6 +28,8 @@ std::vector<int> partition_elements_rcb(const Comm& comm, int dimension,
   parameters.set("algorithm", "rcb");
   parameters.set("num_global_parts", num_parts);
   parameters.set("imbalance_tolerance", 1.01);
+  // Zoltan2's "rcb" runs Zoltan's RCB, whose default debug level prints its parameters.
+  parameters.sublist("zoltan_parameters").set("debug_level", "0");
   Zoltan2::PartitioningProblem<Adapter> problem(&adapter, &parameters, Teuchos::rcpFromRef(comm));
   problem.solve();
   const auto* parts = problem.getSolution().getPartListView();

@@ -2,16 +2,19 @@
 // (--replicated: read on rank 0 and broadcast), and prints what each rank holds, the time of
 // each step and each rank's peak resident memory. Exit code 2 for a bad mesh, on every rank.
 //
-//   grout_mesh_probe mesh.exo [--replicated] [--contact <side set> ...] [--contact-weight w]
+//   grout_mesh_probe mesh.exo [--replicated] [--timers] [--contact <side set> ...]
+//   [--contact-weight w]
 
 #include <sys/resource.h>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultComm.hpp>
+#include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_Core.hpp>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <iostream>
 #include <string>
 
 #include "assembly/agree_on_errors.hpp"
@@ -37,12 +40,14 @@ int main(int argc, char** argv) {
   const auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;
   std::string path;
-  bool replicated = false;
+  bool replicated = false, timers = false;
   grout::DistributionOptions options;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--replicated") {
       replicated = true;
+    } else if (arg == "--timers") {
+      timers = true;
     } else if (arg == "--contact" && i + 1 < argc) {
       options.contact_side_sets.push_back(argv[++i]);
     } else if (arg == "--contact-weight" && i + 1 < argc) {
@@ -96,6 +101,7 @@ int main(int argc, char** argv) {
         std::printf("peak RSS rank %d: %.1f MB (%.1f MB before reading)\n", r, all[2 * r + 1],
                     all[2 * r]);
     }
+    if (timers) Teuchos::TimeMonitor::summarize(comm.ptr(), std::cout, false, true, false);
     return 0;
   } catch (const grout::ErrorOnOtherRank& e) {
     return e.exit_code();

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <array>
+#include <iterator>
 #include <numeric>
 
 #include "parallel/directory.hpp"
@@ -40,11 +41,23 @@ struct NodeParts {
 NodeParts gather_node_parts(const Comm& comm, const MeshHeader& h, const MeshSlices& s,
                             const std::vector<int>& element_part) {
   const int ranks = comm.getSize();
-  std::vector<std::pair<GlobalIndex, int>> mine;  // (node, part), each once
-  for (GlobalIndex e = 0; e < s.num_elements(); ++e)
-    for (GlobalIndex k = s.element_nodes_offset[e]; k < s.element_nodes_offset[e + 1]; ++k)
-      mine.emplace_back(s.element_nodes[k], element_part[e]);
-  sort_unique(mine);
+  // (node, part), each once; merged chunk by chunk so that the pairs of all the element
+  // nodes (8 per hex) never sit in memory at once.
+  std::vector<std::pair<GlobalIndex, int>> mine, chunk, merged;
+  const GlobalIndex chunk_size = std::max<GlobalIndex>(1 << 15, s.num_elements() / 8 + 1);
+  for (GlobalIndex first = 0; first < s.num_elements(); first += chunk_size) {
+    chunk.clear();
+    for (GlobalIndex e = first; e < std::min(s.num_elements(), first + chunk_size); ++e)
+      for (GlobalIndex k = s.element_nodes_offset[e]; k < s.element_nodes_offset[e + 1]; ++k)
+        chunk.emplace_back(s.element_nodes[k], element_part[e]);
+    sort_unique(chunk);
+    merged.clear();
+    std::set_union(mine.begin(), mine.end(), chunk.begin(), chunk.end(),
+                   std::back_inserter(merged));
+    mine.swap(merged);
+  }
+  chunk = {};
+  merged = {};
   Messages pairs(static_cast<std::size_t>(ranks));
   for (const auto& [n, p] : mine) {
     auto& to = pairs[std::size_t(slice_rank(h.num_nodes, n, ranks))];
@@ -105,13 +118,6 @@ void element_ranks(const Comm& comm, const MeshHeader& h, const MeshSlices& s,
   }
 }
 
-/// An element as it arrives at a rank that holds it.
-struct ElementRecord {
-  int block = 0, owner = 0;
-  GlobalIndex gid = 0;
-  std::vector<GlobalIndex> nodes;  ///< global
-};
-
 }  // namespace
 
 std::vector<GlobalIndex> slice_element_nodes(const MeshSlices& s) {
@@ -141,30 +147,24 @@ DistributedMesh migrate_mesh(const Comm& comm, const MeshHeader& h, const MeshSl
     }
   std::vector<long long> got = send_to_ranks(comm, outbox);
   outbox.assign(std::size_t(ranks), {});
-  std::vector<ElementRecord> elements;
-  for (std::size_t at = 0; at < got.size();) {
-    ElementRecord r;
-    r.gid = got[at];
-    r.block = int(got[at + 1]);
-    r.owner = int(got[at + 2]);
-    const int npe = h.blocks[std::size_t(r.block)].nodes_per_element;
-    r.nodes.assign(got.begin() + long(at) + 3, got.begin() + long(at) + 3 + npe);
-    at += std::size_t(3 + npe);
-    elements.push_back(std::move(r));
-  }
-  got.clear();
-  got.shrink_to_fit();
-  // Block by block; owned first; ascending global id.
-  std::sort(elements.begin(), elements.end(), [me](const ElementRecord& a, const ElementRecord& b) {
-    if (a.block != b.block) return a.block < b.block;
-    if ((a.owner == me) != (b.owner == me)) return a.owner == me;
-    return a.gid < b.gid;
+  // The received records stay in `got`; `records` holds where each starts, sorted block by
+  // block, owned first, ascending global id.
+  std::vector<std::size_t> records;
+  const auto npe_of = [&](std::size_t r) {
+    return h.blocks[std::size_t(got[r + 1])].nodes_per_element;
+  };
+  for (std::size_t at = 0; at < got.size(); at += std::size_t(3 + npe_of(at)))
+    records.push_back(at);
+  std::sort(records.begin(), records.end(), [&](std::size_t a, std::size_t b) {
+    if (got[a + 1] != got[b + 1]) return got[a + 1] < got[b + 1];
+    if ((got[a + 2] == me) != (got[b + 2] == me)) return got[a + 2] == me;
+    return got[a] < got[b];
   });
-
   // Nodes: each holder asks the node's home for owner and coordinates; the home remembers
   // who asked (holders(n)) and sends the nodes of no element to rank 0.
   std::vector<GlobalIndex> needed;
-  for (const auto& r : elements) needed.insert(needed.end(), r.nodes.begin(), r.nodes.end());
+  for (std::size_t r : records)
+    needed.insert(needed.end(), got.begin() + long(r) + 3, got.begin() + long(r) + 3 + npe_of(r));
   sort_unique(needed);
   const DirectoryQuestions q = ask_homes(comm, h.num_nodes, needed);
   const int dim = h.dimension;
@@ -240,17 +240,18 @@ DistributedMesh migrate_mesh(const Comm& comm, const MeshHeader& h, const MeshSl
     m.block_global_first.push_back(block.first_element);
     block.first_element = next;
     GlobalIndex owned = 0;
-    for (; at < elements.size() && elements[at].block == int(b); ++at, ++next) {
-      const ElementRecord& r = elements[at];
-      m.element_gid.push_back(r.gid);
-      m.element_owner.push_back(r.owner);
-      owned += r.owner == me;
-      for (GlobalIndex n : r.nodes) block.connectivity.push_back(m.local_node(n));
+    for (; at < records.size() && got[records[at] + 1] == GlobalIndex(b); ++at, ++next) {
+      const std::size_t r = records[at];
+      m.element_gid.push_back(got[r]);
+      m.element_owner.push_back(int(got[r + 2]));
+      owned += got[r + 2] == me;
+      for (int a = 0; a < block.nodes_per_element; ++a)
+        block.connectivity.push_back(m.local_node(got[r + 3 + std::size_t(a)]));
     }
     m.num_owned_in_block.push_back(owned);
     m.local.blocks.push_back(std::move(block));
   }
-  elements.clear();
+  records = {};
 
   // Side-set entries [set, position, element, side] go to the element's home, which knows
   // ranks(e); node-set entries [set, position, node] go to the node's home, which knows
