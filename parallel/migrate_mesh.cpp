@@ -11,6 +11,7 @@
 
 #include "parallel/migrate_mesh.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
 #include <algorithm>
 #include <array>
 #include <iterator>
@@ -135,18 +136,28 @@ DistributedMesh migrate_mesh(const Comm& comm, const MeshHeader& h, const MeshSl
   element_ranks(comm, h, s, node_parts, ranks_offset, ranks_of);
 
   // Elements to the ranks that hold them: [gid, block, owner, nodes...].
+  // In rounds of at most 2^16 elements per rank, so that the records in flight (three
+  // copies in the all-to-all) stay small next to the mesh.
   Messages outbox(static_cast<std::size_t>(ranks));
-  for (GlobalIndex e = 0; e < s.num_elements(); ++e)
-    for (GlobalIndex k = ranks_offset[e]; k < ranks_offset[e + 1]; ++k) {
-      auto& to = outbox[std::size_t(ranks_of[k])];
-      to.push_back(s.element_begin + e);
-      to.push_back(s.element_block[e]);
-      to.push_back(element_part[e]);
-      to.insert(to.end(), s.element_nodes.begin() + s.element_nodes_offset[e],
-                s.element_nodes.begin() + s.element_nodes_offset[e + 1]);
-    }
-  std::vector<long long> got = send_to_ranks(comm, outbox);
-  outbox.assign(std::size_t(ranks), {});
+  constexpr GlobalIndex round_size = 1 << 16;
+  long long my_rounds = (s.num_elements() + round_size - 1) / round_size, rounds = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 1, &my_rounds, &rounds);
+  std::vector<long long> got;
+  for (long long round = 0; round < rounds; ++round) {
+    const GlobalIndex first = round * round_size;
+    for (GlobalIndex e = first; e < std::min(s.num_elements(), first + round_size); ++e)
+      for (GlobalIndex k = ranks_offset[e]; k < ranks_offset[e + 1]; ++k) {
+        auto& to = outbox[std::size_t(ranks_of[k])];
+        to.push_back(s.element_begin + e);
+        to.push_back(s.element_block[e]);
+        to.push_back(element_part[e]);
+        to.insert(to.end(), s.element_nodes.begin() + s.element_nodes_offset[e],
+                  s.element_nodes.begin() + s.element_nodes_offset[e + 1]);
+      }
+    const std::vector<long long> received = send_to_ranks(comm, outbox);
+    got.insert(got.end(), received.begin(), received.end());
+    outbox.assign(std::size_t(ranks), {});
+  }
   // The received records stay in `got`; `records` holds where each starts, sorted block by
   // block, owned first, ascending global id.
   std::vector<std::size_t> records;
