@@ -69,7 +69,7 @@ std::vector<double> check_and_centroids(const MeshHeader& h, const MeshSlices& s
 /// The indices of the contact side sets among the header's side sets.
 std::vector<std::size_t> contact_sets(const MeshHeader& h, const DistributionOptions& options) {
   std::vector<std::size_t> sets;
-  if (options.contact_weight == 0.0) return sets;
+  if (options.contact_weight == 0.0 && !options.balance_contact) return sets;
   for (const std::string& name : options.contact_side_sets) {
     std::size_t k = 0;
     while (k < h.side_sets.size() && h.side_sets[k].name != name &&
@@ -83,16 +83,26 @@ std::vector<std::size_t> contact_sets(const MeshHeader& h, const DistributionOpt
 }
 
 /// Collective. Weight 1 per slice element, 1 + contact_weight for an element with a face in
-/// one of the side sets `sets`.
+/// one of the side sets `sets`; with `two`, two weights per element: 1, and 1 on those
+/// elements (0 elsewhere).
 std::vector<double> element_weights(const Comm& comm, const MeshHeader& h, const MeshSlices& s,
-                                    const std::vector<std::size_t>& sets, double contact_weight) {
-  std::vector<double> weights(std::size_t(s.num_elements()), 1.0);
+                                    const std::vector<std::size_t>& sets, double contact_weight,
+                                    bool two) {
+  const std::size_t stride = two ? 2 : 1;
+  std::vector<double> weights(std::size_t(s.num_elements()) * stride, 1.0);
+  if (two)
+    for (std::size_t i = 1; i < weights.size(); i += 2) weights[i] = 0.0;
   std::vector<std::vector<long long>> marks(std::size_t(comm.getSize()));
   for (std::size_t k : sets)
     for (GlobalIndex e : s.side_set_elements[k])
       marks[std::size_t(slice_rank(h.num_elements, e, comm.getSize()))].push_back(e);
-  for (long long e : send_to_ranks(comm, marks))
-    weights[std::size_t(e - s.element_begin)] = 1.0 + contact_weight;
+  for (long long e : send_to_ranks(comm, marks)) {
+    const std::size_t i = std::size_t(e - s.element_begin) * stride;
+    if (two)
+      weights[i + 1] = 1.0;
+    else
+      weights[i] = 1.0 + contact_weight;
+  }
   return weights;
 }
 
@@ -171,11 +181,12 @@ DistributedMesh read_distributed_mesh(const Comm& comm, const std::string& path,
       centroids = check_and_centroids(header, slices, nodes, x);
       sets = contact_sets(header, options);
     });
-    const std::vector<double> weights =
-        element_weights(comm, header, slices, sets, options.contact_weight);
+    const std::vector<double> weights = element_weights(
+        comm, header, slices, sets, options.contact_weight, options.balance_contact);
     std::vector<GlobalIndex> ids(std::size_t(slices.num_elements()));
     for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = slices.element_begin + GlobalIndex(i);
-    part = partition_elements_rcb(comm, header.dimension, ids, centroids, weights, comm.getSize());
+    part = partition_elements_rcb(comm, header.dimension, ids, centroids, weights,
+                                  options.balance_contact ? 2 : 1, comm.getSize());
   }
   timer.emplace(*migrate_time);
   DistributedMesh mesh = migrate_mesh(comm, header, slices, part);

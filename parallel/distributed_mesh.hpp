@@ -69,6 +69,9 @@ struct DistributionOptions {
   /// instead of 1, so that a part's share of the contact surface follows its weight.
   std::vector<std::string> contact_side_sets;
   double contact_weight = 0.0;
+  /// Balance two criteria instead: elements (weight 1 each) and elements on the contact side
+  /// sets (Zoltan's multi-criteria RCB), so each part gets its share of both.
+  bool balance_contact = false;
 };
 
 /// \brief Collective. Reads the Exodus mesh `path` in slices and distributes it (see the

@@ -12,13 +12,23 @@ namespace grout {
 std::vector<int> partition_elements_rcb(const Comm& comm, int dimension,
                                         const std::vector<GlobalIndex>& ids,
                                         const std::vector<double>& centroids,
-                                        const std::vector<double>& weights, int num_parts) {
+                                        const std::vector<double>& weights, int num_weights,
+                                        int num_parts) {
   std::vector<int> part(ids.size(), 0);
   if (num_parts <= 1) return part;
   using Types = Zoltan2::BasicUserTypes<double, int, long long>;
   using Adapter = Zoltan2::BasicVectorAdapter<Types>;
-  std::vector<const double*> entries, weight_entries{weights.data()};
-  std::vector<int> strides, weight_strides{1};
+  // One weight per element, or two (the element's weight and whether it lies on the contact
+  // surface): Zoltan's multi-criteria RCB then balances both, each part its share of the
+  // contact surface.
+  std::vector<const double*> weight_entries;
+  std::vector<int> weight_strides;
+  for (int w = 0; w < num_weights; ++w) {
+    weight_entries.push_back(weights.data() + w);
+    weight_strides.push_back(num_weights);
+  }
+  std::vector<const double*> entries;
+  std::vector<int> strides;
   for (int d = 0; d < dimension; ++d) {
     entries.push_back(centroids.data() + d);
     strides.push_back(3);

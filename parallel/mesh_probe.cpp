@@ -3,7 +3,7 @@
 // each step and each rank's peak resident memory. Exit code 2 for a bad mesh, on every rank.
 //
 //   grout_mesh_probe mesh.exo [--replicated] [--timers] [--contact <side set> ...]
-//   [--contact-weight w]
+//   [--contact-weight w] [--balance-contact]
 
 #include <sys/resource.h>
 
@@ -50,6 +50,8 @@ int main(int argc, char** argv) {
       timers = true;
     } else if (arg == "--contact" && i + 1 < argc) {
       options.contact_side_sets.push_back(argv[++i]);
+    } else if (arg == "--balance-contact") {
+      options.balance_contact = true;
     } else if (arg == "--contact-weight" && i + 1 < argc) {
       options.contact_weight = std::atof(argv[++i]);
     } else if (path.empty() && arg.rfind("-", 0) != 0) {
@@ -64,7 +66,7 @@ int main(int argc, char** argv) {
     if (root)
       std::fprintf(stderr,
                    "usage: grout_mesh_probe mesh.exo [--replicated] [--contact <side set>]"
-                   " [--contact-weight w]\n");
+                   " [--contact-weight w] [--balance-contact]\n");
     return 2;
   }
   try {
@@ -85,6 +87,20 @@ int main(int argc, char** argv) {
       } else {
         const grout::DistributedMesh mesh = grout::read_distributed_mesh(*comm, path, options);
         text = grout::describe_holdings(*comm, mesh);
+        // Contact balance: faces of each contact side set and owned dofs (nodes x dimension)
+        // per rank.
+        for (const std::string& name : options.contact_side_sets) {
+          const grout::SideSet* set = mesh.local.find_side_set(name);
+          long long mine[2] = {0, mesh.num_owned_nodes * mesh.local.dimension};
+          if (set)
+            for (grout::GlobalIndex e : set->elements) mine[0] += mesh.owns_element(e);
+          std::vector<long long> all(std::size_t(2 * comm->getSize()));
+          Teuchos::gatherAll(*comm, 2, mine, int(all.size()), all.data());
+          for (int r = 0; r < comm->getSize(); ++r)
+            text += "balance rank " + std::to_string(r) + ": side set '" + name + "' faces " +
+                    std::to_string(all[2 * r]) + ", owned dofs " + std::to_string(all[2 * r + 1]) +
+                    "\n";
+        }
       }
     });
     comm->barrier();
