@@ -4,8 +4,6 @@
 // Exodus is 64-bit (GlobalIndex is long long, the same width as int64_t), and with a
 // compute word size of 8 so coordinates and variables arrive as double.
 
-#include <exodusII.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
@@ -17,7 +15,7 @@
 
 #include "io/errors.hpp"
 #include "io/exodus.hpp"
-#include "io/netcdf_header.hpp"
+#include "io/exodus_read_file.hpp"
 
 namespace grout {
 
@@ -25,164 +23,7 @@ namespace {
 
 static_assert(sizeof(GlobalIndex) == sizeof(int64_t), "grout: GlobalIndex must be 64-bit");
 
-[[noreturn]] void fail(const std::string& path, const std::string& what) {
-  throw InputError(path + ": " + what);
-}
-
-/// Throw InputError when an Exodus call failed (negative status; positive is a warning).
-void check(int status, const std::string& path, const std::string& what) {
-  if (status < 0)
-    fail(path, "Exodus error while " + what + " (status " + std::to_string(status) + ")");
-}
-
-/// Longest entity name read (netCDF's NC_MAX_NAME is 256 including the terminating zero).
-constexpr int64_t max_name_length = 255;
-
-/// How many stored values a file of `bytes` bytes can hold at most, so that a count in a
-/// corrupt or hostile header is refused before anything is allocated for it. A classic
-/// netCDF file ("CDF" magic) stores every value in full, at least 4 bytes each. An HDF5-based
-/// file (netCDF-4) may compress: deflate, the only filter Exodus applies, shrinks data by at
-/// most a factor of 1032.
-int64_t max_stored_values(const std::string& path) {
-  std::error_code error;
-  const std::uintmax_t bytes = std::filesystem::file_size(path, error);
-  if (error) return 0;
-  char magic[3] = {};
-  std::ifstream(path, std::ios::binary).read(magic, sizeof magic);
-  const bool classic = magic[0] == 'C' && magic[1] == 'D' && magic[2] == 'F';
-  const std::uintmax_t values = classic ? bytes / 4 : bytes / 4 * 1032;
-  return int64_t(std::min<std::uintmax_t>(values, std::numeric_limits<int64_t>::max() / 8));
-}
-
-/// An Exodus file opened for reading, closed when it goes out of scope.
-class ReadOnlyFile {
- public:
-  explicit ReadOnlyFile(const std::string& path)
-      : path_(path), max_values_(max_stored_values(path)) {
-    int comp_ws = sizeof(double), io_ws = 0;
-    float version = 0.0f;
-    check_netcdf_header(path);  // before netCDF allocates what the header declares
-    id_ = ex_open(path.c_str(), EX_READ | EX_ALL_INT64_API, &comp_ws, &io_ws, &version);
-    if (id_ < 0) fail(path, "cannot open Exodus file");
-    // Names longer than the 32-character default are truncated unless we ask for them.
-    const int64_t used = ex_inquire_int(id_, EX_INQ_DB_MAX_USED_NAME_LENGTH);
-    name_length_ = int(std::clamp<int64_t>(used, MAX_NAME_LENGTH, max_name_length));
-    ex_set_max_name_length(id_, name_length_);
-  }
-  ~ReadOnlyFile() { ex_close(id_); }
-  ReadOnlyFile(const ReadOnlyFile&) = delete;
-  ReadOnlyFile& operator=(const ReadOnlyFile&) = delete;
-
-  int id() const { return id_; }
-  const std::string& path() const { return path_; }
-  void check(int status, const std::string& what) const { grout::check(status, path_, what); }
-
-  /// Refuse `count` entries of `what` (from the header), `values_each` stored values each,
-  /// when the file is too small to hold them: the header is corrupt, and allocating for it
-  /// could exhaust the memory.
-  void check_count(int64_t count, const std::string& what, int64_t values_each = 1) const {
-    if (count < 0) fail(path_, what + ": negative count " + std::to_string(count));
-    if (count > max_values_ / values_each) {
-      fail(path_, what + ": the header declares " + std::to_string(count) + " entries of " +
-                      std::to_string(values_each) + " value(s) but the file can hold at most " +
-                      std::to_string(max_values_) +
-                      " values (limit from the file size; the file is corrupt or truncated)");
-    }
-  }
-
-  /// The ids of `count` entities of `type`; each must fit in an int (ElementBlock::id and the
-  /// sets' ids are int: 2^32 + 1 would otherwise read as 1, a false "same id").
-  std::vector<int64_t> ids(ex_entity_type type, int64_t count, const std::string& what) const {
-    check_count(count, what);
-    std::vector<int64_t> ids(static_cast<std::size_t>(count));
-    if (count > 0) check(ex_get_ids(id_, type, ids.data()), "reading entity ids");
-    for (std::size_t i = 0; i < ids.size(); ++i) {
-      if (ids[i] < std::numeric_limits<int>::min() || ids[i] > std::numeric_limits<int>::max())
-        fail(path_, what + ": entry " + std::to_string(i + 1) + " has id " +
-                        std::to_string(ids[i]) + ", outside the supported range " +
-                        std::to_string(std::numeric_limits<int>::min()) + ".." +
-                        std::to_string(std::numeric_limits<int>::max()));
-    }
-    return ids;
-  }
-
-  /// Names of all entities of one type; an empty name becomes "id_<n>".
-  std::vector<std::string> names(ex_entity_type type, const std::vector<int64_t>& ids) const {
-    std::vector<std::string> result(ids.size());
-    if (ids.empty()) return result;
-    std::vector<std::vector<char>> buffers(ids.size(), std::vector<char>(name_length_ + 1, '\0'));
-    std::vector<char*> pointers;
-    for (auto& b : buffers) pointers.push_back(b.data());
-    check(ex_get_names(id_, type, pointers.data()), "reading names");
-    for (std::size_t i = 0; i < ids.size(); ++i) {
-      result[i] = buffers[i].data();
-      if (result[i].empty()) result[i] = "id_" + std::to_string(ids[i]);
-    }
-    return result;
-  }
-
-  std::vector<std::string> variable_names(ex_entity_type type) const {
-    int count = 0;
-    check(ex_get_variable_param(id_, type, &count), "reading the number of variables");
-    check_count(count, "the number of variables");
-    std::vector<std::string> result(std::size_t(std::max(count, 0)));
-    if (count <= 0) return result;
-    std::vector<std::vector<char>> buffers(result.size(),
-                                           std::vector<char>(name_length_ + 1, '\0'));
-    std::vector<char*> pointers;
-    for (auto& b : buffers) pointers.push_back(b.data());
-    check(ex_get_variable_names(id_, type, count, pointers.data()), "reading variable names");
-    for (std::size_t i = 0; i < result.size(); ++i) result[i] = buffers[i].data();
-    return result;
-  }
-
- private:
-  std::string path_;
-  int64_t max_values_ = 0;
-  int id_ = -1;
-  int name_length_ = MAX_NAME_LENGTH;
-};
-
-std::string upper_case(std::string s) {
-  for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
-  return s;
-}
-
-/// Map an Exodus element type string to a Topology; false when unsupported.
-bool parse_topology(const std::string& exodus_type, Topology& topology) {
-  const std::string t = upper_case(exodus_type);
-  if (t == "QUAD" || t == "QUAD4")
-    topology = Topology::quad4;
-  else if (t == "TRI" || t == "TRI3" || t == "TRIANGLE")
-    topology = Topology::tri3;
-  else if (t == "HEX" || t == "HEX8")
-    topology = Topology::hex8;
-  else if (t == "TET" || t == "TET4" || t == "TETRA" || t == "TETRA4")
-    topology = Topology::tet4;
-  else
-    return false;
-  return true;
-}
-
-struct Counts {
-  int64_t dimension = 0, nodes = 0, elements = 0, blocks = 0, node_sets = 0, side_sets = 0;
-};
-
-Counts read_counts(const ReadOnlyFile& file) {
-  Counts c;
-  char title[MAX_LINE_LENGTH + 1] = {};
-  file.check(ex_get_init(file.id(), title, &c.dimension, &c.nodes, &c.elements, &c.blocks,
-                         &c.node_sets, &c.side_sets),
-             "reading the header");
-  if (c.dimension != 2 && c.dimension != 3)
-    fail(file.path(), "unsupported spatial dimension " + std::to_string(c.dimension));
-  file.check_count(c.nodes, "the node coordinates", c.dimension);
-  file.check_count(c.elements, "the elements");
-  file.check_count(c.blocks, "the element blocks");
-  file.check_count(c.node_sets, "the node sets");
-  file.check_count(c.side_sets, "the side sets");
-  return c;
-}
+using namespace exodus_read;
 
 void read_coordinates(const ReadOnlyFile& file, const Counts& c, Mesh& mesh) {
   const auto n = std::size_t(c.nodes);
@@ -204,33 +45,10 @@ void read_blocks(const ReadOnlyFile& file, const Counts& c, Mesh& mesh) {
   const auto names = file.names(EX_ELEM_BLOCK, ids);
   GlobalIndex first = 0;
   for (std::size_t b = 0; b < ids.size(); ++b) {
-    const std::string block =
-        "element block '" + names[b] + "' (id " + std::to_string(ids[b]) + ")";
-    char type[MAX_STR_LENGTH + 1] = {};
-    int64_t num_elements = 0, nodes_per_element = 0, edges = 0, faces = 0, attributes = 0;
-    file.check(ex_get_block(file.id(), EX_ELEM_BLOCK, ids[b], type, &num_elements,
-                            &nodes_per_element, &edges, &faces, &attributes),
-               "reading " + block);
-    ElementBlock eb;
-    eb.name = names[b];
-    eb.id = int(ids[b]);
-    eb.first_element = first;
-    // Exodus writes an element block without elements with the type "NULL".
-    if (num_elements == 0)
-      fail(file.path(), block + " is empty (0 elements, element type '" + std::string(type) +
-                            "'): every block needs elements; remove it from the mesh");
-    if (!parse_topology(type, eb.topology))
-      fail(file.path(), block + " has unsupported element type '" + std::string(type) +
-                            "' (supported: QUAD4, TRI3, HEX8, TET4)");
-    if (topology_dimension(eb.topology) != mesh.dimension)
-      fail(file.path(), block + " has element type '" + std::string(type) + "' in a " +
-                            std::to_string(mesh.dimension) + "D mesh");
-    if (nodes_per_element != topology_num_nodes(eb.topology))
-      fail(file.path(), block + " of type '" + std::string(type) + "' has " +
-                            std::to_string(nodes_per_element) + " nodes per element, expected " +
-                            std::to_string(topology_num_nodes(eb.topology)));
-    eb.nodes_per_element = int(nodes_per_element);
-    file.check_count(num_elements, "the connectivity of " + block, nodes_per_element);
+    const std::string block = block_label(names[b], ids[b]);
+    int64_t num_elements = 0;
+    ElementBlock eb = read_block_header(file, c, ids[b], names[b], first, num_elements);
+    const int64_t nodes_per_element = eb.nodes_per_element;
     eb.connectivity.resize(std::size_t(num_elements * nodes_per_element));
     if (num_elements > 0)
       file.check(

@@ -1,6 +1,7 @@
 #pragma once
 // The mesh as plain data, as read from an Exodus II file (replicated on every rank).
 
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -71,5 +72,13 @@ struct Mesh {
 /// finite coordinates and det J > 0 at each point of its quadrature rule (not inverted,
 /// not degenerate).
 void check_mesh(const Mesh& mesh);
+
+/// \brief check_mesh's test of one element of `topology`: its coordinates `X` (node-major,
+/// `dimension` each) finite and at most 1e100 in magnitude, det J > 0 at each point of the
+/// stiffness and mass quadrature rules (degenerate when |det J| <= 1e-10 h^dim, h its longest
+/// extent). `nodes`: its 0-based global node indices, for the message; `where()`: the
+/// message's prefix naming the mesh and the element. Throws InputError.
+void check_element_geometry(Topology topology, int dimension, const double* X,
+                            const GlobalIndex* nodes, const std::function<std::string()>& where);
 
 }  // namespace grout

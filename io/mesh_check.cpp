@@ -75,66 +75,70 @@ void check_side_sets(const Mesh& mesh) {
 constexpr double max_coordinate = 1e100;
 
 /// Every element: finite coordinates of at most max_coordinate in magnitude, and det J > 0 at
-/// every point of every quadrature rule it is integrated with (the solid's stiffness and the
-/// mass matrix of dynamics), relative to its size (degenerate when |det J| ≤ 1e-10 h^dim, h
-/// its longest extent).
+/// every point of every quadrature rule it is integrated with (check_element_geometry).
 void check_elements(const Mesh& mesh) {
   const int dim = mesh.dimension;
   if (dim != 2 && dim != 3) return;  // refused by the reader
   for (const ElementBlock& block : mesh.blocks) {
     const int npe = block.nodes_per_element;
     if (npe != topology_num_nodes(block.topology) || npe > max_element_nodes) continue;
-    const int degrees[2] = {full_integration_degree(block.topology),
-                            mass_integration_degree(block.topology)};
     for (GlobalIndex e = 0; e < block.num_elements(); ++e) {
-      const auto where = [&] {
+      double X[max_element_nodes * 3];
+      const GlobalIndex* nodes = block.connectivity.data() + e * npe;
+      for (int a = 0; a < npe; ++a)
+        for (int d = 0; d < dim; ++d) X[a * dim + d] = mesh.coordinates[nodes[a] * dim + d];
+      check_element_geometry(block.topology, dim, X, nodes, [&] {
         return "mesh '" + mesh.file + "': block '" + block.name + "', element " +
                std::to_string(e + 1) + " (global element " +
                std::to_string(block.first_element + e + 1) + "): ";
-      };
-      double X[max_element_nodes * 3];
-      double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-      for (int a = 0; a < npe; ++a) {
-        const GlobalIndex node = block.connectivity[e * npe + a];
-        for (int d = 0; d < dim; ++d) {
-          const double x = mesh.coordinates[node * dim + d];
-          if (!std::isfinite(x) || std::abs(x) > max_coordinate) {
-            std::ostringstream text;
-            text << where()
-                 << (std::isfinite(x) ? "a node coordinate is out of range"
-                                      : "a node coordinate is not a finite number")
-                 << " (node " << node + 1 << ", "
-                 << "xyz"[d] << " = " << x;
-            if (std::isfinite(x)) text << "; at most " << max_coordinate << " in magnitude";
-            text << ")";
-            throw InputError(text.str());
-          }
-          X[a * dim + d] = x;
-          lo[d] = a == 0 ? x : std::min(lo[d], x);
-          hi[d] = a == 0 ? x : std::max(hi[d], x);
-        }
-      }
-      double h = 0.0;
-      for (int d = 0; d < dim; ++d) h = std::max(h, hi[d] - lo[d]);
-      const double tolerance = 1e-10 * std::pow(h, dim);
-      for (const int degree : degrees) {
-        double det_min = 0.0;
-        const bool finite = min_jacobian_determinant(block.topology, dim, X, degree, det_min);
-        if (!finite) throw InputError(where() + "a node coordinate is not a finite number");
-        if (det_min > tolerance) continue;
-        std::ostringstream text;
-        text << where()
-             << (det_min < -tolerance ? "inverted (det J = " : "degenerate (zero volume, det J = ")
-             << det_min << " at a point of the "
-             << (degree == degrees[0] ? "stiffness" : "mass matrix's") << " Gauss rule of degree "
-             << degree << "; check the node order and coordinates)";
-        throw InputError(text.str());
-      }
+      });
     }
   }
 }
 
 }  // namespace
+
+void check_element_geometry(Topology topology, int dim, const double* X, const GlobalIndex* nodes,
+                            const std::function<std::string()>& where) {
+  if (dim != 2 && dim != 3) return;  // refused by the reader
+  const int npe = topology_num_nodes(topology);
+  const int degrees[2] = {full_integration_degree(topology), mass_integration_degree(topology)};
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  for (int a = 0; a < npe; ++a) {
+    for (int d = 0; d < dim; ++d) {
+      const double x = X[a * dim + d];
+      if (!std::isfinite(x) || std::abs(x) > max_coordinate) {
+        std::ostringstream text;
+        text << where()
+             << (std::isfinite(x) ? "a node coordinate is out of range"
+                                  : "a node coordinate is not a finite number")
+             << " (node " << nodes[a] + 1 << ", "
+             << "xyz"[d] << " = " << x;
+        if (std::isfinite(x)) text << "; at most " << max_coordinate << " in magnitude";
+        text << ")";
+        throw InputError(text.str());
+      }
+      lo[d] = a == 0 ? x : std::min(lo[d], x);
+      hi[d] = a == 0 ? x : std::max(hi[d], x);
+    }
+  }
+  double h = 0.0;
+  for (int d = 0; d < dim; ++d) h = std::max(h, hi[d] - lo[d]);
+  const double tolerance = 1e-10 * std::pow(h, dim);
+  for (const int degree : degrees) {
+    double det_min = 0.0;
+    const bool finite = min_jacobian_determinant(topology, dim, X, degree, det_min);
+    if (!finite) throw InputError(where() + "a node coordinate is not a finite number");
+    if (det_min > tolerance) continue;
+    std::ostringstream text;
+    text << where()
+         << (det_min < -tolerance ? "inverted (det J = " : "degenerate (zero volume, det J = ")
+         << det_min << " at a point of the "
+         << (degree == degrees[0] ? "stiffness" : "mass matrix's") << " Gauss rule of degree "
+         << degree << "; check the node order and coordinates)";
+    throw InputError(text.str());
+  }
+}
 
 void check_mesh(const Mesh& mesh) {
   check_unique(mesh, mesh.blocks, "element block");

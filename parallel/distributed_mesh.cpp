@@ -1,0 +1,232 @@
+// read_distributed_mesh (parallel/distributed_mesh.hpp): slices, centroids, partition,
+// migration, checks; and the DistributedMesh look-ups and holdings report.
+
+#include "parallel/distributed_mesh.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_TimeMonitor.hpp>
+#include <algorithm>
+#include <cstdio>
+#include <optional>
+#include <set>
+
+#include "assembly/agree_on_errors.hpp"
+#include "io/errors.hpp"
+#include "parallel/directory.hpp"
+#include "parallel/element_partition.hpp"
+#include "parallel/migrate_mesh.hpp"
+#include "parallel/slices.hpp"
+
+namespace grout {
+
+namespace {
+
+/// Coordinates (3 per node, unused components 0) of the sorted global `nodes`, from their
+/// homes' node slices.
+std::vector<double> fetch_coordinates(const Comm& comm, const MeshHeader& h, const MeshSlices& s,
+                                      const std::vector<GlobalIndex>& nodes) {
+  const DirectoryQuestions q = ask_homes(comm, h.num_nodes, nodes);
+  std::vector<std::vector<double>> replies(std::size_t(comm.getSize()));
+  for (std::size_t r = 0, at = 0; r < replies.size(); ++r)
+    for (int i = 0; i < q.counts[r]; ++i, ++at)
+      for (int d = 0; d < 3; ++d)
+        replies[r].push_back(
+            d < h.dimension
+                ? s.coordinates[std::size_t((q.ids[at] - s.node_begin) * h.dimension + d)]
+                : 0.0);
+  return answer(comm, replies);
+}
+
+/// check_mesh's element test on the slice elements (before the partition: a non-finite
+/// coordinate would make the centroids meaningless), and their centroids.
+std::vector<double> check_and_centroids(const MeshHeader& h, const MeshSlices& s,
+                                        const std::vector<GlobalIndex>& nodes,
+                                        const std::vector<double>& x) {
+  std::vector<double> centroids(std::size_t(3 * s.num_elements()), 0.0);
+  const int dim = h.dimension;
+  for (GlobalIndex e = 0; e < s.num_elements(); ++e) {
+    const ElementBlock& block = h.blocks[std::size_t(s.element_block[e])];
+    const GlobalIndex* conn = s.element_nodes.data() + s.element_nodes_offset[e];
+    double X[max_element_nodes * 3];
+    for (int a = 0; a < block.nodes_per_element; ++a) {
+      const auto i =
+          std::size_t(std::lower_bound(nodes.begin(), nodes.end(), conn[a]) - nodes.begin());
+      for (int d = 0; d < dim; ++d) {
+        X[a * dim + d] = x[3 * i + d];
+        centroids[std::size_t(3 * e + d)] += x[3 * i + d] / block.nodes_per_element;
+      }
+    }
+    const GlobalIndex gid = s.element_begin + e;
+    check_element_geometry(block.topology, dim, X, conn, [&] {
+      return "mesh '" + h.file + "': block '" + block.name + "', element " +
+             std::to_string(gid - block.first_element + 1) + " (global element " +
+             std::to_string(gid + 1) + "): ";
+    });
+  }
+  return centroids;
+}
+
+/// The indices of the contact side sets among the header's side sets.
+std::vector<std::size_t> contact_sets(const MeshHeader& h, const DistributionOptions& options) {
+  std::vector<std::size_t> sets;
+  if (options.contact_weight == 0.0 && !options.balance_contact) return sets;
+  for (const std::string& name : options.contact_side_sets) {
+    std::size_t k = 0;
+    while (k < h.side_sets.size() && h.side_sets[k].name != name &&
+           name != "id_" + std::to_string(h.side_sets[k].id))
+      ++k;
+    if (k == h.side_sets.size())
+      throw InputError("mesh '" + h.file + "': no side set '" + name + "' (contact surface)");
+    sets.push_back(k);
+  }
+  return sets;
+}
+
+/// Collective. Weight 1 per slice element, 1 + contact_weight for an element with a face in
+/// one of the side sets `sets`; with `two`, two weights per element: 1, and 1 on those
+/// elements (0 elsewhere).
+std::vector<double> element_weights(const Comm& comm, const MeshHeader& h, const MeshSlices& s,
+                                    const std::vector<std::size_t>& sets, double contact_weight,
+                                    bool two) {
+  const std::size_t stride = two ? 2 : 1;
+  std::vector<double> weights(std::size_t(s.num_elements()) * stride, 1.0);
+  if (two)
+    for (std::size_t i = 1; i < weights.size(); i += 2) weights[i] = 0.0;
+  std::vector<std::vector<long long>> marks(std::size_t(comm.getSize()));
+  for (std::size_t k : sets)
+    for (GlobalIndex e : s.side_set_elements[k])
+      marks[std::size_t(slice_rank(h.num_elements, e, comm.getSize()))].push_back(e);
+  for (long long e : send_to_ranks(comm, marks)) {
+    const std::size_t i = std::size_t(e - s.element_begin) * stride;
+    if (two)
+      weights[i + 1] = 1.0;
+    else
+      weights[i] = 1.0 + contact_weight;
+  }
+  return weights;
+}
+
+/// check_mesh's set tests on the owned entities (every entry of an owned entity is here):
+/// no node twice in a node set, no (element, side) twice in a side set.
+void check_sets(const DistributedMesh& m) {
+  const std::string& file = m.local.file;
+  for (const NodeSet& set : m.local.node_sets) {
+    std::set<GlobalIndex> seen;
+    for (GlobalIndex n : set.nodes)
+      if (m.owns_node(n) && !seen.insert(n).second)
+        throw InputError("mesh '" + file + "': node set '" + set.name + "' lists node " +
+                         std::to_string(m.node_gid[n] + 1) +
+                         " twice (reactions would count it twice)");
+  }
+  for (const SideSet& set : m.local.side_sets) {
+    std::set<std::pair<GlobalIndex, int>> seen;
+    for (std::size_t i = 0; i < set.elements.size(); ++i)
+      if (m.owns_element(set.elements[i]) && !seen.emplace(set.elements[i], set.sides[i]).second)
+        throw InputError("mesh '" + file + "': side set '" + set.name + "' lists side " +
+                         std::to_string(set.sides[i]) + " of element " +
+                         std::to_string(m.element_gid[set.elements[i]] + 1) +
+                         " twice (its load or contact terms would count twice)");
+  }
+}
+
+}  // namespace
+
+GlobalIndex DistributedMesh::num_owned_elements() const {
+  GlobalIndex n = 0;
+  for (GlobalIndex k : num_owned_in_block) n += k;
+  return n;
+}
+
+GlobalIndex DistributedMesh::local_node(GlobalIndex gid) const {
+  const auto find = [&](auto begin, auto end) -> GlobalIndex {
+    const auto it = std::lower_bound(begin, end, gid);
+    return it != end && *it == gid ? GlobalIndex(it - node_gid.begin()) : -1;
+  };
+  const GlobalIndex owned = find(node_gid.begin(), node_gid.begin() + num_owned_nodes);
+  return owned >= 0 ? owned : find(node_gid.begin() + num_owned_nodes, node_gid.end());
+}
+
+GlobalIndex DistributedMesh::local_element(GlobalIndex gid) const {
+  for (std::size_t b = 0; b < local.blocks.size(); ++b) {
+    if (gid < block_global_first[b] || gid >= block_global_first[b] + block_global_size[b])
+      continue;
+    const auto first = element_gid.begin() + local.blocks[b].first_element;
+    const auto mid = first + num_owned_in_block[b], last = first + local.blocks[b].num_elements();
+    for (const auto& [begin, end] : {std::make_pair(first, mid), std::make_pair(mid, last)}) {
+      const auto it = std::lower_bound(begin, end, gid);
+      if (it != end && *it == gid) return GlobalIndex(it - element_gid.begin());
+    }
+    return -1;
+  }
+  return -1;
+}
+
+DistributedMesh read_distributed_mesh(const Comm& comm, const std::string& path,
+                                      const DistributionOptions& options) {
+  using Teuchos::TimeMonitor;
+  static const auto read_time = TimeMonitor::getNewTimer("grout: distributed mesh: read slices");
+  static const auto partition_time = TimeMonitor::getNewTimer("grout: distributed mesh: partition");
+  static const auto migrate_time = TimeMonitor::getNewTimer("grout: distributed mesh: migrate");
+  std::optional<TimeMonitor> timer(std::in_place, *read_time);
+  const MeshHeader header = read_mesh_header(comm, path);
+  const MeshSlices slices = read_mesh_slices(comm, header);
+  timer.emplace(*partition_time);
+  std::vector<int> part;
+  {
+    const std::vector<GlobalIndex> nodes = slice_element_nodes(slices);
+    const std::vector<double> x = fetch_coordinates(comm, header, slices, nodes);
+    std::vector<double> centroids;
+    std::vector<std::size_t> sets;
+    agree_on_errors(comm, [&] {
+      centroids = check_and_centroids(header, slices, nodes, x);
+      sets = contact_sets(header, options);
+    });
+    const std::vector<double> weights = element_weights(
+        comm, header, slices, sets, options.contact_weight, options.balance_contact);
+    std::vector<GlobalIndex> ids(std::size_t(slices.num_elements()));
+    for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = slices.element_begin + GlobalIndex(i);
+    part = partition_elements_rcb(comm, header.dimension, ids, centroids, weights,
+                                  options.balance_contact ? 2 : 1, comm.getSize());
+  }
+  timer.emplace(*migrate_time);
+  DistributedMesh mesh = migrate_mesh(comm, header, slices, part);
+  agree_on_errors(comm, [&] { check_sets(mesh); });
+  return mesh;
+}
+
+MeshHoldings mesh_holdings(const DistributedMesh& m) {
+  MeshHoldings h;
+  h.owned_nodes = m.num_owned_nodes;
+  h.ghost_nodes = m.num_local_nodes() - m.num_owned_nodes;
+  h.owned_elements = m.num_owned_elements();
+  h.ghost_elements = m.num_local_elements() - h.owned_elements;
+  for (const SideSet& set : m.local.side_sets)
+    for (GlobalIndex e : set.elements) h.owned_side_set_entries += m.owns_element(e);
+  return h;
+}
+
+std::string describe_holdings(const Comm& comm, const DistributedMesh& m) {
+  const MeshHoldings mine = mesh_holdings(m);
+  const long long local[5] = {mine.owned_nodes, mine.ghost_nodes, mine.owned_elements,
+                              mine.ghost_elements, mine.owned_side_set_entries};
+  std::vector<long long> all(std::size_t(5 * comm.getSize()));
+  Teuchos::gatherAll(comm, 5, local, int(all.size()), all.data());
+  if (comm.getRank() != 0) return {};
+  std::string text;
+  const auto percent = [](long long a, long long b) {
+    return b > 0 ? 100.0 * double(a) / double(b) : 0.0;
+  };
+  for (int r = 0; r < comm.getSize(); ++r) {
+    const long long* c = all.data() + 5 * r;
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "mesh on rank %d: nodes %lld owned + %lld ghost (%.1f %% of %lld), elements "
+                  "%lld owned + %lld ghost (%.1f %% of %lld), side-set faces %lld owned\n",
+                  r, c[0], c[1], percent(c[0] + c[1], m.global_num_nodes), m.global_num_nodes, c[2],
+                  c[3], percent(c[2] + c[3], m.global_num_elements), m.global_num_elements, c[4]);
+    text += line;
+  }
+  return text;
+}
+
+}  // namespace grout

@@ -1,0 +1,129 @@
+// grout_mesh_probe: reads a mesh as the distributed mesh (default) or as the replicated mesh
+// (--replicated: read on rank 0 and broadcast), and prints what each rank holds, the time of
+// each step and each rank's peak resident memory. Exit code 2 for a bad mesh, on every rank.
+//
+//   grout_mesh_probe mesh.exo [--replicated] [--timers] [--contact <side set> ...]
+//   [--contact-weight w] [--balance-contact]
+
+#include <sys/resource.h>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultComm.hpp>
+#include <Teuchos_TimeMonitor.hpp>
+#include <Tpetra_Core.hpp>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+#include "assembly/agree_on_errors.hpp"
+#include "assembly/distribute_mesh.hpp"
+#include "drivers/mpi_startup.hpp"
+#include "io/errors.hpp"
+#include "io/exodus.hpp"
+#include "parallel/distributed_mesh.hpp"
+
+namespace {
+
+double peak_rss_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.0;  // KiB on Linux
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  grout::prefer_local_mpi_startup();
+  Tpetra::ScopeGuard tpetra(&argc, &argv);
+  const auto comm = Tpetra::getDefaultComm();
+  const bool root = comm->getRank() == 0;
+  std::string path;
+  bool replicated = false, timers = false;
+  grout::DistributionOptions options;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--replicated") {
+      replicated = true;
+    } else if (arg == "--timers") {
+      timers = true;
+    } else if (arg == "--contact" && i + 1 < argc) {
+      options.contact_side_sets.push_back(argv[++i]);
+    } else if (arg == "--balance-contact") {
+      options.balance_contact = true;
+    } else if (arg == "--contact-weight" && i + 1 < argc) {
+      options.contact_weight = std::atof(argv[++i]);
+    } else if (path.empty() && arg.rfind("-", 0) != 0) {
+      path = arg;
+    } else {
+      if (root)
+        std::fprintf(stderr, "grout_mesh_probe: error: unexpected argument '%s'\n", argv[i]);
+      return 2;
+    }
+  }
+  if (path.empty()) {
+    if (root)
+      std::fprintf(stderr,
+                   "usage: grout_mesh_probe mesh.exo [--replicated] [--contact <side set>]"
+                   " [--contact-weight w] [--balance-contact]\n");
+    return 2;
+  }
+  try {
+    const double start_rss = peak_rss_mb();
+    comm->barrier();
+    const auto t0 = std::chrono::steady_clock::now();
+    std::string text;
+    grout::agree_on_errors(*comm, [&] {
+      if (replicated) {
+        const grout::Mesh mesh = grout::read_and_broadcast_mesh(*comm, [&] {
+          grout::Mesh m = grout::read_exodus(path);
+          grout::check_mesh(m);
+          return m;
+        });
+        if (root)
+          text = "mesh on every rank: " + std::to_string(mesh.num_nodes()) + " nodes, " +
+                 std::to_string(mesh.num_elements()) + " elements\n";
+      } else {
+        const grout::DistributedMesh mesh = grout::read_distributed_mesh(*comm, path, options);
+        text = grout::describe_holdings(*comm, mesh);
+        // Contact balance: faces of each contact side set and owned dofs (nodes x dimension)
+        // per rank.
+        for (const std::string& name : options.contact_side_sets) {
+          const grout::SideSet* set = mesh.local.find_side_set(name);
+          long long mine[2] = {0, mesh.num_owned_nodes * mesh.local.dimension};
+          if (set)
+            for (grout::GlobalIndex e : set->elements) mine[0] += mesh.owns_element(e);
+          std::vector<long long> all(std::size_t(2 * comm->getSize()));
+          Teuchos::gatherAll(*comm, 2, mine, int(all.size()), all.data());
+          for (int r = 0; r < comm->getSize(); ++r)
+            text += "balance rank " + std::to_string(r) + ": side set '" + name + "' faces " +
+                    std::to_string(all[2 * r]) + ", owned dofs " + std::to_string(all[2 * r + 1]) +
+                    "\n";
+        }
+      }
+    });
+    comm->barrier();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double rss[2] = {start_rss, peak_rss_mb()};
+    std::vector<double> all(std::size_t(2 * comm->getSize()));
+    Teuchos::gatherAll(*comm, 2, rss, int(all.size()), all.data());
+    if (root) {
+      std::printf("%s", text.c_str());
+      std::printf("%s read on %d rank(s): %.3f s\n", replicated ? "replicated" : "distributed",
+                  comm->getSize(), seconds);
+      for (int r = 0; r < comm->getSize(); ++r)
+        std::printf("peak RSS rank %d: %.1f MB (%.1f MB before reading)\n", r, all[2 * r + 1],
+                    all[2 * r]);
+    }
+    if (timers) Teuchos::TimeMonitor::summarize(comm.ptr(), std::cout, false, true, false);
+    return 0;
+  } catch (const grout::ErrorOnOtherRank& e) {
+    return e.exit_code();
+  } catch (...) {
+    const std::exception_ptr error = std::current_exception();
+    std::fprintf(stderr, "grout_mesh_probe: error: %s\n", grout::message_of(error).c_str());
+    return grout::exit_code_of(error);
+  }
+}
