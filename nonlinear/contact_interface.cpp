@@ -1,6 +1,7 @@
 #include "nonlinear/contact_interface.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
+#include <algorithm>
 #include <limits>
 
 #include "assembly/contact_distribution.hpp"
@@ -47,6 +48,7 @@ ContactInterface::ContactInterface(const Mesh& mesh, const Input& input, const C
   }
   const int n_owned = int(owned_.size());
   num_multipliers_ = GO(all_slave.size()) * dim_;
+  if (ci.self) self_faces_ = GlobalIndex(mesh.find_side_set(ci.slave)->elements.size());
 
   const double E1 = youngs_modulus_of(input, mesh, ci.slave, ci);
   const double E2 = youngs_modulus_of(input, mesh, ci.master, ci);
@@ -121,6 +123,7 @@ void ContactInterface::set_base_map(const Teuchos::RCP<const Map>& base_map) {
   // D, M and normals once, at zero displacement.
   ghost_master_faces(nullptr, nullptr);
   std::vector<std::array<double, 3>> X = X_;
+  if (input_.self) choose_self_sides(X, nullptr);
   ContactMortarOptions reference_options = options_;
   reference_options.derivatives = false;
   reference_ = evaluate_contact_mortar(surface_, X, reference_options);
@@ -228,6 +231,13 @@ void ContactInterface::update_geometry(const Vector& u_base, const Vector& u_old
   positions_.assign(n_nodes, {0.0, 0.0, 0.0});
   for (std::size_t i = 0; i < n_nodes; ++i)
     for (int d = 0; d < dim; ++d) positions_[i][d] = X_[i][d] + u_[i][d];
+  if (input_.self && choose_sides_) {
+    if (current_geometry_)
+      choose_self_sides(positions_, nullptr);
+    else
+      choose_self_sides(X_, &positions_);
+    choose_sides_ = false;
+  }
   if (!current_geometry_) {
     // Integrated on the reference positions, paired on the reference and current ones: the
     // integration again only when the pairing changed.
@@ -269,6 +279,26 @@ void ContactInterface::update_geometry(const Vector& u_base, const Vector& u_old
     }
     rows_of(m, last_rows_);
   }
+}
+
+// Self-contact sides (docs/input.md "Self-contact"): the candidate pairs of every rank (the
+// search's self filters: no shared node, facing normals) gathered, then 2-coloured in face-id
+// order (self_contact_sides), so the choice is the same on any number of ranks.
+void ContactInterface::choose_self_sides(const std::vector<std::array<double, 3>>& x,
+                                         const std::vector<std::array<double, 3>>* search_x) {
+  ContactMortarOptions search_options = options_;
+  search_options.derivatives = false;
+  surface_.self_side.clear();  // every facing, non-neighbouring pair
+  std::vector<long long> mine;
+  for (const auto& [f, g] : contact_pairs(surface_, x, search_options, search_x)) {
+    mine.push_back(f);
+    mine.push_back(g);
+  }
+  int n_ranks = 1;
+  MPI_Comm_size(raw_comm_, &n_ranks);
+  const std::vector<long long> all =
+      exchange_with_ranks(std::vector<std::vector<long long>>(n_ranks, mine), raw_comm_);
+  surface_.self_side = self_contact_sides(self_faces_, all);
 }
 
 double ContactInterface::local_max_D() const {
