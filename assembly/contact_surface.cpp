@@ -203,7 +203,8 @@ void for_each_side(const Mesh& mesh, const std::string& set_name, Visit visit) {
 }  // namespace
 
 std::vector<signed char> self_contact_sides(GlobalIndex n_faces,
-                                            const std::vector<long long>& pairs) {
+                                            const std::vector<long long>& pairs,
+                                            const std::vector<signed char>& keep) {
   std::vector<std::vector<GlobalIndex>> neighbours(n_faces);
   for (std::size_t k = 0; k + 1 < pairs.size(); k += 2) {
     neighbours[pairs[k]].push_back(pairs[k + 1]);
@@ -215,10 +216,7 @@ std::vector<signed char> self_contact_sides(GlobalIndex n_faces,
   }
   std::vector<signed char> side(n_faces, -1);
   std::vector<GlobalIndex> queue;
-  for (GlobalIndex start = 0; start < n_faces; ++start) {
-    if (side[start] >= 0 || neighbours[start].empty()) continue;
-    side[start] = 1;
-    queue.assign(1, start);
+  const auto spread = [&] {  // breadth-first from the faces in the queue
     for (std::size_t head = 0; head < queue.size(); ++head) {
       const GlobalIndex f = queue[head];
       for (GlobalIndex g : neighbours[f]) {
@@ -227,6 +225,18 @@ std::vector<signed char> self_contact_sides(GlobalIndex n_faces,
         queue.push_back(g);
       }
     }
+  };
+  if (GlobalIndex(keep.size()) == n_faces) {
+    side = keep;  // kept; their new partners first, from the kept faces in ascending id
+    for (GlobalIndex f = 0; f < n_faces; ++f)
+      if (side[f] >= 0) queue.push_back(f);
+    spread();
+  }
+  for (GlobalIndex start = 0; start < n_faces; ++start) {
+    if (side[start] >= 0 || neighbours[start].empty()) continue;
+    side[start] = 1;
+    queue.assign(1, start);
+    spread();
   }
   return side;
 }

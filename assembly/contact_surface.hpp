@@ -84,9 +84,12 @@ void set_master_faces(ContactSurface& s, SurfaceFaces master);
 /// its lowest face id, which is a slave face (1), its partners master faces (0), theirs slave
 /// faces, and so on (neighbours visited in ascending id). Faces of no pair: −1. An odd cycle
 /// leaves a pair on one side (dropped by the search). The same pairs in any order give the
-/// same sides.
+/// same sides. `keep` (n_faces values, or empty): sides chosen before, kept as they are; the
+/// search spreads from them (in ascending id) to their new partners before it colours the
+/// components with no kept face.
 std::vector<signed char> self_contact_sides(GlobalIndex n_faces,
-                                            const std::vector<long long>& pairs);
+                                            const std::vector<long long>& pairs,
+                                            const std::vector<signed char>& keep = {});
 
 /// Mean longest edge of the faces of a side set, summed in side-set order (the same value on
 /// every rank of a replicated mesh); 0 if there is no such set.

@@ -231,7 +231,7 @@ void ContactInterface::update_geometry(const Vector& u_base, const Vector& u_old
   positions_.assign(n_nodes, {0.0, 0.0, 0.0});
   for (std::size_t i = 0; i < n_nodes; ++i)
     for (int d = 0; d < dim; ++d) positions_[i][d] = X_[i][d] + u_[i][d];
-  if (input_.self && choose_sides_) {
+  if (input_.self) {
     if (current_geometry_)
       choose_self_sides(positions_, nullptr);
     else
@@ -283,11 +283,15 @@ void ContactInterface::update_geometry(const Vector& u_base, const Vector& u_old
 
 // Self-contact sides (docs/input.md "Self-contact"): the candidate pairs of every rank (the
 // search's self filters: no shared node, facing normals) gathered, then 2-coloured in face-id
-// order (self_contact_sides), so the choice is the same on any number of ranks.
+// order (self_contact_sides), so the choice is the same on any number of ranks. Afresh at the
+// first evaluation of a step; at the others the step's sides are kept and only faces newly in
+// reach get theirs.
 void ContactInterface::choose_self_sides(const std::vector<std::array<double, 3>>& x,
                                          const std::vector<std::array<double, 3>>* search_x) {
   ContactMortarOptions search_options = options_;
   search_options.derivatives = false;
+  std::vector<signed char> keep;  // within a step: the sides chosen so far
+  if (!choose_sides_) keep = std::move(surface_.self_side);
   surface_.self_side.clear();  // every facing, non-neighbouring pair
   std::vector<long long> mine;
   for (const auto& [f, g] : contact_pairs(surface_, x, search_options, search_x)) {
@@ -298,7 +302,7 @@ void ContactInterface::choose_self_sides(const std::vector<std::array<double, 3>
   MPI_Comm_size(raw_comm_, &n_ranks);
   const std::vector<long long> all =
       exchange_with_ranks(std::vector<std::vector<long long>>(n_ranks, mine), raw_comm_);
-  surface_.self_side = self_contact_sides(self_faces_, all);
+  surface_.self_side = self_contact_sides(self_faces_, all, keep);
 }
 
 double ContactInterface::local_max_D() const {

@@ -96,5 +96,17 @@ TEST(SelfContact, SidesColourEachComponentFromItsLowestFace) {
   EXPECT_EQ(self_contact_sides(9, mixed), sides);
 }
 
+TEST(SelfContact, SidesKeptWithinAStepSpreadToNewPartners) {
+  // Faces 1 (master) and 2 (slave) were chosen earlier in the step; faces 0 and 3 come into
+  // reach. A fresh choice would make 0 a slave face and flip 1 and 2; kept, 2's new partner
+  // 0 is a master face and 3, in no pair with a kept face, starts a component of its own.
+  const std::vector<long long> pairs = {0, 2, 1, 2, 3, 4};
+  const std::vector<signed char> fresh = {1, 1, 0, 1, 0};
+  EXPECT_EQ(self_contact_sides(5, pairs), fresh);
+  const std::vector<signed char> keep = {-1, 0, 1, -1, -1};
+  const std::vector<signed char> kept = {0, 0, 1, 1, 0};
+  EXPECT_EQ(self_contact_sides(5, pairs, keep), kept);
+}
+
 }  // namespace
 }  // namespace grout
