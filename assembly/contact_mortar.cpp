@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "kernels/coarse_search.hpp"
+#include "kernels/face_normal.hpp"
 #include "kernels/mortar_pair_gradient.hpp"
 #include "kernels/slave_frames.hpp"
 
@@ -64,6 +65,38 @@ void compress_gradient(SparseGradient& g) {
 
 namespace {
 
+// Self-contact filters of a candidate pair (slave face f, master face g of s), docs/input.md
+// "Self-contact": the faces share no node (a face never pairs with itself or a neighbour) ...
+bool shares_node(const ContactSurface& s, int f, int g) {
+  const auto& a = s.slave.nodes[f];
+  const auto& b = s.master.nodes[g];
+  for (int i = 0; i < s.slave.num_nodes[f]; ++i)
+    for (int j = 0; j < s.master.num_nodes[g]; ++j)
+      if (a[i] == b[j]) return true;
+  return false;
+}
+
+// ... their element normals face each other at positions x, n_f·n_g < 0 (the two flanks of a
+// fold pair, neighbours round a bend do not) ...
+bool faces_face(const ContactSurface& s, int f, int g,
+                const std::vector<std::array<double, 3>>& x) {
+  const auto normal = [&](const SurfaceFaces& faces, int i, double n[3]) {
+    double p[max_face_nodes][3] = {};
+    for (int a = 0; a < faces.num_nodes[i]; ++a)
+      for (int d = 0; d < 3; ++d) p[a][d] = x[position_of(s, faces.nodes[i][a])][d];
+    return face_normal(s.dimension, faces.num_nodes[i], p, n) == MortarStatus::ok;
+  };
+  double nf[3], ng[3];
+  if (!normal(s.slave, f, nf) || !normal(s.master, g, ng)) return false;
+  return nf[0] * ng[0] + nf[1] * ng[1] + nf[2] * ng[2] < 0.0;
+}
+
+// ... and f lies on the slave side, g on the master side of the step's choice (s.self_side).
+bool on_sides(const ContactSurface& s, int f, int g) {
+  if (s.self_side.empty()) return true;
+  return s.self_side[s.slave.ids[f]] == 1 && s.self_side[s.master.ids[g]] == 0;
+}
+
 // The slave faces evaluated (surface.integrate) and, per evaluated face, its candidate master
 // faces (indices into s.master, ascending): a coarse search on x, together with one on
 // search_x when given.
@@ -90,9 +123,19 @@ Candidates find_candidates(const ContactSurface& s, const std::vector<std::array
   };
   search_on(x);
   if (search_x) search_on(*search_x);
-  for (auto& m : c.masters) {
+  for (std::size_t k = 0; k < c.evaluated.size(); ++k) {
+    auto& m = c.masters[k];
     std::sort(m.begin(), m.end());
     m.erase(std::unique(m.begin(), m.end()), m.end());
+    if (!s.self) continue;
+    const int f = c.evaluated[k];
+    m.erase(std::remove_if(m.begin(), m.end(),
+                           [&](int g) {
+                             const bool facing = faces_face(s, f, g, x) ||
+                                                 (search_x && faces_face(s, f, g, *search_x));
+                             return !facing || shares_node(s, f, g) || !on_sides(s, f, g);
+                           }),
+            m.end());
   }
   return c;
 }

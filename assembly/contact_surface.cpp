@@ -106,17 +106,20 @@ ContactSurface build_contact_surface(const Mesh& mesh, const Input& input,
   s.name = contact.name;
   s.type = contact.type;
   s.dimension = mesh.dimension;
-  s.slave = faces_of(mesh, input, contact, "slave", contact.slave);
-  s.master = faces_of(mesh, input, contact, "master", contact.master);
-  check_bodies(mesh, input, contact, s.slave, s.master);
+  s.self = contact.self;
+  s.slave = faces_of(mesh, input, contact, contact.self ? "self" : "slave", contact.slave);
+  s.master = faces_of(mesh, input, contact, contact.self ? "self" : "master", contact.master);
+  if (!contact.self) check_bodies(mesh, input, contact, s.slave, s.master);
   index_slave_nodes(s);
 
   const std::vector<GlobalIndex> master_nodes = unique_nodes(s.master);
   for (GlobalIndex n : master_nodes) {
-    if (s.slave_index.count(n)) throw InputError(shared_node_message(input, contact, n));
+    if (!contact.self && s.slave_index.count(n))
+      throw InputError(shared_node_message(input, contact, n));
   }
   std::merge(s.slave_nodes.begin(), s.slave_nodes.end(), master_nodes.begin(), master_nodes.end(),
              std::back_inserter(s.nodes));
+  s.nodes.erase(std::unique(s.nodes.begin(), s.nodes.end()), s.nodes.end());
   return s;
 }
 
@@ -126,9 +129,14 @@ LocalContactFaces build_local_contact_surface(const Mesh& mesh, const Input& inp
   LocalContactFaces local;
   ContactSurface& s = local.surface;
   // The whole surfaces (the mesh is replicated, so every rank finds the same answer).
-  check_bodies(mesh, input, contact, faces_of(mesh, input, contact, "slave", contact.slave),
-               faces_of(mesh, input, contact, "master", contact.master));
+  const char* const slave_key = contact.self ? "self" : "slave";
+  if (contact.self)
+    faces_of(mesh, input, contact, slave_key, contact.slave);  // exists, not empty
+  else
+    check_bodies(mesh, input, contact, faces_of(mesh, input, contact, "slave", contact.slave),
+                 faces_of(mesh, input, contact, "master", contact.master));
   s.name = contact.name;
+  s.self = contact.self;
   s.type = contact.type;
   s.dimension = mesh.dimension;
   const auto has_owned = [&](const GlobalIndex* nodes, int n) {
@@ -138,20 +146,21 @@ LocalContactFaces build_local_contact_surface(const Mesh& mesh, const Input& inp
   };
   // Nodes of the faces with an owned node; then every face touching one of them.
   const std::vector<GlobalIndex> near =
-      unique_nodes(faces_of(mesh, input, contact, "slave", contact.slave, has_owned));
-  s.slave =
-      faces_of(mesh, input, contact, "slave", contact.slave, [&](const GlobalIndex* nodes, int n) {
-        for (int a = 0; a < n; ++a)
-          if (std::binary_search(near.begin(), near.end(), nodes[a])) return true;
-        return false;
-      });
+      unique_nodes(faces_of(mesh, input, contact, slave_key, contact.slave, has_owned));
+  s.slave = faces_of(mesh, input, contact, slave_key, contact.slave,
+                     [&](const GlobalIndex* nodes, int n) {
+                       for (int a = 0; a < n; ++a)
+                         if (std::binary_search(near.begin(), near.end(), nodes[a])) return true;
+                       return false;
+                     });
   s.integrate.resize(s.slave.size());
   for (std::size_t f = 0; f < s.slave.size(); ++f)
     s.integrate[f] = has_owned(s.slave.nodes[f].data(), s.slave.num_nodes[f]);
   index_slave_nodes(s);
   local.owned_master = faces_of(mesh, input, contact, "master", contact.master,
                                 [&](const GlobalIndex* nodes, int n) {
-                                  for (int a = 0; a < n; ++a) {  // an owned slave node?
+                                  for (int a = 0; a < n && !contact.self; ++a) {
+                                    // an owned slave node?
                                     if (!owns(nodes[a]) || !s.slave_index.count(nodes[a])) continue;
                                     if (local.shared_node < 0 || nodes[a] < local.shared_node)
                                       local.shared_node = nodes[a];
@@ -192,6 +201,45 @@ void for_each_side(const Mesh& mesh, const std::string& set_name, Visit visit) {
 }
 
 }  // namespace
+
+std::vector<signed char> self_contact_sides(GlobalIndex n_faces,
+                                            const std::vector<long long>& pairs,
+                                            const std::vector<signed char>& keep) {
+  std::vector<std::vector<GlobalIndex>> neighbours(n_faces);
+  for (std::size_t k = 0; k + 1 < pairs.size(); k += 2) {
+    neighbours[pairs[k]].push_back(pairs[k + 1]);
+    neighbours[pairs[k + 1]].push_back(pairs[k]);
+  }
+  for (auto& n : neighbours) {
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
+  }
+  std::vector<signed char> side(n_faces, -1);
+  std::vector<GlobalIndex> queue;
+  const auto spread = [&] {  // breadth-first from the faces in the queue
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const GlobalIndex f = queue[head];
+      for (GlobalIndex g : neighbours[f]) {
+        if (side[g] >= 0) continue;
+        side[g] = static_cast<signed char>(1 - side[f]);
+        queue.push_back(g);
+      }
+    }
+  };
+  if (GlobalIndex(keep.size()) == n_faces) {
+    side = keep;  // kept; their new partners first, from the kept faces in ascending id
+    for (GlobalIndex f = 0; f < n_faces; ++f)
+      if (side[f] >= 0) queue.push_back(f);
+    spread();
+  }
+  for (GlobalIndex start = 0; start < n_faces; ++start) {
+    if (side[start] >= 0 || neighbours[start].empty()) continue;
+    side[start] = 1;
+    queue.assign(1, start);
+    spread();
+  }
+  return side;
+}
 
 double face_size(const Mesh& mesh, const GlobalIndex* nodes, int n) {
   const int dim = mesh.dimension;

@@ -36,6 +36,12 @@ struct ContactSurface {
   /// Per slave face: 1 if its (slave, master) pairs are evaluated. Empty: every face. The
   /// D, M and frames of a slave node are complete if all its faces are evaluated.
   std::vector<char> integrate;
+  /// Self-contact (slave and master faces from one side set, `ids` comparable): the coarse
+  /// search drops a pair of faces that share a node or whose normals do not face each other.
+  bool self = false;
+  /// Self-contact: per face of the side set (by id), 1 = slave side, 0 = master side, −1 =
+  /// neither; only (slave side, master side) pairs are kept. Empty: no side filter.
+  std::vector<signed char> self_side;
 };
 
 /// Faces of the side sets `contact.slave` and `contact.master`. Throws InputError naming the
@@ -71,6 +77,19 @@ void set_slave_faces(ContactSurface& s, SurfaceFaces slave);
 
 /// Sets the master faces of `s` (ascending ids) and its node list (slave and master nodes).
 void set_master_faces(ContactSurface& s, SurfaceFaces master);
+
+/// Self-contact sides (docs/input.md "Self-contact"): `pairs` holds candidate pairs of faces
+/// (ids in [0, n_faces), two values per pair, in any order, repeats allowed). The faces and
+/// pairs form a graph; each connected component is 2-coloured by a breadth-first search from
+/// its lowest face id, which is a slave face (1), its partners master faces (0), theirs slave
+/// faces, and so on (neighbours visited in ascending id). Faces of no pair: −1. An odd cycle
+/// leaves a pair on one side (dropped by the search). The same pairs in any order give the
+/// same sides. `keep` (n_faces values, or empty): sides chosen before, kept as they are; the
+/// search spreads from them (in ascending id) to their new partners before it colours the
+/// components with no kept face.
+std::vector<signed char> self_contact_sides(GlobalIndex n_faces,
+                                            const std::vector<long long>& pairs,
+                                            const std::vector<signed char>& keep = {});
 
 /// Mean longest edge of the faces of a side set, summed in side-set order (the same value on
 /// every rank of a replicated mesh); 0 if there is no such set.

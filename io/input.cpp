@@ -287,8 +287,9 @@ std::vector<LoadInput> read_loads(const Section& grout, int dimension) {
 
 std::vector<ContactInput> read_contact(const Section& grout) {
   const std::vector<Key> keys = {
-      Key::string("slave").required(),
-      Key::string("master").required(),
+      Key::string("slave"),
+      Key::string("master"),
+      Key::string("self"),
       Key::choice("type", {"frictionless", "frictional", "tied"}, "contact type").required(),
       Key::number("friction_coefficient").at_least(0),
       Key::number("c_n").above(0),
@@ -302,8 +303,19 @@ std::vector<ContactInput> read_contact(const Section& grout) {
   for (const Section& s : grout.named_sections("contact", keys)) {
     ContactInput c;
     c.name = s.name();
-    c.slave = s.string("slave");
-    c.master = s.string("master");
+    // Self-contact: one side set is both surfaces; the slave and master faces are chosen
+    // per contacting region at each step (ContactInterface, docs/input.md).
+    if (s.has("self")) {
+      for (const char* other : {"slave", "master"})
+        if (s.has(other)) s.fail(other, "not with 'self' (a self-contact pair names one side set)");
+      c.self = true;
+      c.slave = c.master = s.string("self");
+    } else {
+      for (const char* side : {"slave", "master"})
+        if (!s.has(side)) s.fail(side, "missing required key (or 'self' for self-contact)");
+      c.slave = s.string("slave");
+      c.master = s.string("master");
+    }
     const std::string type = s.string("type");
     c.type = type == "frictional" ? ContactKind::frictional
              : type == "tied"     ? ContactKind::tied
@@ -334,6 +346,7 @@ std::vector<ContactInput> read_contact(const Section& grout) {
       c.geometry =
           s.string("geometry") == "current" ? ContactGeometry::current : ContactGeometry::reference;
     }
+    if (c.self && c.type == ContactKind::tied) s.fail("type", "self-contact cannot be tied");
     pairs.push_back(std::move(c));
   }
   return pairs;

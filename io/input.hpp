@@ -64,6 +64,9 @@ struct ContactInput {
   std::string name;
   std::string slave;   ///< side set
   std::string master;  ///< side set
+  /// `self: <side set>`: self-contact of one surface (slave = master = that side set; each
+  /// contacting region picks its slave and master faces, nonlinear/contact_interface.hpp).
+  bool self = false;
   ContactKind type = ContactKind::frictionless;
   double friction_coefficient = 0.0;  ///< only for frictional
   /// Complementarity parameters of the normal and tangential NCP functions; 0 = the default

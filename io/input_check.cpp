@@ -268,13 +268,17 @@ void check_input_against_mesh(const Input& input, const Mesh& mesh) {
   std::map<std::string, std::string> pair_of_slave;
   for (const ContactInput& c : input.contact) {
     const std::string key = "grout/contact/" + c.name;
-    check.side_set(key + "/slave", c.slave);
-    check.side_set(key + "/master", c.master);
+    if (c.self) {
+      check.side_set(key + "/self", c.slave);
+    } else {
+      check.side_set(key + "/slave", c.slave);
+      check.side_set(key + "/master", c.master);
+    }
     const auto [it, fresh] = pair_of_slave.emplace(mesh.find_side_set(c.slave)->name, c.name);
     if (!fresh) {
-      check.fail(key + "/slave", "side set '" + c.slave +
-                                     "' is already the slave of grout/contact/" + it->second +
-                                     " (a slave side belongs to one contact pair)");
+      check.fail(key + (c.self ? "/self" : "/slave"),
+                 "side set '" + c.slave + "' is already the slave of grout/contact/" + it->second +
+                     " (a slave side belongs to one contact pair)");
     }
   }
   check.boundary_faces();

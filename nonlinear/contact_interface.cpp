@@ -1,6 +1,7 @@
 #include "nonlinear/contact_interface.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
+#include <algorithm>
 #include <limits>
 
 #include "assembly/contact_distribution.hpp"
@@ -47,6 +48,7 @@ ContactInterface::ContactInterface(const Mesh& mesh, const Input& input, const C
   }
   const int n_owned = int(owned_.size());
   num_multipliers_ = GO(all_slave.size()) * dim_;
+  if (ci.self) self_faces_ = GlobalIndex(mesh.find_side_set(ci.slave)->elements.size());
 
   const double E1 = youngs_modulus_of(input, mesh, ci.slave, ci);
   const double E2 = youngs_modulus_of(input, mesh, ci.master, ci);
@@ -122,6 +124,7 @@ void ContactInterface::set_base_map(const Teuchos::RCP<const Map>& base_map) {
   // D, M and normals once, at zero displacement.
   ghost_master_faces(nullptr, nullptr);
   std::vector<std::array<double, 3>> X = X_;
+  if (input_.self) choose_self_sides(X, nullptr);
   ContactMortarOptions reference_options = options_;
   reference_options.derivatives = false;
   reference_ = evaluate_contact_mortar(surface_, X, reference_options);
@@ -229,6 +232,13 @@ void ContactInterface::update_geometry(const Vector& u_base, const Vector& u_old
   positions_.assign(n_nodes, {0.0, 0.0, 0.0});
   for (std::size_t i = 0; i < n_nodes; ++i)
     for (int d = 0; d < dim; ++d) positions_[i][d] = X_[i][d] + u_[i][d];
+  if (input_.self) {
+    if (current_geometry_)
+      choose_self_sides(positions_, nullptr);
+    else
+      choose_self_sides(X_, &positions_);
+    choose_sides_ = false;
+  }
   if (!current_geometry_) {
     // Integrated on the reference positions, paired on the reference and current ones: the
     // integration again only when the pairing changed.
@@ -286,6 +296,30 @@ void ContactInterface::build_stencil(const ContactMortar& m) {
       stencil_.push_back({it->first.second, position_of(it->first.second), &it->second});
     stencil_begin_[q + 1] = stencil_.size();
   }
+}
+
+// Self-contact sides (docs/input.md "Self-contact"): the candidate pairs of every rank (the
+// search's self filters: no shared node, facing normals) gathered, then 2-coloured in face-id
+// order (self_contact_sides), so the choice is the same on any number of ranks. Afresh at the
+// first evaluation of a step; at the others the step's sides are kept and only faces newly in
+// reach get theirs.
+void ContactInterface::choose_self_sides(const std::vector<std::array<double, 3>>& x,
+                                         const std::vector<std::array<double, 3>>* search_x) {
+  ContactMortarOptions search_options = options_;
+  search_options.derivatives = false;
+  std::vector<signed char> keep;  // within a step: the sides chosen so far
+  if (!choose_sides_) keep = std::move(surface_.self_side);
+  surface_.self_side.clear();  // every facing, non-neighbouring pair
+  std::vector<long long> mine;
+  for (const auto& [f, g] : contact_pairs(surface_, x, search_options, search_x)) {
+    mine.push_back(f);
+    mine.push_back(g);
+  }
+  int n_ranks = 1;
+  MPI_Comm_size(raw_comm_, &n_ranks);
+  const std::vector<long long> all =
+      exchange_with_ranks(std::vector<std::vector<long long>>(n_ranks, mine), raw_comm_);
+  surface_.self_side = self_contact_sides(self_faces_, all, keep);
 }
 
 double ContactInterface::local_max_D() const {

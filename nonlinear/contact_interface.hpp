@@ -63,8 +63,12 @@ class ContactInterface {
   /// (reference geometry only; collective).
   void set_base_map(const Teuchos::RCP<const Map>& base_map);
 
-  /// A new step: the active-set policy's per-step memory is reset.
-  void begin_step() { policy_.begin_step(); }
+  /// A new step: the active-set policy's per-step memory is reset; self-contact chooses its
+  /// slave and master faces afresh at the next update_geometry.
+  void begin_step() {
+    policy_.begin_step();
+    choose_sides_ = true;
+  }
   /// Stage 1 (collective): the master faces the slave faces can touch, and D, M, frames at
   /// the displacements u_base (and u_old_base, the last converged step) on the base map.
   void update_geometry(const Vector& u_base, const Vector& u_old_base);
@@ -104,6 +108,11 @@ class ContactInterface {
 
  private:
   void ghost_master_faces(const Vector* u_base, const Vector* u_old_base);
+  /// Self-contact (collective): the slave and master faces (surface_.self_side) from the
+  /// candidate pairs of all ranks at positions x (and search_x), docs/input.md "Self-contact";
+  /// afresh if choose_sides_, else keeping the sides chosen so far.
+  void choose_self_sides(const std::vector<std::array<double, 3>>& x,
+                         const std::vector<std::array<double, 3>>* search_x);
   GO lambda_gid(int q, int c) const { return lambda_offset_ + lambda_index_[q] * dim_ + c; }
   std::size_t position_of(GlobalIndex node) const;
   /// The owned slave nodes' mortar rows at positions in surface_.nodes (update_geometry).
@@ -129,6 +138,8 @@ class ContactInterface {
   double c_t_hat_ = 1.0;           ///< c_t: like ĉ unless the input sets it
   double hold_ = 0.0;              ///< Newton step's tangential hold per unit D_jj: κ E/h
   double D_tol_ = 0.0;             ///< D_jj at most this: the node has no master
+  bool choose_sides_ = true;       ///< self-contact: choose the sides afresh at the next evaluation
+  GlobalIndex self_faces_ = 0;     ///< self-contact: faces of the side set
   ActiveSetPolicy policy_;
   ContactMortarOptions options_;
   bool current_geometry_ = false;  ///< normals, D, M on the current configuration

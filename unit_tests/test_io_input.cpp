@@ -204,6 +204,42 @@ TEST(InputRead, MinimalInputGetsDefaults) {
   EXPECT_EQ(in.output.summary, dir + "/case.csv");
 }
 
+TEST(InputRead, SelfContactNamesOneSideSetForBothSides) {
+  const std::string path = write_file("self.yaml", minimal + R"yaml(  contact:
+    fold: {self: inner, type: frictionless}
+    pair: {slave: a, master: b, type: frictionless}
+)yaml");
+  const Input in = read_input(path);
+  ASSERT_EQ(in.contact.size(), 2u);
+  EXPECT_TRUE(in.contact[0].self);
+  EXPECT_EQ(in.contact[0].slave, "inner");
+  EXPECT_EQ(in.contact[0].master, "inner");
+  EXPECT_FALSE(in.contact[1].self);
+}
+
+TEST(InputErrors, SelfContactKeys) {
+  expect_bad_input("self_and_slave", minimal + R"yaml(  contact:
+    pair: {self: a, slave: a, type: frictionless}
+)yaml",
+                   {"grout/contact/pair/slave: not with 'self'"});
+  expect_bad_input("self_and_master", minimal + R"yaml(  contact:
+    pair: {self: a, master: b, type: frictionless}
+)yaml",
+                   {"grout/contact/pair/master: not with 'self'"});
+  expect_bad_input("no_sides", minimal + R"yaml(  contact:
+    pair: {type: frictionless}
+)yaml",
+                   {"grout/contact/pair/slave: missing required key (or 'self'"});
+  expect_bad_input("no_master", minimal + R"yaml(  contact:
+    pair: {slave: a, type: frictionless}
+)yaml",
+                   {"grout/contact/pair/master: missing required key"});
+  expect_bad_input("self_tied", minimal + R"yaml(  contact:
+    pair: {self: a, type: tied}
+)yaml",
+                   {"grout/contact/pair/type: self-contact cannot be tied"});
+}
+
 TEST(InputRead, PathsRelativeToTheWorkingDirectoryStayRelative) {
   write_file("relative.yaml", replaced(minimal, "mesh.exo", "../meshes/./m.exo"));
   const std::filesystem::path cwd = std::filesystem::current_path();
@@ -536,6 +572,9 @@ TEST(InputMeshCheck, MissingEntitiesAreNamed) {
                     {"grout/contact/interface/master: no side set 'blk_top'"});
   expect_mesh_error("no_slave", replaced(on_mesh, "slave: die_bottom", "slave: die_bot"), mesh,
                     {"grout/contact/interface/slave: no side set 'die_bot'"});
+  expect_mesh_error("no_self",
+                    replaced(on_mesh, "slave: die_bottom, master: block_top", "self: die_bot"),
+                    mesh, {"grout/contact/interface/self: no side set 'die_bot'"});
   expect_mesh_error("no_block", replaced(on_mesh, "block: id_2", "block: blok"), mesh,
                     {"grout/materials/block/block: no element block 'blok' in mesh 'mesh.exo' "
                      "(it has: die, block)"});
