@@ -16,6 +16,14 @@ bool distributed(MPI_Comm comm) {
   MPI_Comm_size(comm, &size);
   return size > 1;
 }
+
+/// total[id] += v[0 .. width) (an id met first starts at 0).
+template <class Map>
+void accumulate(Map& total, long long id, const double* v, int width) {
+  auto& t = total[id];
+  t.resize(width, 0.0);
+  for (int c = 0; c < width; ++c) t[c] += v[c];
+}
 }  // namespace
 
 void NodeDirectory::exchange(const std::vector<int>& to, const std::vector<long long>& ids,
@@ -83,34 +91,36 @@ NodeDirectory::NodeDirectory(MPI_Comm comm, const std::vector<long long>& ids) {
   for (std::size_t e = 0; e < ids.size(); ++e) owners_[e] = mine.at(ids[e]);
 }
 
+std::map<long long, std::vector<double>> NodeDirectory::sum_at_directory(
+    const std::vector<long long>& ids, const std::vector<double>& values, int width,
+    std::vector<int>& to, std::vector<int>& from, std::vector<long long>& in_ids) const {
+  to.resize(ids.size());
+  for (std::size_t e = 0; e < ids.size(); ++e) to[e] = directory_rank(ids[e]);
+  std::vector<double> in_values;
+  exchange(to, ids, values, width, from, in_ids, in_values);
+  // Sums in a fixed order (by sending rank, then entry): the same on every run.
+  std::map<long long, std::vector<double>> total;
+  for (std::size_t e = 0; e < in_ids.size(); ++e)
+    accumulate(total, in_ids[e], in_values.data() + e * width, width);
+  return total;
+}
+
 std::vector<double> NodeDirectory::sum_to_senders(const std::vector<long long>& ids,
                                                   const std::vector<double>& values,
                                                   int width) const {
   if (comm_ == MPI_COMM_NULL) {  // serial: sum repeated ids
     std::unordered_map<long long, std::vector<double>> total;
-    for (std::size_t e = 0; e < ids.size(); ++e) {
-      auto& t = total[ids[e]];
-      t.resize(width, 0.0);
-      for (int c = 0; c < width; ++c) t[c] += values[e * width + c];
-    }
+    for (std::size_t e = 0; e < ids.size(); ++e)
+      accumulate(total, ids[e], values.data() + e * width, width);
     std::vector<double> out(values.size());
     for (std::size_t e = 0; e < ids.size(); ++e)
       std::copy(total[ids[e]].begin(), total[ids[e]].end(), out.begin() + e * width);
     return out;
   }
-  std::vector<int> to(ids.size()), from;
-  for (std::size_t e = 0; e < ids.size(); ++e) to[e] = directory_rank(ids[e]);
+  std::vector<int> to, from;
   std::vector<long long> in_ids;
-  std::vector<double> in_values;
-  exchange(to, ids, values, width, from, in_ids, in_values);
-  // Sums in a fixed order (by sending rank, then entry): the same on every run.
-  std::map<long long, std::vector<double>> total;
-  for (std::size_t e = 0; e < in_ids.size(); ++e) {
-    auto& t = total[in_ids[e]];
-    t.resize(width, 0.0);
-    for (int c = 0; c < width; ++c) t[c] += in_values[e * width + c];
-  }
-  std::vector<double> answers(in_values.size());
+  auto total = sum_at_directory(ids, values, width, to, from, in_ids);
+  std::vector<double> answers(in_ids.size() * width);
   for (std::size_t e = 0; e < in_ids.size(); ++e)
     std::copy(total[in_ids[e]].begin(), total[in_ids[e]].end(), answers.begin() + e * width);
   // Back to the senders; each rank's entries return grouped by directory rank, in their order.
@@ -133,28 +143,16 @@ void NodeDirectory::sum_to_owners(const std::vector<long long>& ids,
                                   std::vector<long long>& out_ids,
                                   std::vector<double>& out_values) const {
   std::map<long long, std::vector<double>> total;
-  const auto add = [&](long long id, const double* v) {
-    auto& t = total[id];
-    t.resize(width, 0.0);
-    for (int c = 0; c < width; ++c) t[c] += v[c];
-  };
   if (comm_ == MPI_COMM_NULL) {
-    for (std::size_t e = 0; e < ids.size(); ++e) add(ids[e], &values[e * width]);
+    for (std::size_t e = 0; e < ids.size(); ++e)
+      accumulate(total, ids[e], values.data() + e * width, width);
   } else {
-    std::vector<int> to(ids.size()), from;
-    for (std::size_t e = 0; e < ids.size(); ++e) to[e] = directory_rank(ids[e]);
+    std::vector<int> to, from;
     std::vector<long long> in_ids;
-    std::vector<double> in_values;
-    exchange(to, ids, values, width, from, in_ids, in_values);
-    std::map<long long, std::vector<double>> at_directory;
-    for (std::size_t e = 0; e < in_ids.size(); ++e) {
-      auto& t = at_directory[in_ids[e]];
-      t.resize(width, 0.0);
-      for (int c = 0; c < width; ++c) t[c] += in_values[e * width + c];
-    }
+    const auto at_directory = sum_at_directory(ids, values, width, to, from, in_ids);
     std::vector<int> owner_rank;
     std::vector<long long> sum_ids;
-    std::vector<double> sums;
+    std::vector<double> sums, in_values;
     for (const auto& [id, t] : at_directory) {
       const auto it = owner_of_.find(id);
       owner_rank.push_back(it != owner_of_.end() ? it->second : rank_);  // unregistered: keep
@@ -162,7 +160,8 @@ void NodeDirectory::sum_to_owners(const std::vector<long long>& ids,
       sums.insert(sums.end(), t.begin(), t.end());
     }
     exchange(owner_rank, sum_ids, sums, width, from, in_ids, in_values);
-    for (std::size_t e = 0; e < in_ids.size(); ++e) add(in_ids[e], &in_values[e * width]);
+    for (std::size_t e = 0; e < in_ids.size(); ++e)
+      accumulate(total, in_ids[e], in_values.data() + e * width, width);
   }
   out_ids.clear();
   out_values.clear();

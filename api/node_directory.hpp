@@ -7,6 +7,7 @@
 
 #include <mpi.h>
 
+#include <map>
 #include <unordered_map>
 #include <vector>
 
@@ -42,6 +43,13 @@ class NodeDirectory {
   void exchange(const std::vector<int>& to, const std::vector<long long>& ids,
                 const std::vector<double>& values, int width, std::vector<int>& from,
                 std::vector<long long>& in_ids, std::vector<double>& in_values) const;
+  /// Sends each entry to its id's directory rank (to[e]) and sums the entries received there
+  /// per id; from/in_ids: the received entries' senders and ids, in arrival order.
+  std::map<long long, std::vector<double>> sum_at_directory(const std::vector<long long>& ids,
+                                                            const std::vector<double>& values,
+                                                            int width, std::vector<int>& to,
+                                                            std::vector<int>& from,
+                                                            std::vector<long long>& in_ids) const;
 };
 
 }  // namespace grout

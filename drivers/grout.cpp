@@ -122,8 +122,8 @@ void run(const std::string& input_path, const std::string& output_dir,
     DynamicProblem dynamic(problem, mesh.dimension,
                            assemble_mass_matrix(solid, input.dynamics.mass == MassKind::lumped),
                            make_time_integrator(input.dynamics), input.gravity,
-                           *initial_velocity(solid, mesh, input),
-                           contact_treatment_of(input.dynamics), layout.node_bodies);
+                           *initial_velocity(solid, mesh, input), input.dynamics.contact_treatment,
+                           layout.node_bodies);
     LinearSolverSettings mass_settings;  // type: auto
     mass_settings.where = input.file + ": mass matrix";
     LinearSolver mass_solver(mass_settings, mass_matrix_layout(mesh));

@@ -3,9 +3,8 @@
 // after the step, and where the energy that closing contacts lose goes
 // (`dynamics/contact_treatment` with `dynamics/sliding`, docs/input.md; docs/design.md §4,
 // "Implicit dynamics"). All but standard keep the force to its own step; the velocity_update
-// ones also give that loss back to the bodies as a velocity jump.
-
-#include "io/input.hpp"
+// ones also give that loss back to the bodies as a velocity jump. read_dynamics
+// (io/input_dynamics.cpp) sets it in DynamicsInput::contact_treatment.
 
 namespace grout {
 
@@ -22,8 +21,5 @@ enum class ContactTreatment {
   /// of either sign (frictionless and tied contact only)
   velocity_update_balanced,
 };
-
-/// The treatment the input's `dynamics` section names.
-ContactTreatment contact_treatment_of(const DynamicsInput& input);
 
 }  // namespace grout

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "io/contact_treatment.hpp"
 #include "io/expression.hpp"
 #include "io/mesh.hpp"
 #include "io/solver_settings.hpp"
@@ -111,10 +112,8 @@ struct DynamicsInput {
   double rho_infinity = 1.0;        ///< hht, bossak, generalized_alpha
   double beta = 0.25, gamma = 0.5;  ///< newmark
   MassKind mass = MassKind::consistent;
-  bool stabilized_contact = true;  ///< contact_treatment: stabilized (true) or standard
-  bool velocity_update = false;    ///< contact_treatment: velocity_update (stabilized, plus)
-  bool sliding_update = true;      ///< velocity_update's sliding: tangential (true) or impact
-  bool sliding_balance = false;    ///< sliding: balanced (tangential, plus the closed nodes)
+  /// contact_treatment with velocity_update's sliding
+  ContactTreatment contact_treatment = ContactTreatment::stabilized;
 };
 
 /// An initial velocity field on the nodes of one element block (`grout/initial_velocity`).

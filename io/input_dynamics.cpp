@@ -77,15 +77,18 @@ void read_dynamics(const Section& grout, Input& input) {
     d.fail("beta", "must be >= (gamma + 1/2)^2 / 4 for unconditional stability");
   dyn.mass = d.string("mass") == "lumped" ? MassKind::lumped : MassKind::consistent;
   const std::string treatment = d.string("contact_treatment");
-  dyn.stabilized_contact = treatment != "standard";
-  dyn.velocity_update = treatment == "velocity_update";
-  if (d.has("sliding") && !dyn.velocity_update)
+  const bool velocity_update = treatment == "velocity_update";
+  if (d.has("sliding") && !velocity_update)
     d.fail("sliding", "only with contact_treatment: velocity_update");
-  dyn.sliding_update = d.string("sliding") != "impact";
-  dyn.sliding_balance = d.string("sliding") == "balanced";
+  const std::string sliding = d.string("sliding");
+  dyn.contact_treatment = treatment == "standard" ? ContactTreatment::standard
+                          : !velocity_update      ? ContactTreatment::stabilized
+                          : sliding == "impact"   ? ContactTreatment::velocity_update_impact
+                          : sliding == "balanced" ? ContactTreatment::velocity_update_balanced
+                                                  : ContactTreatment::velocity_update_tangential;
   // balanced gives back the energy of the nodes that stay closed, of either sign: with
   // friction that would undo its dissipation.
-  if (dyn.sliding_balance)
+  if (dyn.contact_treatment == ContactTreatment::velocity_update_balanced)
     for (const ContactInput& c : input.contact)
       if (c.type == ContactKind::frictional)
         d.fail("sliding",

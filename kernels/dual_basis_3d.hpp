@@ -12,6 +12,7 @@
 // exact for flat faces (N_j N_k j(ξ) is of degree ≤ 3 per direction), and for warped faces
 // (j = |g_1 × g_2| is then not polynomial) accurate to far below the mortar tolerances.
 
+#include "kernels/dual_basis.hpp"
 #include "kernels/face_geometry_3d.hpp"
 #include "kernels/kernel_macros.hpp"
 #include "kernels/mortar_types.hpp"
@@ -57,31 +58,9 @@ GROUT_INLINE_FUNCTION void face_mass_matrix(int n, const Scalar x[max_face_nodes
     }
 }
 
-/// \brief Inverse of a small symmetric positive definite matrix by Gauss–Jordan elimination
-/// without pivoting (SPD: the pivots are positive). \return false on a non-positive pivot.
-template <class Scalar, int N>
-GROUT_INLINE_FUNCTION bool invert_spd_matrix(int n, const Scalar a_in[N][N], Scalar inv[N][N]) {
-  Scalar a[N][N];
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      a[i][j] = a_in[i][j];
-      inv[i][j] = i == j ? 1.0 : 0.0;
-    }
-  for (int p = 0; p < n; ++p) {
-    if (!(a[p][p] > 0.0)) return false;
-    const Scalar s = 1.0 / a[p][p];
-    for (int j = 0; j < n; ++j) a[p][j] *= s, inv[p][j] *= s;
-    for (int i = 0; i < n; ++i) {
-      if (i == p) continue;
-      const Scalar f = a[i][p];
-      for (int j = 0; j < n; ++j) a[i][j] -= f * a[p][j], inv[i][j] -= f * inv[p][j];
-    }
-  }
-  return true;
-}
-
 /// \brief Coefficients A[j][k] = a_jk of the dual basis Φ_j = Σ_k a_jk N_k on a TRI3 (n = 3)
-/// or QUAD4 (n = 4) face: A_e = D_e M_e⁻¹ (Popp et al. 2010).
+/// or QUAD4 (n = 4) face: A_e = D_e M_e⁻¹ (Popp et al. 2010), on QUAD4 by the small dense LU
+/// with partial pivoting (dual_basis_coefficients, dual_basis.hpp; kernels/small_dense_lu.hpp).
 /// \return degenerate for a zero-area face (singular M_e), else ok.
 template <class Scalar>
 GROUT_INLINE_FUNCTION MortarStatus dual_basis_coefficients_3d(
@@ -95,12 +74,10 @@ GROUT_INLINE_FUNCTION MortarStatus dual_basis_coefficients_3d(
     face_reference_centre(n, xi);
     return face_area_element(n, x, xi) > 0.0 ? MortarStatus::ok : MortarStatus::degenerate;
   }
-  Scalar d[max_face_nodes], m[max_face_nodes][max_face_nodes], minv[max_face_nodes][max_face_nodes];
-  face_mass_matrix(n, x, d, m);
-  if (!invert_spd_matrix<Scalar, max_face_nodes>(n, m, minv)) return MortarStatus::degenerate;
-  for (int j = 0; j < n; ++j)
-    for (int k = 0; k < n; ++k) A[j][k] = d[j] * minv[j][k];
-  return MortarStatus::ok;
+  static_assert(max_face_nodes == 4, "grout::dual_basis_coefficients_3d: QUAD4 fills M_e");
+  Scalar d[max_face_nodes], m[max_face_nodes][max_face_nodes];
+  face_mass_matrix(n, x, d, m);  // n = 4: M_e is the full 4×4 array
+  return dual_basis_coefficients<Scalar, max_face_nodes>(d, m, A);
 }
 
 /// \brief Dual shape functions Φ_j(ξ) = Σ_k A[j][k] N_k(ξ).

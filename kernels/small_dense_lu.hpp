@@ -2,7 +2,7 @@
 // One small dense LU with partial pivoting, for the few-unknown systems of the contact
 // algebra: the pivot blocks of the multiplier condensation (nonlinear/condensed_solve.cpp),
 // the per-node blocks of the symmetric reduction (nonlinear/symmetric_condensation.cpp) and
-// the 2D dual basis's mass matrix (kernels/dual_basis.hpp).
+// the dual basis's element mass matrix (kernels/dual_basis.hpp; QUAD4: dual_basis_3d.hpp).
 //
 //   P A = L U        (Golub & Van Loan, "Matrix Computations", 4th ed., Alg. 3.4.1)
 //

@@ -193,7 +193,7 @@ void DynamicProblem::start(Vector& x0, LinearSolver& linear) {
   balance_ = EnergyBalance();
   measure_state(*u_, *v_);
   // Energy-momentum: from now on the solid's force of a step is taken from u_n
-  // (energy_momentum_scheme.hpp).
+  // (EnergyMomentumScheme, generalized_alpha_family.hpp).
   if (integrator_->discrete_gradient_force()) problem_.set_solid_step_start(u_.get());
 }
 

@@ -9,8 +9,8 @@
 //
 // Predictor: every scheme starts Newton from u_{n+1} = u_n (the last converged state, with the
 // prescribed values of t_{n+1}). Correctors: a_{n+1}(u_{n+1}) and v_{n+1}(a_{n+1}).
-// Schemes: newmark.hpp, hht.hpp, bossak.hpp, generalized_alpha.hpp, energy_momentum_scheme.hpp,
-// all of the generalised-α family (generalized_alpha_family.hpp).
+// Schemes: Newmark, Hht, Bossak, GeneralizedAlpha and EnergyMomentumScheme, all of the
+// generalised-α family (generalized_alpha_family.hpp).
 
 #include <memory>
 

@@ -78,10 +78,10 @@
 #include "io/contact_meshes.hpp"
 #include "io/mesh_bodies.hpp"
 #include "nonlinear/dynamic_problem.hpp"
+#include "nonlinear/generalized_alpha_family.hpp"
 #include "nonlinear/linear_solver.hpp"
 #include "nonlinear/load_stepping.hpp"
 #include "nonlinear/mechanics_problem.hpp"
-#include "nonlinear/newmark.hpp"
 #include "perf/bench_main.hpp"
 
 namespace grout {

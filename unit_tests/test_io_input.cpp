@@ -704,37 +704,34 @@ TEST(InputDynamics, ReadsSchemeGravityAndInitialVelocity) {
   EXPECT_EQ(input.dynamics.scheme, DynamicsScheme::generalized_alpha);
   EXPECT_DOUBLE_EQ(input.dynamics.rho_infinity, 0.8);
   EXPECT_EQ(input.dynamics.mass, MassKind::lumped);
-  EXPECT_TRUE(input.dynamics.stabilized_contact);
+  EXPECT_EQ(input.dynamics.contact_treatment, ContactTreatment::stabilized);  // default
   EXPECT_DOUBLE_EQ(input.gravity[1], -9.81);
   ASSERT_EQ(input.initial_velocity.size(), 1u);
   EXPECT_EQ(input.initial_velocity[0].block, "b");
   EXPECT_DOUBLE_EQ(input.initial_velocity[0].components[0](0.0, 2.0, 3.0, 0.0), -3.0);
   EXPECT_FALSE(read_input(write_file("static.yaml", minimal)).dynamics.enabled);
-  EXPECT_FALSE(input.dynamics.velocity_update);
   const Input updated = read_input(write_file(
       "velocity_update.yaml",
       replaced(dynamic_input, "mass: lumped", "mass: lumped, contact_treatment: velocity_update")));
-  EXPECT_TRUE(updated.dynamics.stabilized_contact);
-  EXPECT_TRUE(updated.dynamics.velocity_update);
-  EXPECT_TRUE(updated.dynamics.sliding_update);
+  EXPECT_EQ(updated.dynamics.contact_treatment, ContactTreatment::velocity_update_tangential);
   const Input impact = read_input(
       write_file("sliding_impact.yaml",
                  replaced(dynamic_input, "mass: lumped",
                           "mass: lumped, contact_treatment: velocity_update, sliding: impact")));
-  EXPECT_TRUE(impact.dynamics.velocity_update);
-  EXPECT_FALSE(impact.dynamics.sliding_update);
-  EXPECT_FALSE(updated.dynamics.sliding_balance);
+  EXPECT_EQ(impact.dynamics.contact_treatment, ContactTreatment::velocity_update_impact);
   const Input balanced = read_input(
       write_file("sliding_balanced.yaml",
                  replaced(dynamic_input, "mass: lumped",
                           "mass: lumped, contact_treatment: velocity_update, sliding: balanced")));
-  EXPECT_TRUE(balanced.dynamics.sliding_update);
-  EXPECT_TRUE(balanced.dynamics.sliding_balance);
+  EXPECT_EQ(balanced.dynamics.contact_treatment, ContactTreatment::velocity_update_balanced);
   const Input standard = read_input(write_file(
       "standard.yaml",
       replaced(dynamic_input, "mass: lumped", "mass: lumped, contact_treatment: standard")));
-  EXPECT_FALSE(standard.dynamics.stabilized_contact);
-  EXPECT_FALSE(standard.dynamics.velocity_update);
+  const Input stabilized = read_input(write_file(
+      "stabilized.yaml",
+      replaced(dynamic_input, "mass: lumped", "mass: lumped, contact_treatment: stabilized")));
+  EXPECT_EQ(stabilized.dynamics.contact_treatment, ContactTreatment::stabilized);
+  EXPECT_EQ(standard.dynamics.contact_treatment, ContactTreatment::standard);
   const Input energy_momentum = read_input(write_file(
       "energy_momentum.yaml",
       replaced(dynamic_input, "generalized_alpha, rho_infinity: 0.8", "energy_momentum")));

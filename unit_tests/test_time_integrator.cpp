@@ -11,11 +11,7 @@
 #include <cmath>
 #include <memory>
 
-#include "nonlinear/bossak.hpp"
-#include "nonlinear/energy_momentum_scheme.hpp"
-#include "nonlinear/generalized_alpha.hpp"
-#include "nonlinear/hht.hpp"
-#include "nonlinear/newmark.hpp"
+#include "nonlinear/generalized_alpha_family.hpp"
 
 namespace {
 

@@ -13,7 +13,9 @@
 //   7. the index accessors: ∂g̃_j/∂x²_l = n_j M_jl + Σ_l' (n_j · x²_l') ∂M_jl'/∂x²_l at a
 //      master node l (g̃_j = −n_j·(D_jj x¹_j − Σ_l M_jl x²_l), n_j of the slave only), the
 //      derivative columns decoded by dof(), the M entries and M-derivative rows by M_entry();
-//   8. the forces summed to the owners of the nodes equal a one-rank coupling's.
+//   8. the forces summed to the owners of the nodes equal a one-rank coupling's;
+//   9. Grout's contact law at the slave rows (grout/contact_law.hpp) against its formulas
+//      (contact_law.cpp).
 // 2D: slave arc of radius R (LINE2), master arc of radius R + δ. 3D: slave cylinder patch of
 // radius R (QUAD4), master patch of radius R + δ (TRI3). Runs serially or on any number of
 // ranks (each rank owns a slice of the faces of both surfaces). Exits 1 if a check fails.
@@ -25,7 +27,12 @@
 #include <cstdio>
 #include <grout/mortar_coupling.hpp>
 #include <map>
+#include <stdexcept>
 #include <vector>
+
+bool check_contact_law(int dim, MPI_Comm comm, double delta, const std::vector<long long>& ids,
+                       const grout::MortarCoupling& coupling, const std::vector<double>& D_sum,
+                       const std::vector<double>& g_sum);  // contact_law.cpp
 
 // The installed API puts no Grout-internal header on the host's include path.
 #if __has_include(<kernels/mortar_types.hpp>) || __has_include(<mortar_types.hpp>)
@@ -386,7 +393,8 @@ int check(int dim, MPI_Comm comm) {
         "  standard multipliers (Views): sum D_jk = %.15g, worst |row D - row M| = %.3g %s\n",
         sum_D_standard, worst_row, standard_ok ? "ok" : "FAILED");
   }
-  return area_ok && gap_ok && balance_ok && standard_ok && contract_ok ? 0 : 1;
+  const bool law_ok = check_contact_law(dim, comm, delta, s.ids, coupling, D, g);
+  return area_ok && gap_ok && balance_ok && standard_ok && contract_ok && law_ok ? 0 : 1;
 }
 
 }  // namespace
@@ -398,7 +406,7 @@ int main(int argc, char** argv) {
     Kokkos::ScopeGuard kokkos(argc, argv);  // the host initialises Kokkos (and MPI) itself
     try {
       failed = check(2, MPI_COMM_WORLD) + check(3, MPI_COMM_WORLD);
-    } catch (const grout::MortarCouplingError& e) {
+    } catch (const std::invalid_argument& e) {  // MortarCouplingError, ContactLawError
       std::fprintf(stderr, "embed_mortar: %s\n", e.what());
       failed = 1;
     }
