@@ -1,6 +1,7 @@
 #include "drivers/results_output.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_TimeMonitor.hpp>
 #include <algorithm>
 #include <iomanip>
 #include <sstream>
@@ -67,6 +68,7 @@ ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidPr
   profile_wanted_ = !input.output.summary.empty() && problem.has_contact() && dim == 2;
 
   // Collective set-up first: nothing below it may throw on one rank before a collective call.
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: results output set-up"));
   const bool per_rank = input.output.parallel == OutputParallel::per_rank;
   exodus_ = std::make_unique<ResultsFile>(mesh, solid, per_rank);
   const Comm& comm = *solid.comm();
@@ -141,6 +143,7 @@ std::vector<double> ResultsOutput::component(const Vector& v, int d) const {
 }
 
 void ResultsOutput::write(const ConvergedStep& step) {
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: results output"));
   const int dim = solid_.dimension();
   const Comm& comm = *solid_.comm();
   Vector u(solid_.owned_map());

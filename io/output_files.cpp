@@ -41,6 +41,7 @@ std::string output_name(const std::string& path) {
 }
 
 std::string spread_file_name(const std::string& path, int ranks, int rank) {
+  if (ranks == 1) return path;  // IOSS opens a set of one as the plain name
   std::string number = std::to_string(rank);
   const std::size_t width = std::to_string(ranks).size();
   if (number.size() < width) number.insert(0, width - number.size(), '0');

@@ -26,7 +26,8 @@ std::vector<OutputFile> output_files(const Input& input, bool contact_profile, i
 
 /// \brief The name of rank `rank`'s file in a set of `ranks` files (SEACAS's spread naming,
 /// as decomp and IOSS write them): `<path>.<ranks>.<rank>`, the rank zero-padded to the
-/// number of digits of `ranks` (`case.e.2.1`, `case.e.12.03`).
+/// number of digits of `ranks` (`case.e.2.1`, `case.e.12.03`); a set of one file is `path`
+/// itself (as IOSS names it: ParaView's IOSS reader opens `case.e.1.0` as `case.e`).
 std::string spread_file_name(const std::string& path, int ranks, int rank);
 
 /// \brief How errors name a file being written: `dir/.name.partial` (a temporary of

@@ -66,7 +66,7 @@ TEST(OutputFiles, EveryFileWithItsTemporaryName) {
 // SEACAS's spread naming (decomp, IOSS): <file>.<ranks>.<rank>, the rank zero-padded to the
 // digits of the rank count.
 TEST(OutputFiles, SpreadNamesPadTheRankToTheDigitsOfTheRankCount) {
-  EXPECT_EQ(spread_file_name("out/case.e", 1, 0), "out/case.e.1.0");
+  EXPECT_EQ(spread_file_name("out/case.e", 1, 0), "out/case.e");  // IOSS: one file, no suffix
   EXPECT_EQ(spread_file_name("case.e", 2, 1), "case.e.2.1");
   EXPECT_EQ(spread_file_name("case.e", 10, 3), "case.e.10.03");
   EXPECT_EQ(spread_file_name("case.e", 12, 11), "case.e.12.11");

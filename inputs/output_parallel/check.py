@@ -1,8 +1,8 @@
 """Results at scale (docs/input.md, output/parallel), read with python3-netcdf4 through
 tools/grout_results.py, on 1, 2 and 3 ranks, 2D and 3D:
 
-- `per_rank` writes exactly the files <file>.<ranks>.<rank> (SEACAS's naming), no temporary
-  left; each holds the rank's own elements (every element in exactly one file; with 2 or 3
+- `per_rank` writes exactly the files <file>.<ranks>.<rank> (SEACAS's naming; on 1 rank
+  <file> itself), no temporary left; each holds the rank's own elements (every element in exactly one file; with 2 or 3
   ranks no file holds them all) and exactly the nodes they use, their global numbers in the
   node and element id maps, elements in the file match the whole mesh's connectivity;
 - the Nemesis I data: global counts, block and set sizes of the whole mesh; the border nodes
@@ -53,7 +53,8 @@ def same_values(a, b, what):
 
 
 def check_pieces(per, single, ranks, what):
-    expected = ["%s.%d.%0*d" % (per.path, ranks, len(str(ranks)), r) for r in range(ranks)]
+    expected = (["%s.%d.%0*d" % (per.path, ranks, len(str(ranks)), r) for r in range(ranks)]
+                if ranks > 1 else [per.path])  # IOSS names a set of one file as the plain name
     check(per.files == expected and all(os.path.exists(f) for f in expected),
           "%s: files %s" % (what, ", ".join(os.path.basename(f) for f in expected)))
     folder = os.path.dirname(per.path) or "."

@@ -130,7 +130,8 @@ def main():
             middle = reference.times[len(reference.times) // 2]
             reference_middle = Read(kind, "np1/%s.e" % case, middle)
             for ranks in (1, 2, 3):
-                per_rank = "np%d/%s_per_rank.e.%d.0" % (ranks, case, ranks)
+                per_rank = "np%d/%s_per_rank.e%s" % (ranks, case,
+                                                     ".%d.0" % ranks if ranks > 1 else "")
                 for path, exact in (("np%d/%s.e" % (ranks, case), ranks == 1),
                                     (per_rank, ranks == 1)):
                     what = "%s %s %s" % (case, kind, path)
