@@ -398,11 +398,12 @@ Input read_input_text(const std::string& raw, const std::string& path) {
 
   input.solver = solver_settings_from(grout.raw_section("solver"), path);
 
-  const Section output = grout.section(
-      "output",
-      {Key::string("file").defaults(stem + ".e"),
-       Key::string("summary").may_be_empty().defaults(stem + ".csv"),
-       Key::choice("parallel", {"single", "per_rank"}, "output layout").defaults("single")});
+  const Section output =
+      grout.section("output", {Key::string("file").defaults(stem + ".e"),
+                               Key::string("summary").may_be_empty().defaults(stem + ".csv"),
+                               Key::choice("parallel", {"single", "per_rank"}, "output layout")
+                                   .defaults("single")
+                                   .suggest_near_miss()});
   input.output.file = resolve(input.directory, output.string("file"));
   const std::string summary = output.string("summary");
   input.output.summary = summary.empty() ? "" : resolve(input.directory, summary);

@@ -197,7 +197,7 @@ void Section::check(const Key& key, const Teuchos::ParameterEntry& entry) const 
         const std::string noun = key.choice_noun.empty() ? "value" : key.choice_noun;
         std::string message =
             "unknown " + noun + " '" + v + "' (" + expected_list(key.choices) + ")";
-        for (const std::string& choice : key.choices) {  // a near miss: "per_rnak"
+        for (const std::string& choice : key.suggests ? key.choices : std::vector<std::string>{}) {
           const std::size_t distance = edit_distance(v, choice);
           if (distance <= 2 && 2 * distance < v.size()) {
             message += "; did you mean '" + choice + "'?";
