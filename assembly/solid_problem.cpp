@@ -472,8 +472,15 @@ std::vector<double> SolidProblem::prescribed_displacements(double t) const {
   return value;
 }
 
-void SolidProblem::element_stresses(const Vector& u,
-                                    std::vector<std::vector<double>>& stress) const {
+std::vector<GlobalIndex> SolidProblem::owned_elements() const {
+  std::vector<GlobalIndex> out;
+  for (const auto& block : blocks_)
+    for (std::size_t e = 0; e < block.nodes.extent(0); ++e)
+      if (block.owned(e)) out.push_back(block.global(e));
+  return out;
+}
+
+std::vector<std::vector<double>> SolidProblem::element_stresses(const Vector& u) const {
   Vector u_column(column_map_);
   u_column.doImport(u, *importer_, Tpetra::INSERT);
   const auto u_view =
@@ -483,6 +490,7 @@ void SolidProblem::element_stresses(const Vector& u,
   // 2D (xx, yy, xy, zz) -> (xx, yy, zz, xy); 3D is the same order, σ_xz = σ_zx.
   const int n_components = dim_ == 2 ? 4 : 6;
   const int output_index_2d[4] = {0, 1, 3, 2};
+  std::vector<std::vector<double>> stress(n_components);
   for (const auto& block : blocks_) {
     for (std::size_t e = 0; e < block.nodes.extent(0); ++e) {
       if (!block.owned(e)) continue;
@@ -504,9 +512,10 @@ void SolidProblem::element_stresses(const Vector& u,
                               block.poissons_ratio, s);
       }
       for (int c = 0; c < n_components; ++c)
-        stress[dim_ == 2 ? output_index_2d[c] : c][block.global(e)] = s[c];
+        stress[dim_ == 2 ? output_index_2d[c] : c].push_back(s[c]);
     }
   }
+  return stress;
 }
 
 std::vector<std::string> SolidProblem::stress_names() const {

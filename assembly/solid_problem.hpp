@@ -95,9 +95,10 @@ class SolidProblem {
 
   /// Volume-averaged stress of this rank's own elements in the order of stress_names() (the
   /// Cauchy stress averaged over the deformed element under strain: finite,
-  /// total_lagrangian_cauchy_stress), written into `stress[component][global element]`; other
-  /// entries are left untouched.
-  void element_stresses(const Vector& u, std::vector<std::vector<double>>& stress) const;
+  /// total_lagrangian_cauchy_stress): `[component][k]` of owned_elements()[k].
+  std::vector<std::vector<double>> element_stresses(const Vector& u) const;
+  /// The global elements this rank owns: blocks in mesh order, ascending within a block.
+  std::vector<GlobalIndex> owned_elements() const;
   /// Output names of the stress components, in the order in which IOSS (ParaView's Exodus
   /// reader) groups them into one symmetric tensor: 2D xx yy zz xy; 3D xx yy zz xy yz zx.
   std::vector<std::string> stress_names() const;

@@ -78,7 +78,13 @@ void run(const std::string& input_path, const std::string& output_dir,
     std::printf("grout: %s: %lld nodes, %lld elements, %d rank(s)\n", input.file.c_str(),
                 mesh.num_nodes(), mesh.num_elements(), comm->getSize());
     // Said before the first step, so that a run that is killed still names its results.
-    std::printf("grout: results file %s\n", input.output.file.c_str());
+    if (input.output.parallel == OutputParallel::per_rank && comm->getSize() > 1)
+      std::printf(
+          "grout: results files %s to %s (output/parallel: per_rank, one per rank)\n",
+          spread_file_name(input.output.file, comm->getSize(), 0).c_str(),
+          spread_file_name(input.output.file, comm->getSize(), comm->getSize() - 1).c_str());
+    else
+      std::printf("grout: results file %s\n", input.output.file.c_str());
     // The average-acceleration rule keeps the energy of a linear system only.
     if (input.dynamics.enabled && input.dynamics.scheme == DynamicsScheme::newmark &&
         input.model.strain == StrainKind::finite)
@@ -134,7 +140,9 @@ void run(const std::string& input_path, const std::string& output_dir,
   if (root) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("grout: wrote %s and %s (%.2f s)\n", input.output.file.c_str(),
+    const bool spread = input.output.parallel == OutputParallel::per_rank && comm->getSize() > 1;
+    std::printf("grout: wrote %s%s and %s (%.2f s)\n", input.output.file.c_str(),
+                spread ? (".<" + std::to_string(comm->getSize()) + " files>").c_str() : "",
                 input.output.summary.c_str(), seconds);
   }
 }

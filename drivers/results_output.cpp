@@ -1,8 +1,11 @@
 #include "drivers/results_output.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_TimeMonitor.hpp>
+#include <algorithm>
 #include <iomanip>
 #include <sstream>
+#include <unordered_map>
 
 #include "io/errors.hpp"
 #include "nonlinear/dynamic_problem.hpp"
@@ -55,23 +58,50 @@ ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidPr
   std::sort(global_names_.begin() + first_reaction, global_names_.end());
   global_names_.erase(std::unique(global_names_.begin() + first_reaction, global_names_.end()),
                       global_names_.end());
-  reaction_globals_end_ = global_names_.size();
+  const std::size_t reaction_globals_end = global_names_.size();
   if (input.dynamics.enabled) {
     for (const char* name :
          {"kinetic_energy", "strain_energy", "external_work", "contact_work", "total_energy"})
       global_names_.push_back(name);
     for (int d = 0; d < dim; ++d) global_names_.push_back(std::string("momentum_") + axis[d]);
   }
-  if (!root_) return;
-  const std::vector<OutputFile> files = output_files(input, problem.has_contact() && dim == 2);
+  profile_wanted_ = !input.output.summary.empty() && problem.has_contact() && dim == 2;
+
+  // Collective set-up first: nothing below it may throw on one rank before a collective call.
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: results output set-up"));
+  const bool per_rank = input.output.parallel == OutputParallel::per_rank;
+  exodus_ = std::make_unique<ResultsFile>(mesh, solid, per_rank);
+  const Comm& comm = *solid.comm();
+  for (std::size_t g = first_reaction; g < reaction_globals_end; ++g) {
+    const std::string& name = global_names_[g];
+    const std::string set_name = name.substr(9, name.size() - 11);  // reaction_<set>_<axis>
+    SetSum sum;
+    sum.axis = name.back() - 'x';
+    std::vector<GlobalIndex> positions;  // of this rank's entries in the set
+    const std::vector<GlobalIndex>& set = mesh.find_node_set(set_name)->nodes;
+    const auto& owned = exodus_->owned_nodes();
+    for (std::size_t k = 0; k < set.size(); ++k) {
+      const auto it = std::lower_bound(owned.begin(), owned.end(), set[k]);
+      if (it == owned.end() || *it != set[k]) continue;
+      positions.push_back(GlobalIndex(k));
+      sum.owned.push_back(std::size_t(it - owned.begin()));
+    }
+    sum.to_root = std::make_unique<RootGather>(comm, positions, GlobalIndex(set.size()));
+    reaction_sums_.push_back(std::move(sum));
+  }
+
+  // Then this rank's files: under `single` rank 0 writes every file, under `per_rank` each
+  // rank its Exodus file and rank 0 the CSV files.
+  if (!per_rank && !root_) return;
+  const std::vector<OutputFile> files =
+      output_files(input, profile_wanted_, comm.getRank(), comm.getSize());
   check_output_files(input, files);
   commit_ = std::make_unique<OutputCommit>(files);
   // Provenance: QA record (code, version, date, time) and the input and mesh file names.
   ExodusProvenance provenance{"grout", GROUT_VERSION, {}};
   provenance.info = {"grout input: " + input.file, "mesh: " + input.mesh_file};
-  exodus_ = std::make_unique<ExodusWriter>(files[0].temporary, mesh, nodal,
-                                           output_stress_names(solid), global_names_, provenance);
-  if (!input.output.summary.empty()) {
+  exodus_->open(files[0].temporary, {nodal, output_stress_names(solid), global_names_}, provenance);
+  if (files.size() > 1) {
     summary_ = CheckedTextFile(files[1].temporary, files[1].path);
     std::string header = "step,time";
     for (const auto& name : global_names_) header += "," + name;
@@ -94,75 +124,94 @@ ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidPr
   }
 }
 
-std::vector<std::vector<double>> ResultsOutput::gather_nodal(const Vector& v) const {
+std::size_t ResultsOutput::owned_position(GlobalIndex node) const {
+  const auto& owned = exodus_->owned_nodes();
+  return std::size_t(std::lower_bound(owned.begin(), owned.end(), node) - owned.begin());
+}
+
+std::vector<double> ResultsOutput::component(const Vector& v, int d) const {
   const int dim = solid_.dimension();
-  const GlobalIndex n = solid_.num_global_nodes();
-  std::vector<double> local(n * dim, 0.0), global(n * dim, 0.0);
+  const GO num_u = GO(solid_.num_global_nodes()) * dim;
+  std::vector<double> out(exodus_->owned_nodes().size(), 0.0);
   const auto& map = *v.getMap();
   const auto view = v.getLocalViewHost(Tpetra::Access::ReadOnly);
-  for (LO i = 0; i < LO(map.getNodeNumElements()); ++i) local[map.getGlobalElement(i)] = view(i, 0);
-  Teuchos::reduceAll(*solid_.comm(), Teuchos::REDUCE_SUM, int(local.size()), local.data(),
-                     global.data());
-  std::vector<std::vector<double>> out(dim, std::vector<double>(n));
-  for (GlobalIndex k = 0; k < n; ++k)
-    for (int d = 0; d < dim; ++d) out[d][k] = global[k * dim + d];
+  for (LO i = 0; i < LO(map.getNodeNumElements()); ++i) {
+    const GO g = map.getGlobalElement(i);
+    if (g < num_u && g % dim == d) out[owned_position(g / dim)] = view(i, 0);
+  }
   return out;
 }
 
 void ResultsOutput::write(const ConvergedStep& step) {
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: results output"));
   const int dim = solid_.dimension();
+  const Comm& comm = *solid_.comm();
   Vector u(solid_.owned_map());
   problem_.displacement(*step.state, u);
-  auto nodal = gather_nodal(u);
-  auto reaction = gather_nodal(problem_.reactions());
-
-  const auto names = solid_.stress_names();
-  const GlobalIndex n_elements = mesh_.num_elements();
-  std::vector<std::vector<double>> stress(names.size(), std::vector<double>(n_elements, 0.0));
-  solid_.element_stresses(u, stress);
-  for (auto& s : stress) {
-    std::vector<double> sum(s.size(), 0.0);
-    Teuchos::reduceAll(*solid_.comm(), Teuchos::REDUCE_SUM, int(s.size()), s.data(), sum.data());
-    s.swap(sum);
-  }
-  stress.resize(output_stress_names(solid_).size(), std::vector<double>(n_elements, 0.0));
+  const Vector& reaction = problem_.reactions();
   const ContactFields contact = problem_.contact_fields();
 
-  // Reaction sums per node set of the Dirichlet conditions (each node counted once).
+  // Globals, on rank 0, then on every rank (each per-rank file holds them).
   const NewtonReport& newton = *step.newton;
   std::vector<double> globals = {
       double(newton.iterations), double(newton.linear_iterations),
       newton.residual_history.empty() ? 0.0 : newton.residual_history.back(),
       double(contact.active_nodes)};
-  for (std::size_t g = first_reaction; g < reaction_globals_end_; ++g) {
-    const std::string& name = global_names_[g];
-    const std::string set_name = name.substr(9, name.size() - 11);  // reaction_<set>_<axis>
-    const int d = name.back() - 'x';
+  for (const SetSum& s : reaction_sums_) {  // each node counted once, in the set's order
+    const std::vector<double> r = component(reaction, s.axis);
+    std::vector<double> mine;
+    for (std::size_t k : s.owned) mine.push_back(r[k]);
     double sum = 0.0;
-    for (GlobalIndex node : mesh_.find_node_set(set_name)->nodes) sum += reaction[d][node];
+    for (double value : s.to_root->gather(mine)) sum += value;
     globals.push_back(sum);
   }
-  std::vector<std::vector<double>> velocity, acceleration;
   if (step.dynamics) {
-    velocity = gather_nodal(step.dynamics->velocity());
-    acceleration = gather_nodal(step.dynamics->acceleration());
     const EnergyBalance& b = step.dynamics->balance();
     for (double value : {b.kinetic, b.strain, b.external_work, b.contact_work, b.total})
       globals.push_back(value);
     for (int d = 0; d < dim; ++d) globals.push_back(b.momentum[d]);
   }
-  if (!root_) return;
-  for (int d = 0; d < dim; ++d) nodal.push_back(std::move(reaction[d]));
-  if (problem_.has_contact()) {
-    nodal.push_back(contact.pressure);
-    nodal.push_back(contact.gap);
-    nodal.push_back(contact.status);
-    for (int d = 0; d < dim; ++d) nodal.push_back(contact.lm[d]);
-    for (int d = 0; d < dim; ++d) nodal.push_back(contact.slip[d]);
+  Teuchos::broadcast(comm, 0, int(globals.size()), globals.data());
+
+  // The 2D contact profile: every slave node's results, on rank 0.
+  std::vector<std::vector<double>> profile;  // rank 0: [field][received entry]
+  if (profile_wanted_) {
+    if (!profile_to_root_) profile_to_root_ = std::make_unique<RootGather>(comm, contact.nodes, 0);
+    for (const auto* field : {&contact.pressure, &contact.gap, &contact.status, &contact.lm[0],
+                              &contact.lm[1], &contact.slip[0], &contact.slip[1]})
+      profile.push_back(profile_to_root_->gather(*field));
   }
-  for (auto& field : velocity) nodal.push_back(std::move(field));
-  for (auto& field : acceleration) nodal.push_back(std::move(field));
-  exodus_->write_step(step.time, nodal, stress, globals);
+
+  // The Exodus step, one variable at a time.
+  ResultsFile& file = *exodus_;
+  std::size_t v = 0;
+  file.begin_step(step.time);
+  for (int d = 0; d < dim; ++d) file.nodal(v++, component(u, d));
+  for (int d = 0; d < dim; ++d) file.nodal(v++, component(reaction, d));
+  if (problem_.has_contact()) {
+    const auto at_owned_nodes = [&](const std::vector<double>& entries) {
+      std::vector<double> out(file.owned_nodes().size(), 0.0);
+      for (std::size_t i = 0; i < entries.size(); ++i)
+        out[owned_position(contact.nodes[i])] = entries[i];
+      return out;
+    };
+    file.nodal(v++, at_owned_nodes(contact.pressure));
+    file.nodal(v++, at_owned_nodes(contact.gap));
+    file.nodal(v++, at_owned_nodes(contact.status));
+    for (int d = 0; d < dim; ++d) file.nodal(v++, at_owned_nodes(contact.lm[d]));
+    for (int d = 0; d < dim; ++d) file.nodal(v++, at_owned_nodes(contact.slip[d]));
+  }
+  if (step.dynamics) {
+    for (int d = 0; d < dim; ++d) file.nodal(v++, component(step.dynamics->velocity(), d));
+    for (int d = 0; d < dim; ++d) file.nodal(v++, component(step.dynamics->acceleration(), d));
+  }
+  std::vector<std::vector<double>> stress = solid_.element_stresses(u);
+  const std::size_t num_owned_elements = stress.empty() ? 0 : stress[0].size();
+  stress.resize(output_stress_names(solid_).size(), std::vector<double>(num_owned_elements, 0.0));
+  for (std::size_t c = 0; c < stress.size(); ++c) file.element(c, stress[c]);
+  file.globals(globals);
+  file.end_step();  // throws this rank's file error, after the last collective call
+
   if (summary_.is_open()) {
     std::ostringstream row;
     row << step.step << "," << std::setprecision(17) << step.time;
@@ -170,13 +219,16 @@ void ResultsOutput::write(const ConvergedStep& step) {
     summary_.write(row.str() + "\n");
   }
   if (profile_.is_open()) {
+    std::unordered_map<GlobalIndex, std::size_t> entry;
+    const auto& received = profile_to_root_->received_ids();
+    for (std::size_t i = 0; i < received.size(); ++i) entry[received[i]] = i;
     std::ostringstream rows;
     for (GlobalIndex n : profile_nodes_) {
+      const std::size_t i = entry.at(n);
       rows << step.step << "," << std::setprecision(17) << step.time << "," << n + 1 << ","
-           << mesh_.coordinates[2 * n] << "," << mesh_.coordinates[2 * n + 1] << ","
-           << contact.pressure[n] << "," << contact.gap[n] << "," << contact.status[n] << ","
-           << contact.lm[0][n] << "," << contact.lm[1][n] << "," << contact.slip[0][n] << ","
-           << contact.slip[1][n] << "\n";
+           << mesh_.coordinates[2 * n] << "," << mesh_.coordinates[2 * n + 1];
+      for (const auto& field : profile) rows << "," << field[i];
+      rows << "\n";
     }
     profile_.write(rows.str());
   }
@@ -191,7 +243,7 @@ void ResultsOutput::write(const ConvergedStep& step) {
     }
     newton_log_.write(rows.str());
   }
-  commit_->commit();  // the first converged step replaces the previous results
+  if (commit_) commit_->commit();  // the first converged step replaces the previous results
 }
 
 }  // namespace grout

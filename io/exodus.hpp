@@ -34,15 +34,38 @@ struct ExodusProvenance {
   std::vector<std::string> info;
 };
 
+/// \brief What makes a mesh one file of a file-per-rank set (Nemesis I, as SEACAS's decomp
+/// writes it): the piece's place in the whole mesh. Indices are 0-based; local nodes and
+/// elements are those of the piece's Mesh (elements in block order).
+struct ExodusPiece {
+  int processor = 0;       ///< the rank that wrote this file
+  int num_processors = 1;  ///< files in the set
+  GlobalIndex num_global_nodes = 0, num_global_elements = 0;
+  std::vector<GlobalIndex> node_ids;     ///< global node of each local node (node id map)
+  std::vector<GlobalIndex> element_ids;  ///< global element of each local element
+  /// Whole-mesh counts per block, node set and side set (in the piece's order).
+  std::vector<GlobalIndex> global_block_sizes, global_node_set_sizes, global_side_set_sizes;
+  std::vector<char> border_node;     ///< per local node: also in another processor's file
+  std::vector<char> border_element;  ///< per local element: uses a border node
+  struct NodeCommMap {
+    int processor = 0;               ///< the neighbour
+    std::vector<GlobalIndex> nodes;  ///< local nodes also in the neighbour's file
+  };
+  std::vector<NodeCommMap> node_maps;
+};
+
 /// \brief Writes a results file: the mesh at construction, then one time step per call
-/// of write_step(), flushed to disk immediately so that a later failure loses nothing.
-/// Nodal variables named "displ_x", "displ_y"[, "displ_z"] are what ParaView applies as
-/// the deformation. Move-only; the destructor closes the file.
+/// of write_step() (or begin_step(), put_nodal() and put_element() once per variable,
+/// put_globals(), end_step()), flushed to disk at the end of each step so that a later
+/// failure loses nothing. Nodal variables named "displ_x", "displ_y"[, "displ_z"] are what
+/// ParaView applies as the deformation. With a piece, the file is one of a file-per-rank set:
+/// it also holds the node and element id maps (global ids, 1-based) and the Nemesis I global
+/// and load-balance data. Move-only; the destructor closes the file.
 class ExodusWriter {
  public:
   ExodusWriter(const std::string& path, const Mesh& mesh, std::vector<std::string> nodal_vars,
                std::vector<std::string> element_vars, std::vector<std::string> global_vars,
-               const ExodusProvenance& provenance = {});
+               const ExodusProvenance& provenance = {}, const ExodusPiece* piece = nullptr);
   ~ExodusWriter();
   ExodusWriter(ExodusWriter&& other) noexcept;
   ExodusWriter& operator=(ExodusWriter&& other) noexcept;
@@ -57,6 +80,16 @@ class ExodusWriter {
                   const std::vector<std::vector<double>>& element,
                   const std::vector<double>& globals);
 
+  /// Step num_steps()+1 at `time`; then every variable once, then end_step().
+  void begin_step(double time);
+  /// Nodal variable `v` (0-based, constructor order): one value per node.
+  void put_nodal(std::size_t v, const std::vector<double>& values);
+  /// Element variable `v`: one value per element (blocks in mesh order).
+  void put_element(std::size_t v, const std::vector<double>& values);
+  void put_globals(const std::vector<double>& values);
+  /// Flushes the step to disk and counts it.
+  void end_step();
+
   int num_steps() const { return num_steps_; }
   const std::string& path() const { return path_; }
 
@@ -67,6 +100,7 @@ class ExodusWriter {
     GlobalIndex num_elements;
   };
   void close() noexcept;
+  void check_step(int status, const std::string& what) const;
 
   std::string path_;
   int exoid_ = -1;
@@ -75,6 +109,7 @@ class ExodusWriter {
   std::vector<BlockSlice> blocks_;
   std::size_t num_nodal_ = 0, num_element_ = 0, num_global_ = 0;
   int num_steps_ = 0;
+  int step_ = 0;  ///< the step being written (begin_step)
 };
 
 /// What a results file holds: the time values and the variable names.

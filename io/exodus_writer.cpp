@@ -222,16 +222,100 @@ void write_provenance(const WriteFile& file, const ExodusProvenance& provenance)
   file.check(ex_put_info(file.id(), int(pointers.size()), pointers.data()), "the info records");
 }
 
+/// 1-based local indices of the entries of `flags` equal to `value`.
+std::vector<int64_t> local_ids_where(const std::vector<char>& flags, char value) {
+  std::vector<int64_t> ids;
+  for (std::size_t i = 0; i < flags.size(); ++i)
+    if (flags[i] == value) ids.push_back(int64_t(i + 1));
+  return ids;
+}
+
+/// \brief The Nemesis I header of one file of a file-per-rank set (what must be defined
+/// before ex_put_init): file type "p" with one processor in the file, the global counts,
+/// the load-balance parameters (internal and border nodes and elements, no external nodes)
+/// and the sizes of the nodal communication maps (no elemental ones).
+void write_piece_header(const WriteFile& file, const Mesh& mesh, const ExodusPiece& piece) {
+  const GlobalIndex num_border_nodes =
+      std::count(piece.border_node.begin(), piece.border_node.end(), 1);
+  const GlobalIndex num_border_elements =
+      std::count(piece.border_element.begin(), piece.border_element.end(), 1);
+  char type[] = "p";
+  file.check(ex_put_init_info(file.id(), piece.num_processors, 1, type), "the Nemesis header");
+  file.check(ex_put_init_global(file.id(), piece.num_global_nodes, piece.num_global_elements,
+                                int64_t(mesh.blocks.size()), int64_t(mesh.node_sets.size()),
+                                int64_t(mesh.side_sets.size())),
+             "the Nemesis global counts");
+  file.check(ex_put_loadbal_param(file.id(), mesh.num_nodes() - num_border_nodes, num_border_nodes,
+                                  0, mesh.num_elements() - num_border_elements, num_border_elements,
+                                  int64_t(piece.node_maps.size()), 0, piece.processor),
+             "the Nemesis load-balance parameters");
+  if (piece.node_maps.empty()) return;
+  std::vector<int64_t> ids, counts;
+  for (const auto& m : piece.node_maps) {
+    ids.push_back(m.processor);
+    counts.push_back(int64_t(m.nodes.size()));
+  }
+  file.check(
+      ex_put_cmap_params(file.id(), ids.data(), counts.data(), nullptr, nullptr, piece.processor),
+      "the Nemesis communication map sizes");
+}
+
+/// The rest of the Nemesis I data (after the mesh): global block and set sizes, the
+/// internal/border node and element maps, the nodal communication maps, and the node and
+/// element id maps (global numbers, 1-based) that readers show as global ids.
+void write_piece_maps(const WriteFile& file, const Mesh& mesh, const ExodusPiece& piece) {
+  std::vector<int64_t> ids = entity_ids(mesh.blocks);
+  std::vector<int64_t> counts(piece.global_block_sizes.begin(), piece.global_block_sizes.end());
+  if (!ids.empty())
+    file.check(ex_put_eb_info_global(file.id(), ids.data(), counts.data()),
+               "the Nemesis block sizes");
+  const auto put_sets = [&](auto put, std::vector<int64_t> set_ids,
+                            const std::vector<GlobalIndex>& sizes, const char* what) {
+    if (set_ids.empty()) return;
+    std::vector<int64_t> n(sizes.begin(), sizes.end()), factors(sizes.size(), 0);
+    file.check(put(file.id(), set_ids.data(), n.data(), factors.data()), what);
+  };
+  put_sets(ex_put_ns_param_global, entity_ids(mesh.node_sets), piece.global_node_set_sizes,
+           "the Nemesis node set sizes");
+  put_sets(ex_put_ss_param_global, entity_ids(mesh.side_sets), piece.global_side_set_sizes,
+           "the Nemesis side set sizes");
+  std::vector<int64_t> internal = local_ids_where(piece.border_node, 0),
+                       border = local_ids_where(piece.border_node, 1), external;
+  file.check(ex_put_processor_node_maps(file.id(), internal.data(), border.data(), external.data(),
+                                        piece.processor),
+             "the Nemesis node maps");
+  internal = local_ids_where(piece.border_element, 0);
+  border = local_ids_where(piece.border_element, 1);
+  file.check(ex_put_processor_elem_maps(file.id(), internal.data(), border.data(), piece.processor),
+             "the Nemesis element maps");
+  for (const auto& m : piece.node_maps) {
+    std::vector<int64_t> nodes(m.nodes.begin(), m.nodes.end()), procs(m.nodes.size(), m.processor);
+    for (auto& n : nodes) ++n;
+    file.check(
+        ex_put_node_cmap(file.id(), m.processor, nodes.data(), procs.data(), piece.processor),
+        "the Nemesis communication map to processor " + std::to_string(m.processor));
+  }
+  std::vector<int64_t> node_map(piece.node_ids.begin(), piece.node_ids.end());
+  for (auto& n : node_map) ++n;
+  if (!node_map.empty())
+    file.check(ex_put_id_map(file.id(), EX_NODE_MAP, node_map.data()), "the node id map");
+  std::vector<int64_t> element_map(piece.element_ids.begin(), piece.element_ids.end());
+  for (auto& e : element_map) ++e;
+  if (!element_map.empty())
+    file.check(ex_put_id_map(file.id(), EX_ELEM_MAP, element_map.data()), "the element id map");
+}
+
 /// Create `path` and write the mesh (and the variable names); the file stays open.
 WriteFile create_mesh_file(const std::string& path, const Mesh& mesh,
                            const std::vector<std::string>& nodal_vars,
                            const std::vector<std::string>& element_vars,
                            const std::vector<std::string>& global_vars,
-                           const ExodusProvenance& provenance) {
+                           const ExodusProvenance& provenance, const ExodusPiece* piece) {
   if (mesh.dimension != 2 && mesh.dimension != 3)
     fail(path, "cannot write a mesh of dimension " + std::to_string(mesh.dimension));
   WriteFile file(path, longest_name(mesh, {nodal_vars, element_vars, global_vars}));
   const auto block_ids = entity_ids(mesh.blocks);
+  if (piece) write_piece_header(file, mesh, *piece);
   file.check(ex_put_init(file.id(), "Grout", mesh.dimension, mesh.num_nodes(), mesh.num_elements(),
                          int64_t(mesh.blocks.size()), int64_t(mesh.node_sets.size()),
                          int64_t(mesh.side_sets.size())),
@@ -240,6 +324,7 @@ WriteFile create_mesh_file(const std::string& path, const Mesh& mesh,
   write_blocks(file, mesh, block_ids);
   write_side_sets(file, mesh, entity_ids(mesh.side_sets));
   write_node_sets(file, mesh, entity_ids(mesh.node_sets));
+  if (piece) write_piece_maps(file, mesh, *piece);
 
   file.put_variables(EX_GLOBAL, global_vars, "global variable names");
   file.put_variables(EX_NODAL, nodal_vars, "nodal variable names");
@@ -259,20 +344,22 @@ WriteFile create_mesh_file(const std::string& path, const Mesh& mesh,
 }  // namespace
 
 void write_exodus_mesh(const std::string& path, const Mesh& mesh) {
-  create_mesh_file(path, mesh, {}, {}, {}, {});
+  create_mesh_file(path, mesh, {}, {}, {}, {}, nullptr);
 }
 
 ExodusWriter::ExodusWriter(const std::string& path, const Mesh& mesh,
                            std::vector<std::string> nodal_vars,
                            std::vector<std::string> element_vars,
-                           std::vector<std::string> global_vars, const ExodusProvenance& provenance)
+                           std::vector<std::string> global_vars, const ExodusProvenance& provenance,
+                           const ExodusPiece* piece)
     : path_(path),
       num_nodes_(mesh.num_nodes()),
       num_elements_(mesh.num_elements()),
       num_nodal_(nodal_vars.size()),
       num_element_(element_vars.size()),
       num_global_(global_vars.size()) {
-  WriteFile file = create_mesh_file(path, mesh, nodal_vars, element_vars, global_vars, provenance);
+  WriteFile file =
+      create_mesh_file(path, mesh, nodal_vars, element_vars, global_vars, provenance, piece);
   const auto ids = entity_ids(mesh.blocks);
   for (std::size_t b = 0; b < mesh.blocks.size(); ++b)
     blocks_.push_back({ids[b], mesh.blocks[b].first_element, mesh.blocks[b].num_elements()});
@@ -292,7 +379,8 @@ ExodusWriter::ExodusWriter(ExodusWriter&& other) noexcept
       num_nodal_(other.num_nodal_),
       num_element_(other.num_element_),
       num_global_(other.num_global_),
-      num_steps_(other.num_steps_) {}
+      num_steps_(other.num_steps_),
+      step_(other.step_) {}
 
 ExodusWriter& ExodusWriter::operator=(ExodusWriter&& other) noexcept {
   if (this != &other) {
@@ -306,6 +394,7 @@ ExodusWriter& ExodusWriter::operator=(ExodusWriter&& other) noexcept {
     num_element_ = other.num_element_;
     num_global_ = other.num_global_;
     num_steps_ = other.num_steps_;
+    step_ = other.step_;
   }
   return *this;
 }
@@ -333,28 +422,53 @@ void ExodusWriter::write_step(double time, const std::vector<std::vector<double>
   for (const auto& v : element)
     require(GlobalIndex(v.size()) == num_elements_, "element variable size");
 
-  const int step = num_steps_ + 1;
-  const std::string at = " at step " + std::to_string(step);
-  auto check = [&](int status, const std::string& what) {
-    if (status < 0)
-      fail(path_, "Exodus error while writing " + what + at + " (" + exodus_reason(status) + ")");
-  };
-  check(ex_put_time(exoid_, step, &time), "the time value");
-  for (std::size_t v = 0; v < nodal.size(); ++v)
-    check(ex_put_var(exoid_, step, EX_NODAL, int(v + 1), 1, num_nodes_, nodal[v].data()),
-          "nodal variable " + std::to_string(v + 1));
-  for (std::size_t v = 0; v < element.size(); ++v)
-    for (const auto& b : blocks_) {
-      if (b.num_elements == 0) continue;
-      check(ex_put_var(exoid_, step, EX_ELEM_BLOCK, int(v + 1), b.id, b.num_elements,
-                       element[v].data() + b.first_element),
-            "element variable " + std::to_string(v + 1));
-    }
-  if (!globals.empty())
-    check(ex_put_var(exoid_, step, EX_GLOBAL, 1, 1, int64_t(globals.size()), globals.data()),
-          "global variables");
-  check(ex_update(exoid_), "(flushing)");
-  num_steps_ = step;
+  begin_step(time);
+  for (std::size_t v = 0; v < nodal.size(); ++v) put_nodal(v, nodal[v]);
+  for (std::size_t v = 0; v < element.size(); ++v) put_element(v, element[v]);
+  put_globals(globals);
+  end_step();
+}
+
+void ExodusWriter::check_step(int status, const std::string& what) const {
+  if (status < 0)
+    fail(path_, "Exodus error while writing " + what + " at step " + std::to_string(step_) + " (" +
+                    exodus_reason(status) + ")");
+}
+
+void ExodusWriter::begin_step(double time) {
+  if (exoid_ < 0) fail(path_, "write_step on a closed Exodus writer");
+  step_ = num_steps_ + 1;
+  check_step(ex_put_time(exoid_, step_, &time), "the time value");
+}
+
+void ExodusWriter::put_nodal(std::size_t v, const std::vector<double>& values) {
+  if (GlobalIndex(values.size()) != num_nodes_ || v >= num_nodal_)
+    throw std::invalid_argument(path_ + ": put_nodal: variable or size");
+  check_step(ex_put_var(exoid_, step_, EX_NODAL, int(v + 1), 1, num_nodes_, values.data()),
+             "nodal variable " + std::to_string(v + 1));
+}
+
+void ExodusWriter::put_element(std::size_t v, const std::vector<double>& values) {
+  if (GlobalIndex(values.size()) != num_elements_ || v >= num_element_)
+    throw std::invalid_argument(path_ + ": put_element: variable or size");
+  for (const auto& b : blocks_) {
+    if (b.num_elements == 0) continue;
+    check_step(ex_put_var(exoid_, step_, EX_ELEM_BLOCK, int(v + 1), b.id, b.num_elements,
+                          values.data() + b.first_element),
+               "element variable " + std::to_string(v + 1));
+  }
+}
+
+void ExodusWriter::put_globals(const std::vector<double>& values) {
+  if (values.size() != num_global_) throw std::invalid_argument(path_ + ": put_globals: size");
+  if (!values.empty())
+    check_step(ex_put_var(exoid_, step_, EX_GLOBAL, 1, 1, int64_t(values.size()), values.data()),
+               "global variables");
+}
+
+void ExodusWriter::end_step() {
+  check_step(ex_update(exoid_), "(flushing)");
+  num_steps_ = step_;
 }
 
 }  // namespace grout

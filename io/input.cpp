@@ -428,10 +428,14 @@ Input read_input_text(const std::string& raw, const std::string& path) {
 
   const Section output =
       grout.section("output", {Key::string("file").defaults(stem + ".e"),
-                               Key::string("summary").may_be_empty().defaults(stem + ".csv")});
+                               Key::string("summary").may_be_empty().defaults(stem + ".csv"),
+                               Key::choice("parallel", {"single", "per_rank"}, "output layout")
+                                   .defaults("single")
+                                   .suggest_near_miss()});
   input.output.file = resolve(input.directory, output.string("file"));
   const std::string summary = output.string("summary");
   input.output.summary = summary.empty() ? "" : resolve(input.directory, summary);
+  if (output.string("parallel") == "per_rank") input.output.parallel = OutputParallel::per_rank;
   return input;
 }
 

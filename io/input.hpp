@@ -123,9 +123,16 @@ struct InitialVelocityInput {
   std::vector<Expression> components;  ///< v_i(x, y, z) at t = 0, one per dimension
 };
 
+/// How the Exodus results are laid out over the ranks (docs/input.md, `output/parallel`).
+enum class OutputParallel {
+  single,   ///< one file, written by rank 0 from the ranks' owned parts
+  per_rank  ///< one file per rank (<file>.<ranks>.<rank>, Nemesis I maps), read as one set
+};
+
 struct OutputInput {
   std::string file;     ///< Exodus results, resolved against the input file's folder
   std::string summary;  ///< CSV per step, resolved likewise (empty: none)
+  OutputParallel parallel = OutputParallel::single;
 };
 
 struct Input {

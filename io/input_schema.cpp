@@ -195,7 +195,16 @@ void Section::check(const Key& key, const Teuchos::ParameterEntry& entry) const 
       if (!key.choices.empty() &&
           std::find(key.choices.begin(), key.choices.end(), v) == key.choices.end()) {
         const std::string noun = key.choice_noun.empty() ? "value" : key.choice_noun;
-        fail(key.name, "unknown " + noun + " '" + v + "' (" + expected_list(key.choices) + ")");
+        std::string message =
+            "unknown " + noun + " '" + v + "' (" + expected_list(key.choices) + ")";
+        for (const std::string& choice : key.suggests ? key.choices : std::vector<std::string>{}) {
+          const std::size_t distance = edit_distance(v, choice);
+          if (distance <= 2 && 2 * distance < v.size()) {
+            message += "; did you mean '" + choice + "'?";
+            break;
+          }
+        }
+        fail(key.name, message);
       }
       return;
     }

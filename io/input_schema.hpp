@@ -34,6 +34,7 @@ struct Key {
   std::vector<std::string> choices;  ///< admitted values of a string or integer (empty: any)
   std::string choice_noun;           ///< "material law" in "unknown material law 'x'"
   bool empty_allowed = false;        ///< a string may be ""
+  bool suggests = false;             ///< an unknown choice names a near miss (did you mean)
   double lower = -std::numeric_limits<double>::infinity();
   double upper = std::numeric_limits<double>::infinity();
   bool lower_open = false, upper_open = false;
@@ -60,6 +61,7 @@ struct Key {
     return choices = std::move(values), std::move(*this);
   }
   Key may_be_empty() && { return empty_allowed = true, std::move(*this); }
+  Key suggest_near_miss() && { return suggests = true, std::move(*this); }
   Key above(double v) && { return lower = v, lower_open = true, std::move(*this); }
   Key at_least(double v) && { return lower = v, lower_open = false, std::move(*this); }
   Key below(double v) && { return upper = v, upper_open = true, std::move(*this); }

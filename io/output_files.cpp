@@ -40,9 +40,22 @@ std::string output_name(const std::string& path) {
          "' until the first step)";
 }
 
-std::vector<OutputFile> output_files(const Input& input, bool contact_profile) {
+std::string spread_file_name(const std::string& path, int ranks, int rank) {
+  if (ranks == 1) return path;  // IOSS opens a set of one as the plain name
+  std::string number = std::to_string(rank);
+  const std::size_t width = std::to_string(ranks).size();
+  if (number.size() < width) number.insert(0, width - number.size(), '0');
+  return path + "." + std::to_string(ranks) + "." + number;
+}
+
+std::vector<OutputFile> output_files(const Input& input, bool contact_profile, int rank,
+                                     int ranks) {
   std::vector<OutputFile> files = {{"grout/output/file", input.output.file, ""}};
-  if (!input.output.summary.empty()) {
+  if (input.output.parallel == OutputParallel::per_rank) {
+    files[0].key += " (rank " + std::to_string(rank) + "'s file of output/parallel: per_rank)";
+    files[0].path = spread_file_name(input.output.file, ranks, rank);
+  }
+  if (!input.output.summary.empty() && rank == 0) {
     const std::string& summary = input.output.summary;
     const auto dot = summary.rfind('.');
     const auto slash = summary.rfind('/');

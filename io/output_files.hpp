@@ -19,8 +19,16 @@ struct OutputFile {
 
 /// \brief Every file the run writes: the Exodus file; with a summary, the summary, its
 /// `_newton.csv` and (2D contact) its `_contact.csv`. The temporary name of `dir/name` is
-/// `dir/.name.partial`.
-std::vector<OutputFile> output_files(const Input& input, bool contact_profile);
+/// `dir/.name.partial`. Under `output/parallel: per_rank` these are the files rank `rank` of
+/// `ranks` writes: its own Exodus file (spread_file_name) and, on rank 0, the CSV files.
+std::vector<OutputFile> output_files(const Input& input, bool contact_profile, int rank = 0,
+                                     int ranks = 1);
+
+/// \brief The name of rank `rank`'s file in a set of `ranks` files (SEACAS's spread naming,
+/// as decomp and IOSS write them): `<path>.<ranks>.<rank>`, the rank zero-padded to the
+/// number of digits of `ranks` (`case.e.2.1`, `case.e.12.03`); a set of one file is `path`
+/// itself (as IOSS names it: ParaView's IOSS reader opens `case.e.1.0` as `case.e`).
+std::string spread_file_name(const std::string& path, int ranks, int rank);
 
 /// \brief How errors name a file being written: `dir/.name.partial` (a temporary of
 /// output_files) is "dir/name (written as 'dir/.name.partial' until the first step)", so that a

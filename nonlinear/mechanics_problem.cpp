@@ -257,38 +257,24 @@ void MechanicsProblem::commit_step() {
 
 ContactFields MechanicsProblem::contact_fields() const {
   ContactFields out;
-  const std::size_t n = mesh_.num_nodes();
-  // Rows: pressure, gap, status, λ (dim), slip (dim); each node set by its owner only.
-  const std::size_t n_fields = 3 + 2 * std::size_t(dim_);
-  std::vector<double> local(n_fields * n, 0.0), global(local.size(), 0.0);
+  out.lm.resize(dim_);
+  out.slip.resize(dim_);
   int active = 0;
   for (const auto& c : interfaces_) {
     for (const ContactInterface::NodeResult& r : c->node_results()) {
-      local[0 * n + r.node] = r.pressure;
-      local[1 * n + r.node] = r.gap;
-      local[2 * n + r.node] = r.status;
+      out.nodes.push_back(r.node);
+      out.pressure.push_back(r.pressure);
+      out.gap.push_back(r.gap);
+      out.status.push_back(r.status);
       for (int d = 0; d < dim_; ++d) {
-        local[(3 + d) * n + r.node] = r.lambda[d];
-        local[(3 + dim_ + d) * n + r.node] = r.slip[d];
+        out.lm[d].push_back(r.lambda[d]);
+        out.slip[d].push_back(r.slip[d]);
       }
       active += r.status != 0.0;
     }
   }
-  if (!interfaces_.empty()) {  // the same on every rank: all call the reductions or none
-    const auto& comm = *map_->getComm();
-    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, int(local.size()), local.data(), global.data());
-    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 1, &active, &out.active_nodes);
-  }
-  const auto field = [&](std::size_t i) {
-    return std::vector<double>(global.begin() + i * n, global.begin() + (i + 1) * n);
-  };
-  out.pressure = field(0);
-  out.gap = field(1);
-  out.status = field(2);
-  for (int d = 0; d < dim_; ++d) {
-    out.lm.push_back(field(3 + d));
-    out.slip.push_back(field(3 + dim_ + d));
-  }
+  if (!interfaces_.empty())  // the same on every rank: all call the reduction or none
+    Teuchos::reduceAll(*map_->getComm(), Teuchos::REDUCE_SUM, 1, &active, &out.active_nodes);
   return out;
 }
 

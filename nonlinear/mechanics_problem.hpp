@@ -37,15 +37,16 @@
 
 namespace grout {
 
-/// Nodal contact results of the last residual evaluation (global node arrays, every rank;
-/// gathered from the slave nodes' owners).
+/// Nodal contact results of the last residual evaluation at the slave nodes this rank owns
+/// (each slave node is reported by the owner of its displacement dofs), one entry per node.
 struct ContactFields {
+  std::vector<GlobalIndex> nodes;         ///< global node of each entry
   std::vector<double> pressure;           ///< λ_n = n·λ, > 0 in compression
   std::vector<double> gap;                ///< g̃_j / D_jj
   std::vector<double> status;             ///< 0 open, 1 stick (tied), 2 slip (frictionless active)
-  std::vector<std::vector<double>> lm;    ///< λ components
+  std::vector<std::vector<double>> lm;    ///< λ components [d][entry]
   std::vector<std::vector<double>> slip;  ///< accumulated weighted slip Σ ū τ (frictional)
-  int active_nodes = 0;
+  int active_nodes = 0;                   ///< over all ranks
 };
 
 /// The energy the contact forces of the last residual evaluation put into the bodies over the
@@ -113,7 +114,8 @@ class MechanicsProblem : public NonlinearProblem {
   const std::vector<double>& prescribed() const { return prescribed_; }
   /// Global displacement dofs (the u part of the map: GIDs 0 .. num_u − 1, owned first locally).
   GO num_displacement_dofs() const { return num_u_; }
-  /// Contact results at the last residual evaluation (empty without contact). Collective.
+  /// Contact results at the last residual evaluation at this rank's slave nodes (empty
+  /// without contact); active_nodes is summed over the ranks. Collective.
   ContactFields contact_fields() const;
   bool has_contact() const { return !interfaces_.empty(); }
   /// ContactStepEnergy of the last residual evaluation, summed over the ranks. Collective.

@@ -269,6 +269,17 @@ TEST(InputRead, ThreeDimensionalTractionAndEmptySummary) {
   EXPECT_EQ(in.output.summary, "");
 }
 
+// output/parallel: single by default, per_rank when asked; a near miss is named.
+TEST(InputRead, OutputParallelLayout) {
+  EXPECT_EQ(read_input(write_file("single.yaml", minimal)).output.parallel, OutputParallel::single);
+  const Input in =
+      read_input(write_file("per_rank.yaml", minimal + "  output: {parallel: per_rank}\n"));
+  EXPECT_EQ(in.output.parallel, OutputParallel::per_rank);
+  expect_bad_input("per_rnak", minimal + "  output: {parallel: per_rnak}\n",
+                   {"grout/output/parallel: unknown output layout 'per_rnak'",
+                    "expected one of: single, per_rank", "did you mean 'per_rank'?"});
+}
+
 TEST(InputExpression, EvaluatesCopiesAndDefaults) {
   const Expression zero;
   EXPECT_EQ(zero.text(), "0");

@@ -63,6 +63,33 @@ TEST(OutputFiles, EveryFileWithItsTemporaryName) {
   EXPECT_NO_THROW(check_output_files(input, files));
 }
 
+// SEACAS's spread naming (decomp, IOSS): <file>.<ranks>.<rank>, the rank zero-padded to the
+// digits of the rank count.
+TEST(OutputFiles, SpreadNamesPadTheRankToTheDigitsOfTheRankCount) {
+  EXPECT_EQ(spread_file_name("out/case.e", 1, 0), "out/case.e");  // IOSS: one file, no suffix
+  EXPECT_EQ(spread_file_name("case.e", 2, 1), "case.e.2.1");
+  EXPECT_EQ(spread_file_name("case.e", 10, 3), "case.e.10.03");
+  EXPECT_EQ(spread_file_name("case.e", 12, 11), "case.e.12.11");
+  EXPECT_EQ(spread_file_name("case.e", 100, 7), "case.e.100.007");
+}
+
+// output/parallel: per_rank: each rank its own Exodus file (with its temporary), the CSV files
+// on rank 0 only.
+TEST(OutputFiles, PerRankEachRankItsExodusFileAndRankZeroTheSummaries) {
+  Input input = input_in_test_dir();
+  input.output.parallel = OutputParallel::per_rank;
+  const auto zero = output_files(input, true, 0, 3);
+  ASSERT_EQ(zero.size(), 4u);
+  EXPECT_EQ(zero[0].path, in_test_dir("case.e.3.0"));
+  EXPECT_EQ(zero[0].temporary, in_test_dir(".case.e.3.0.partial"));
+  EXPECT_EQ(zero[1].path, in_test_dir("case.csv"));
+  const auto two = output_files(input, true, 2, 3);
+  ASSERT_EQ(two.size(), 1u);
+  EXPECT_EQ(two[0].path, in_test_dir("case.e.3.2"));
+  EXPECT_NE(two[0].key.find("rank 2"), std::string::npos) << two[0].key;
+  EXPECT_NO_THROW(check_output_files(input, zero));
+}
+
 TEST(OutputFiles, RefusesInputsOtherOutputsAndWhatIsNotARegularFile) {
   Input input = input_in_test_dir();
   input.output.summary = input.mesh_file;

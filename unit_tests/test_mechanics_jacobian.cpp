@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
+#include <array>
 #include <cmath>
 #include <map>
 #include <random>
@@ -80,7 +82,9 @@ std::array<int, 3> check_jacobian(int dim, ContactKind type = ContactKind::frict
   EXPECT_GT(active, 0);
   const ContactFields fields = problem.contact_fields();
   std::array<int, 3> status{0, 0, 0};
-  for (double st : fields.status) ++status[int(st)];
+  for (double st : fields.status) ++status[int(st)];  // this rank's slave nodes
+  std::array<int, 3> local = status;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 3, local.data(), status.data());
   Teuchos::RCP<Matrix> J;
   EXPECT_TRUE(problem.jacobian(x, J));
   random_state(problem, mesh, dx, 11);
@@ -171,7 +175,8 @@ void check_objective_slip(int dim) {
   const ContactFields after = problem.contact_fields();
   double largest = 0.0, accumulated = 0.0;
   int active = 0;
-  for (std::size_t n = 0; n < std::size_t(mesh.num_nodes()); ++n) {
+  ASSERT_EQ(after.nodes, before.nodes);  // this rank's slave nodes, in the same order
+  for (std::size_t n = 0; n < after.nodes.size(); ++n) {
     if (after.status[n] == 0.0) continue;
     ++active;
     for (int a = 0; a < dim; ++a) {
@@ -179,6 +184,13 @@ void check_objective_slip(int dim) {
       accumulated = std::max(accumulated, std::abs(before.slip[a][n]));
     }
   }
+  const int local_active = active;
+  const double local_max[2] = {largest, accumulated};
+  double global_max[2];
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &local_active, &active);
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 2, local_max, global_max);
+  largest = global_max[0];
+  accumulated = global_max[1];
   EXPECT_GT(active, 0);
   EXPECT_GT(accumulated, 1e-3) << "the first step slipped";
   EXPECT_LT(largest, 1e-12) << "slip added by a rigid motion";
