@@ -41,6 +41,44 @@ GROUT_INLINE_FUNCTION double axisymmetric_radius(int nodes, const double* X, con
   return r;
 }
 
+/// One quadrature point q of an axisymmetric element: shape values N, gradients G, the radius,
+/// h_a = N_a / r and dV = 2 pi r w det J.
+struct AxisymmetricPoint {
+  double N[max_element_nodes], G[max_element_nodes * 3], h[max_element_nodes];
+  double radius = 0.0, dV = 0.0;
+};
+
+/// \brief Fills `p` at point q of the element's rule (axisymmetric_integration_degree).
+/// \return the status of shape_gradients; inverted if r <= 0 there.
+GROUT_INLINE_FUNCTION ElementStatus axisymmetric_point(Topology topology, const double* X, int q,
+                                                       AxisymmetricPoint& p) {
+  const int nodes = topology_num_nodes(topology);
+  const QuadraturePoint point =
+      quadrature_point(topology, axisymmetric_integration_degree(topology), q);
+  double det_J = 0.0;
+  const ElementStatus status = shape_gradients(topology, 2, X, point.xi, p.N, p.G, det_J);
+  if (status != ElementStatus::ok) return status;
+  p.radius = axisymmetric_radius(nodes, X, p.N);
+  if (!(p.radius > 0.0)) return ElementStatus::inverted;
+  p.dV = axisymmetric_two_pi * p.radius * point.weight * det_J;
+  for (int a = 0; a < nodes; ++a) p.h[a] = p.N[a] / p.radius;
+  return ElementStatus::ok;
+}
+
+/// \brief H_ij = u_i,j and the hoop strain u_r / r at point p.
+template <class Scalar>
+GROUT_INLINE_FUNCTION void axisymmetric_strains(int nodes, const Scalar* u,
+                                                const AxisymmetricPoint& p, Scalar (&H)[2][2],
+                                                Scalar& hoop) {
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) {
+      H[i][j] = 0.0;
+      for (int a = 0; a < nodes; ++a) H[i][j] += u[a * 2 + i] * p.G[a * 2 + j];
+    }
+  hoop = 0.0;
+  for (int a = 0; a < nodes; ++a) hoop += u[a * 2] * p.h[a];
+}
+
 /// \brief Internal force and, if K != nullptr, the stiffness of one axisymmetric element
 /// (formulas in the file comment).
 /// \pre X, u: [nodes * 2] node-major (u0r u0z u1r ...); f_int: [n], K: [n * n] row-major.
@@ -59,26 +97,16 @@ GROUT_INLINE_FUNCTION ElementStatus axisymmetric_elastic_element(Topology topolo
   if (K)
     for (int r = 0; r < n * n; ++r) K[r] = 0.0;
 
-  const int degree = axisymmetric_integration_degree(topology);
-  const int num_points = quadrature_num_points(topology, degree);
+  const int num_points = quadrature_num_points(topology, axisymmetric_integration_degree(topology));
   for (int q = 0; q < num_points; ++q) {
-    const QuadraturePoint p = quadrature_point(topology, degree, q);
-    double N[max_element_nodes], G[max_element_nodes * 3], det_J = 0.0;
-    const ElementStatus status = shape_gradients(topology, 2, X, p.xi, N, G, det_J);
+    AxisymmetricPoint pt;
+    const ElementStatus status = axisymmetric_point(topology, X, q, pt);
     if (status != ElementStatus::ok) return status;
-    const double radius = axisymmetric_radius(nodes, X, N);
-    if (!(radius > 0.0)) return ElementStatus::inverted;
-    const double dV = axisymmetric_two_pi * radius * p.weight * det_J;
-    double h[max_element_nodes];  // N_a / r
-    for (int a = 0; a < nodes; ++a) h[a] = N[a] / radius;
-
-    Scalar H[2][2], hoop = 0.0;  // H_ij = u_i,j; hoop = u_r / r
-    for (int i = 0; i < 2; ++i)
-      for (int j = 0; j < 2; ++j) {
-        H[i][j] = 0.0;
-        for (int a = 0; a < nodes; ++a) H[i][j] += u[a * 2 + i] * G[a * 2 + j];
-      }
-    for (int a = 0; a < nodes; ++a) hoop += u[a * 2] * h[a];
+    const double* G = pt.G;
+    const double* h = pt.h;
+    const double dV = pt.dV;
+    Scalar H[2][2], hoop;  // H_ij = u_i,j; hoop = u_r / r
+    axisymmetric_strains(nodes, u, pt, H, hoop);
     const Scalar trace = H[0][0] + H[1][1] + hoop;
     Scalar sigma[2][2];
     for (int i = 0; i < 2; ++i)
@@ -123,22 +151,14 @@ GROUT_INLINE_FUNCTION ElementStatus axisymmetric_elastic_stress(Topology topolog
   if (topology != Topology::tri3 && topology != Topology::quad4) return ElementStatus::unsupported;
   const int nodes = topology_num_nodes(topology);
   double s[4] = {0.0, 0.0, 0.0, 0.0}, volume = 0.0;
-  const int degree = axisymmetric_integration_degree(topology);
-  const int num_points = quadrature_num_points(topology, degree);
+  const int num_points = quadrature_num_points(topology, axisymmetric_integration_degree(topology));
   for (int q = 0; q < num_points; ++q) {
-    const QuadraturePoint p = quadrature_point(topology, degree, q);
-    double N[max_element_nodes], G[max_element_nodes * 3], det_J = 0.0;
-    const ElementStatus status = shape_gradients(topology, 2, X, p.xi, N, G, det_J);
+    AxisymmetricPoint pt;
+    const ElementStatus status = axisymmetric_point(topology, X, q, pt);
     if (status != ElementStatus::ok) return status;
-    const double radius = axisymmetric_radius(nodes, X, N);
-    if (!(radius > 0.0)) return ElementStatus::inverted;
-    const double dV = axisymmetric_two_pi * radius * p.weight * det_J;
-    double H[2][2] = {{0.0, 0.0}, {0.0, 0.0}}, hoop = 0.0;
-    for (int a = 0; a < nodes; ++a) {
-      for (int i = 0; i < 2; ++i)
-        for (int j = 0; j < 2; ++j) H[i][j] += u[a * 2 + i] * G[a * 2 + j];
-      hoop += u[a * 2] * N[a] / radius;
-    }
+    const double dV = pt.dV;
+    double H[2][2], hoop;
+    axisymmetric_strains(nodes, u, pt, H, hoop);
     const double trace = H[0][0] + H[1][1] + hoop;
     s[0] += (2.0 * c.mu * H[0][0] + c.lambda * trace) * dV;
     s[1] += (2.0 * c.mu * H[1][1] + c.lambda * trace) * dV;
