@@ -99,7 +99,7 @@ GROUT_INLINE_FUNCTION ElementStatus axisymmetric_elastic_element(Topology topolo
 
   const int num_points = quadrature_num_points(topology, axisymmetric_integration_degree(topology));
   for (int q = 0; q < num_points; ++q) {
-    AxisymmetricPoint pt;
+    AxisymmetricPoint pt{};  // zeroed: GCC cannot see that shape_gradients fills it
     const ElementStatus status = axisymmetric_point(topology, X, q, pt);
     if (status != ElementStatus::ok) return status;
     const double* G = pt.G;
@@ -153,7 +153,7 @@ GROUT_INLINE_FUNCTION ElementStatus axisymmetric_elastic_stress(Topology topolog
   double s[4] = {0.0, 0.0, 0.0, 0.0}, volume = 0.0;
   const int num_points = quadrature_num_points(topology, axisymmetric_integration_degree(topology));
   for (int q = 0; q < num_points; ++q) {
-    AxisymmetricPoint pt;
+    AxisymmetricPoint pt{};  // zeroed: GCC cannot see that shape_gradients fills it
     const ElementStatus status = axisymmetric_point(topology, X, q, pt);
     if (status != ElementStatus::ok) return status;
     const double dV = pt.dV;
