@@ -359,8 +359,10 @@ std::vector<ContactInterface::NodeResult> ContactInterface::node_results() const
   std::vector<NodeResult> out;
   for (std::size_t q = 0; q < owned_.size(); ++q) {
     NodeResult r{
-        surface_.slave_nodes[owned_[q]], pressure_[q], gap_[q], double(active_[q]), {}, {}};
+        surface_.slave_nodes[owned_[q]], pressure_[q], gap_[q], double(active_[q]), {}, {}, {}};
+    const ContactMortar& m = current_geometry_ ? current_ : reference_;
     for (int d = 0; d < dim_; ++d) {
+      r.normal[d] = m.frames.size() > std::size_t(owned_[q]) ? m.frames[owned_[q]].n[d] : 0.0;
       r.lambda[d] = lambda_[q][d];
       double slip = slip_accumulated_[q][d];
       for (int k = 0; k < dim_ - 1; ++k)  // this step's increment, not yet committed

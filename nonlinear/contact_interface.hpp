@@ -100,6 +100,7 @@ class ContactInterface {
     GlobalIndex node;
     double pressure, gap, status;
     double lambda[3], slip[3];
+    double normal[3];  ///< the unit normal n_j of the geometry in use (reference or current)
   };
   std::vector<NodeResult> node_results() const;
   /// Per owned slave node's e_j of ContactStepEnergy: (closing part, other part), and whether

@@ -73,6 +73,20 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
   reaction_ = solid.create_vector();
   K_solid_ = solid.create_matrix();
   prescribed_.assign(num_u_, std::numeric_limits<double>::quiet_NaN());
+  rotation_limit_ = std::make_unique<FreeRotationLimit>(mesh, input, map_);
+  if (rotation_limit_->num_bodies() == 0) rotation_limit_.reset();
+}
+
+void MechanicsProblem::limit_step(const Vector& /*x*/, Vector& step) {
+  if (!rotation_limit_) return;
+  std::vector<std::vector<ContactNode>> active(input_.contact.size()), slave(active.size());
+  for (std::size_t i = 0; i < interfaces_.size(); ++i)
+    for (const ContactInterface::NodeResult& r : interfaces_[i]->node_results()) {
+      const ContactNode node{r.node, {r.normal[0], r.normal[1], r.normal[2]}};
+      slave[i].push_back(node);
+      if (r.status != 0.0) active[i].push_back(node);
+    }
+  last_rotation_slide_ = rotation_limit_->limit(prescribed_, active, slave, step);
 }
 
 MechanicsProblem::~MechanicsProblem() = default;

@@ -33,6 +33,7 @@
 
 #include "assembly/solid_problem.hpp"
 #include "nonlinear/contact_interface.hpp"
+#include "nonlinear/free_rotation_limit.hpp"
 #include "nonlinear/nonlinear_problem.hpp"
 
 namespace grout {
@@ -89,6 +90,11 @@ class MechanicsProblem : public NonlinearProblem {
   const MultiplierRows* multiplier_rows() const override {
     return interfaces_.empty() ? nullptr : &rows_;
   }
+  /// A free rigid rotation of a frictionless pair's slave body slides its contact nodes by at
+  /// most a tenth of the mean slave face size per step (nonlinear/free_rotation_limit.hpp).
+  void limit_step(const Vector& x, Vector& step) override;
+  /// The largest slide of the last limit_step over the mean slave face size (0: none).
+  double last_rotation_slide() const { return last_rotation_slide_; }
 
   /// Set the load and prescribed displacements of time t, and put the prescribed values
   /// into x (the initial guess of the step).
@@ -135,6 +141,8 @@ class MechanicsProblem : public NonlinearProblem {
   int num_owned_u_ = 0;
   Teuchos::RCP<const Map> map_;
   std::vector<std::unique_ptr<ContactInterface>> interfaces_;
+  std::unique_ptr<FreeRotationLimit> rotation_limit_;  ///< null: no body to limit
+  double last_rotation_slide_ = 0.0;
   MPI_Comm raw_comm_ = MPI_COMM_SELF;
   /// Displacement dofs of the nodes of this rank's slave faces and owned master faces.
   Teuchos::RCP<const Map> base_map_;

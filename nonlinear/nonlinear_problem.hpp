@@ -37,6 +37,10 @@ class NonlinearProblem {
   /// The kinds of the multiplier rows of J at the last residual() call, as the problem
   /// declares them (multiplier_rows.hpp; the condensations are built from them), or nullptr.
   virtual const MultiplierRows* multiplier_rows() const { return nullptr; }
+  /// May shorten parts of the Newton step `step` computed at x (the x of the last residual()
+  /// call) before the line search takes it: F and J stay as they are, so a converged state
+  /// does not depend on it. Collective. Default: the step as solved.
+  virtual void limit_step(const Vector& /*x*/, Vector& /*step*/) {}
 };
 
 }  // namespace grout

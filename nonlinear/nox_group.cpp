@@ -168,6 +168,7 @@ NOX::Abstract::Group::ReturnType NoxGroup::computeNewton(Teuchos::ParameterList&
     return Failed;
   }
   context_->total_linear_iterations += context_->last_linear_iterations;
+  context_->problem.limit_step(x_->tpetra(), newton_->tpetra());
   is_newton_ = true;
   return Ok;
 }
