@@ -91,6 +91,7 @@ ContactInterface::ContactInterface(const Mesh& mesh, const Input& input, const C
   step_energy_.assign(n_owned, 0.0);
   closing_.assign(n_owned, 0);
   candidates_.assign(n_owned, {});
+  weighted_.assign(n_owned, {});
   row_kinds_.assign(n_owned, {LambdaRow::identity, LambdaRow::identity, LambdaRow::identity});
   slip_increment_.assign(n_owned, {0.0, 0.0, 0.0});
   slip_accumulated_.assign(n_owned, {0.0, 0.0, 0.0});
