@@ -78,7 +78,7 @@ R_STAR = 1.0 / (1.0 / R1 + 1.0 / R2)
 HORIZONTAL = {"c0": (-0.20, 0.23), "v": (0.2, 0.0)}
 VERTICAL = {"c0": (0.04, 0.31), "v": (0.0, -0.1)}
 # The refinement study's gmsh tubes (tubes_mesh.py --upper-y 0.2975): Kratos' vertical motion
-# from t = 0.125 on (vertical_tubes.yaml).
+# from t = 0.125 on (vertical_tubes_*.yaml).
 TUBES = {"c0": (0.04, 0.2975), "v": (0.0, -0.1)}
 REF_TOL = 0.05  # the tubes' reference: local term and thick-ring correction (tubes())
 # The refinement study's range of rigid overlaps: from twice the facets' sagitta at the
@@ -114,7 +114,7 @@ def ring_compliance(rm, width, plane_strain, theta, n=720):
     tube's flat faces), loaded radially inwards at angle theta from one end. Timoshenko beam
     theory (bending, stretching, shear with k = 5/6) on n straight two-node frame elements with
     the exact stiffness of a straight Timoshenko beam (Przemieniecki, Theory of Matrix Structural
-    Analysis, 1968, section 5.6); E' = E / (1 - nu^2) in plane strain, E in plane stress. (Without
+    Analysis, 1968, ch. 5); E' = E / (1 - nu^2) in plane strain, E in plane stress. (Without
     shear, such a frame gives a quarter-circle cantilever's tip deflection (3 pi / 4 - 2) P R^3 /
     (E I), Castigliano, to 1e-4 with 400 elements.) Thick-ring corrections (R / wall = 2.75 and
     3.75 here) are a few per cent."""
@@ -273,7 +273,7 @@ TET_SIDES = {1: (0, 1, 3), 2: (1, 2, 3), 3: (0, 3, 2), 4: (0, 2, 1)}
 
 def snap_energy(stem, col):
     """Printed: the snap-off in energies: the kinetic energy against the quasi-static level
-    (1/2 m v^2 of the moved tube at 0.2, about 0.3) and the strain energy released."""
+    (1/2 m v^2 of the moved tube at 0.2: 0.24) and the strain energy released."""
     t, ke, se = col["time"], col["kinetic_energy"], col["strain_energy"]
     k = int(np.argmax(ke))
     before = t < t[k]
