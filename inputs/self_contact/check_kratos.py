@@ -133,34 +133,39 @@ def check_tubes(stem, mesh, ranks, end, short=False, plot=None):
             continue
         r = Results(path + ".e")
         X = r.coordinates().T
-        worst_self, worst_pair, at = 0.0, 0.0, None
+        worst_self, worst_pair, at = 0.0, [0.0, 0.0], None
         for k in range(r.times().size):
             u = np.array([r.nodal("displ_" + c, k) for c in "xyz"]).T
             x = X + u
             w_self = penetration(x, inner, inner, WALL)
-            w_pair = max(penetration(x, sets["upper_outer"], sets["lower_outer"], WALL),
-                         penetration(x, sets["lower_outer"], sets["upper_outer"], WALL))
-            if max(w_self, w_pair) > max(worst_self, worst_pair):
+            # The slave's (upper outer) nodes into the master's faces, and the reverse.
+            w_pair = [penetration(x, sets["upper_outer"], sets["lower_outer"], WALL),
+                      penetration(x, sets["lower_outer"], sets["upper_outer"], WALL)]
+            if max(w_self, *w_pair) > max(worst_self, *worst_pair):
                 at = float(r.times()[k])
-            worst_self, worst_pair = max(worst_self, w_self), max(worst_pair, w_pair)
+            worst_self = max(worst_self, w_self)
+            worst_pair = [max(a, b) for a, b in zip(worst_pair, w_pair)]
         self_active = active_on(r, inner)
         pair_active = active_on(r, sets["upper_outer"])
         first_self = next((k for k in range(r.times().size) if active_on(r, inner, k) > 0), None)
         reaction = [-float(row["reaction_upper_ends_y"]) for row in rows]
         iterations = sum(int(float(row["newton_iterations"])) for row in rows)
         print("%s: %d steps to t = %g (%d Newton iterations); self-contact from t = %s, active at "
-              "the end: %d inner (self), %d outer (tube on tube); penetration %.2e (self), "
-              "%.2e (tube on tube) of the wall (largest at t = %s); reaction on the upper ends "
-              "%.4g at the end" % (path, len(rows), end, iterations,
-                                   "%g" % r.times()[first_self] if first_self is not None else "-",
-                                   self_active, pair_active, worst_self / WALL, worst_pair / WALL,
-                                   at, reaction[-1]))
+              "the end: %d inner (self), %d outer (tube on tube); penetration of the wall: %.2e "
+              "(self), %.2e (upper tube's nodes into the lower's faces), %.2e (lower's into "
+              "upper's), largest at t = %s; reaction on the upper ends %.4g at the end"
+              % (path, len(rows), end, iterations,
+                 "%g" % r.times()[first_self] if first_self is not None else "-", self_active,
+                 pair_active, worst_self / WALL, worst_pair[0] / WALL, worst_pair[1] / WALL, at,
+                 reaction[-1]))
         if self_active == 0 and not short:
             failures.append("%s: no active node on the inner surface at the end (self-contact "
                             "not found)" % path)
         if pair_active == 0:
             failures.append("%s: no active node on the upper tube's outer surface" % path)
-        for what, w in (("self", worst_self), ("tube on tube", worst_pair)):
+        for what, w in (("self", worst_self), ("upper tube's nodes into the lower's faces",
+                                                 worst_pair[0]),
+                        ("lower tube's nodes into the upper's faces", worst_pair[1])):
             if not w <= 0.01 * WALL:
                 failures.append("%s: penetration (%s) %.2e = %.2f %% of the wall (> 1 %%)"
                                 % (path, what, w, 100 * w / WALL))
