@@ -52,8 +52,9 @@ SolidProblem::SolidProblem(const Mesh& mesh, const Input& input, Teuchos::RCP<co
   // Contact slave faces' elements steer the cuts, so that the contact work is shared.
   std::vector<GlobalIndex> contact_elements;
   for (const ContactInput& c : input.contact)
-    if (const SideSet* set = mesh.find_side_set(c.slave))
-      contact_elements.insert(contact_elements.end(), set->elements.begin(), set->elements.end());
+    for (const std::string& name : contact_side_sets(c, false))
+      if (const SideSet* set = mesh.find_side_set(name))
+        contact_elements.insert(contact_elements.end(), set->elements.begin(), set->elements.end());
   const Partition partition = partition_mesh(mesh, comm_->getSize(), contact_elements);
   build_maps(partition);
   build_blocks(partition);
