@@ -37,18 +37,22 @@ std::string write_mesh(const Mesh& mesh, const std::string& name) {
   return path;
 }
 
-Input make_input(int dim, StrainKind strain, const std::string& load_set,
+/// One material per block of `mesh` (Young's modulus differing from block to block).
+Input make_input(const Mesh& mesh, StrainKind strain, const std::string& load_set,
                  const std::string& fixed_set) {
+  const int dim = mesh.dimension;
   Input input;
   input.file = "test.yaml";
   input.model.dimension = dim;
   input.model.strain = strain;
-  MaterialInput m;
-  m.name = m.block = "block";
-  m.law = strain == StrainKind::finite ? MaterialLaw::neo_hookean : MaterialLaw::linear_elastic;
-  m.youngs_modulus = 1000.0;
-  m.poissons_ratio = 0.3;
-  input.materials.push_back(m);
+  for (const ElementBlock& block : mesh.blocks) {
+    MaterialInput m;
+    m.name = m.block = block.name;
+    m.law = strain == StrainKind::finite ? MaterialLaw::neo_hookean : MaterialLaw::linear_elastic;
+    m.youngs_modulus = 1000.0 * double(input.materials.size() + 1);
+    m.poissons_ratio = 0.3;
+    input.materials.push_back(m);
+  }
   LoadInput load;
   load.name = "push";
   load.side_set = load_set;
@@ -117,7 +121,7 @@ void check(const Mesh& generated, const std::string& name, StrainKind strain,
   const std::string path = write_mesh(generated, name);
   const Mesh mesh = read_exodus(path);
   const DistributedMesh part = read_distributed_mesh(*comm, path);
-  const Input input = make_input(mesh.dimension, strain, load_set, fixed_set);
+  const Input input = make_input(mesh, strain, load_set, fixed_set);
   const SolidProblem replicated(mesh, input, comm);
   const SolidProblem distributed(mesh_part(part), input, comm);
   ASSERT_EQ(distributed.num_global_nodes(), replicated.num_global_nodes());
@@ -180,7 +184,7 @@ void check(const Mesh& generated, const std::string& name, StrainKind strain,
   const double W_r = replicated.stored_energy(u_r), W_d = distributed.stored_energy(u_d);
   EXPECT_NEAR(W_r, W_d, 1e-14 * std::abs(W_r));
   const auto owned_r = replicated.owned_elements(), owned_d = distributed.owned_elements();
-  EXPECT_TRUE(std::is_sorted(owned_d.begin(), owned_d.end()));  // one block
+  EXPECT_TRUE(std::is_sorted(owned_d.begin(), owned_d.end()));  // blocks in global order
   const auto s_r = replicated.element_stresses(u_r), s_d = distributed.element_stresses(u_d);
   const std::size_t E = std::size_t(mesh.num_elements());
   for (std::size_t c = 0; c < s_r.size(); ++c) {
@@ -211,6 +215,18 @@ TEST(DistributedSolid, TetBoxFiniteStrainMatchReplicated) {
 
 TEST(DistributedSolid, HexBoxSmallStrainMatchReplicated) {
   check(box_mesh(5, 4, 3, {}, false, 0.15), "hex", StrainKind::small, "xmax", "xmin");
+}
+
+TEST(DistributedSolid, TwoBlocksMatchReplicated) {
+  check(two_block_mesh_3d(4, 4, 3, 3, 3, 2, false, 0.01), "hex2", StrainKind::finite, "upper_top",
+        "lower_bottom");
+}
+
+TEST(DistributedSolid, NodeOfNoElementMatchesReplicated) {
+  Mesh mesh = rectangle_mesh(6, 5);
+  mesh.coordinates.insert(mesh.coordinates.end(), {5.0, 5.0});  // owned by rank 0
+  mesh.node_sets[0].nodes.push_back(mesh.num_nodes() - 1);
+  check(mesh, "orphan", StrainKind::small, "top", mesh.node_sets[0].name);
 }
 
 }  // namespace
