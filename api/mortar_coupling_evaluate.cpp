@@ -4,9 +4,9 @@
 //    each pair packed into a compact record instead of a padded MortarPairResult), then one
 //    pass over the slave rows that assembles D and M (CRS) and evaluates
 //    g̃_j = −n_j·(D_jj x¹_j − Σ_l M_jl x²_l) from the assembled row, as the driver does
-//    (nonlinear/mechanics_problem.cpp) — instead of accumulate_weighted_gaps, which would
-//    stream the pair results a second time (mortar_coupling_read_back.cpp: a merge, or a
-//    scatter into the last pattern); with standard multipliers the same launch for full pair
+//    (nonlinear/contact_rows.cpp; kernels/weighted_gap.hpp) — instead of accumulate_weighted_gaps,
+//    which would stream the pair results a second time (mortar_coupling_read_back.cpp: a merge, or
+//    a scatter into the last pattern); with standard multipliers the same launch for full pair
 //    matrices (mortar_integrate_matrices' kernels), and D as CRS too;
 //  - with derivatives: evaluate_contact_mortar (assembly/contact_mortar), the driver's own
 //    contact evaluation: the same launch of the pair kernels in Sacado forward AD
@@ -21,6 +21,7 @@
 #include "assembly/contact_mortar.hpp"
 #include "kernels/mortar_integrate.hpp"
 #include "kernels/surface_normals.hpp"
+#include "kernels/weighted_gap.hpp"
 #include "mortar_coupling_impl.hpp"
 
 namespace grout {
@@ -165,12 +166,10 @@ void MortarCoupling::Impl::evaluate_derivatives() {
       }
     }
     M_offsets[r + 1] = M_columns.size();
-    double g = 0.0;
-    for (int d = 0; d < dim; ++d) {
-      g -= frame.n[d] * v[d];
+    for (int d = 0; d < dim; ++d)
       for (const auto& [dof, dn] : frame.dn[d]) g_grad.emplace_back(dof, -v[d] * dn);
-    }
-    gaps[r] = g;  // exactly 0 on a row without pairs (D = 0, no M entries)
+    // Exactly 0 on a row without pairs (D = 0, no M entries).
+    gaps[r] = weighted_gap_of_row(dim, frame.n, v);
     compress_gradient(g_grad);
     for (const auto& [dof, dv] : g_grad) dg.push_back({int(r), dof, dv});
   }

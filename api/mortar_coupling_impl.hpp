@@ -14,6 +14,7 @@
 #include "grout/mortar_coupling.hpp"
 #include "kernels/coarse_search.hpp"
 #include "kernels/mortar_types.hpp"
+#include "kernels/weighted_gap.hpp"
 #include "node_directory.hpp"
 
 namespace grout {
@@ -158,13 +159,8 @@ struct MortarCoupling::Impl {
   /// Slave row r (its node at position i of the slave surface, −1 if none): the normal n_r and
   /// the weighted gap g̃_r = −n_r · v, v = Σ_k D_rk x_k − Σ_l M_rl x_l (the assembled row).
   void store_row_gap(std::size_t r, int i, const double v[3]) {
-    double g = 0.0;
-    for (int d = 0; d < dim; ++d) {
-      const double n = i >= 0 ? nodal_normals(i, d) : 0.0;
-      normals[r * dim + d] = n;
-      g -= n * v[d];
-    }
-    gaps[r] = g;
+    for (int d = 0; d < dim; ++d) normals[r * dim + d] = i >= 0 ? nodal_normals(i, d) : 0.0;
+    gaps[r] = weighted_gap_of_row(dim, &normals[r * dim], v);
   }
   void fill_diagonal_D();
   void evaluate_derivatives();  ///< evaluate_contact_mortar (values and exact derivatives)

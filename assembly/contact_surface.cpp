@@ -12,38 +12,52 @@ namespace {
 
 using FaceFilter = std::function<bool(const GlobalIndex* nodes, int n)>;
 
-// The faces of the side set that `keep` accepts (all if `keep` is empty), in side-set order.
+// io's contact_side_sets (the contact core links without the input checks): the slave
+// (master = false) or master side's side sets, all those of `self: [a, b, ...]`.
+std::vector<std::string> side_sets_of(const ContactInput& contact, bool master) {
+  if (contact.self && !contact.self_sets.empty()) return contact.self_sets;
+  return {master ? contact.master : contact.slave};
+}
+
+// The faces of the side sets (one, or the sets of `self: [a, b, ...]`, one surface) that
+// `keep` accepts (all if `keep` is empty), in side-set order; a face's id is its position in
+// the sets taken one after the other.
 SurfaceFaces faces_of(const Mesh& mesh, const Input& input, const ContactInput& contact,
-                      const std::string& role, const std::string& set_name,
+                      const std::string& role, const std::vector<std::string>& set_names,
                       const FaceFilter& keep = {}) {
   const std::string key = input.file + ": grout/contact/" + contact.name + "/" + role;
-  const SideSet* set = mesh.find_side_set(set_name);
-  if (!set) throw InputError(key + ": no side set '" + set_name + "' in mesh '" + mesh.file + "'");
-  if (set->elements.empty()) throw InputError(key + ": side set '" + set_name + "' is empty");
   SurfaceFaces faces;
-  for (std::size_t i = 0; i < set->elements.size(); ++i) {
-    const ElementBlock* found = mesh.block_of(set->elements[i]);
-    if (!found) {
-      throw InputError(key + ": side set '" + set_name + "' names element " +
-                       std::to_string(set->elements[i] + 1) + ", which is in no block");
+  GlobalIndex first_id = 0;  // of the set's first face
+  for (const std::string& set_name : set_names) {
+    const SideSet* set = mesh.find_side_set(set_name);
+    if (!set)
+      throw InputError(key + ": no side set '" + set_name + "' in mesh '" + mesh.file + "'");
+    if (set->elements.empty()) throw InputError(key + ": side set '" + set_name + "' is empty");
+    for (std::size_t i = 0; i < set->elements.size(); ++i) {
+      const ElementBlock* found = mesh.block_of(set->elements[i]);
+      if (!found) {
+        throw InputError(key + ": side set '" + set_name + "' names element " +
+                         std::to_string(set->elements[i] + 1) + ", which is in no block");
+      }
+      const ElementBlock& block = *found;
+      int local[max_side_nodes];
+      const int n = side_local_nodes(block.topology, set->sides[i], local);
+      if (n < 2) {
+        throw InputError(key + ": side set '" + set_name + "' has side " +
+                         std::to_string(set->sides[i]) + " of element " +
+                         std::to_string(set->elements[i] + 1) + ", which is not a face");
+      }
+      std::array<GlobalIndex, max_face_nodes> nodes{-1, -1, -1, -1};
+      const GlobalIndex e = set->elements[i] - block.first_element;
+      for (int a = 0; a < n; ++a)
+        nodes[a] = block.connectivity[e * block.nodes_per_element + local[a]];
+      if (keep && !keep(nodes.data(), n)) continue;
+      faces.nodes.push_back(nodes);
+      faces.ids.push_back(first_id + GlobalIndex(i));
+      faces.num_nodes.push_back(n);
+      faces.blocks.push_back(&block);
     }
-    const ElementBlock& block = *found;
-    int local[max_side_nodes];
-    const int n = side_local_nodes(block.topology, set->sides[i], local);
-    if (n < 2) {
-      throw InputError(key + ": side set '" + set_name + "' has side " +
-                       std::to_string(set->sides[i]) + " of element " +
-                       std::to_string(set->elements[i] + 1) + ", which is not a face");
-    }
-    std::array<GlobalIndex, max_face_nodes> nodes{-1, -1, -1, -1};
-    const GlobalIndex e = set->elements[i] - block.first_element;
-    for (int a = 0; a < n; ++a)
-      nodes[a] = block.connectivity[e * block.nodes_per_element + local[a]];
-    if (keep && !keep(nodes.data(), n)) continue;
-    faces.nodes.push_back(nodes);
-    faces.ids.push_back(GlobalIndex(i));
-    faces.num_nodes.push_back(n);
-    faces.blocks.push_back(&block);
+    first_id += GlobalIndex(set->elements.size());
   }
   return faces;
 }
@@ -107,8 +121,10 @@ ContactSurface build_contact_surface(const Mesh& mesh, const Input& input,
   s.type = contact.type;
   s.dimension = mesh.dimension;
   s.self = contact.self;
-  s.slave = faces_of(mesh, input, contact, contact.self ? "self" : "slave", contact.slave);
-  s.master = faces_of(mesh, input, contact, contact.self ? "self" : "master", contact.master);
+  s.slave =
+      faces_of(mesh, input, contact, contact.self ? "self" : "slave", side_sets_of(contact, false));
+  s.master =
+      faces_of(mesh, input, contact, contact.self ? "self" : "master", side_sets_of(contact, true));
   if (!contact.self) check_bodies(mesh, input, contact, s.slave, s.master);
   index_slave_nodes(s);
 
@@ -131,10 +147,10 @@ LocalContactFaces build_local_contact_surface(const Mesh& mesh, const Input& inp
   // The whole surfaces (the mesh is replicated, so every rank finds the same answer).
   const char* const slave_key = contact.self ? "self" : "slave";
   if (contact.self)
-    faces_of(mesh, input, contact, slave_key, contact.slave);  // exists, not empty
+    faces_of(mesh, input, contact, slave_key, side_sets_of(contact, false));  // exists, not empty
   else
-    check_bodies(mesh, input, contact, faces_of(mesh, input, contact, "slave", contact.slave),
-                 faces_of(mesh, input, contact, "master", contact.master));
+    check_bodies(mesh, input, contact, faces_of(mesh, input, contact, "slave", {contact.slave}),
+                 faces_of(mesh, input, contact, "master", {contact.master}));
   s.name = contact.name;
   s.self = contact.self;
   s.type = contact.type;
@@ -145,9 +161,9 @@ LocalContactFaces build_local_contact_surface(const Mesh& mesh, const Input& inp
     return false;
   };
   // Nodes of the faces with an owned node; then every face touching one of them.
-  const std::vector<GlobalIndex> near =
-      unique_nodes(faces_of(mesh, input, contact, slave_key, contact.slave, has_owned));
-  s.slave = faces_of(mesh, input, contact, slave_key, contact.slave,
+  const std::vector<GlobalIndex> near = unique_nodes(
+      faces_of(mesh, input, contact, slave_key, side_sets_of(contact, false), has_owned));
+  s.slave = faces_of(mesh, input, contact, slave_key, side_sets_of(contact, false),
                      [&](const GlobalIndex* nodes, int n) {
                        for (int a = 0; a < n; ++a)
                          if (std::binary_search(near.begin(), near.end(), nodes[a])) return true;
@@ -157,7 +173,7 @@ LocalContactFaces build_local_contact_surface(const Mesh& mesh, const Input& inp
   for (std::size_t f = 0; f < s.slave.size(); ++f)
     s.integrate[f] = has_owned(s.slave.nodes[f].data(), s.slave.num_nodes[f]);
   index_slave_nodes(s);
-  local.owned_master = faces_of(mesh, input, contact, "master", contact.master,
+  local.owned_master = faces_of(mesh, input, contact, "master", side_sets_of(contact, true),
                                 [&](const GlobalIndex* nodes, int n) {
                                   for (int a = 0; a < n && !contact.self; ++a) {
                                     // an owned slave node?
@@ -182,21 +198,23 @@ void set_master_faces(ContactSurface& s, SurfaceFaces master) {
 
 namespace {
 
-// Calls visit(nodes, n) for each face of the side set, in side-set order.
+// Calls visit(nodes, n) for each face of the side sets, in side-set order.
 template <class Visit>
-void for_each_side(const Mesh& mesh, const std::string& set_name, Visit visit) {
-  const SideSet* set = mesh.find_side_set(set_name);
-  if (!set) return;
-  for (std::size_t i = 0; i < set->elements.size(); ++i) {
-    const ElementBlock* block = mesh.block_of(set->elements[i]);
-    if (!block) continue;
-    int local[max_side_nodes];
-    GlobalIndex nodes[max_side_nodes];
-    const int n = side_local_nodes(block->topology, set->sides[i], local);
-    const GlobalIndex e = set->elements[i] - block->first_element;
-    for (int a = 0; a < n; ++a)
-      nodes[a] = block->connectivity[e * block->nodes_per_element + local[a]];
-    visit(nodes, n);
+void for_each_side(const Mesh& mesh, const std::vector<std::string>& set_names, Visit visit) {
+  for (const std::string& set_name : set_names) {
+    const SideSet* set = mesh.find_side_set(set_name);
+    if (!set) continue;
+    for (std::size_t i = 0; i < set->elements.size(); ++i) {
+      const ElementBlock* block = mesh.block_of(set->elements[i]);
+      if (!block) continue;
+      int local[max_side_nodes];
+      GlobalIndex nodes[max_side_nodes];
+      const int n = side_local_nodes(block->topology, set->sides[i], local);
+      const GlobalIndex e = set->elements[i] - block->first_element;
+      for (int a = 0; a < n; ++a)
+        nodes[a] = block->connectivity[e * block->nodes_per_element + local[a]];
+      visit(nodes, n);
+    }
   }
 }
 
@@ -256,19 +274,20 @@ double face_size(const Mesh& mesh, const GlobalIndex* nodes, int n) {
   return extent;
 }
 
-double mean_face_size(const Mesh& mesh, const std::string& set_name) {
+double mean_face_size(const Mesh& mesh, const std::vector<std::string>& set_names) {
   double sum = 0.0;
   std::size_t count = 0;
-  for_each_side(mesh, set_name, [&](const GlobalIndex* nodes, int n) {
+  for_each_side(mesh, set_names, [&](const GlobalIndex* nodes, int n) {
     sum += face_size(mesh, nodes, n);
     ++count;
   });
   return count ? sum / double(count) : 0.0;
 }
 
-std::vector<GlobalIndex> side_set_nodes(const Mesh& mesh, const std::string& set_name) {
+std::vector<GlobalIndex> side_set_nodes(const Mesh& mesh,
+                                        const std::vector<std::string>& set_names) {
   std::vector<GlobalIndex> nodes;
-  for_each_side(mesh, set_name,
+  for_each_side(mesh, set_names,
                 [&](const GlobalIndex* face, int n) { nodes.insert(nodes.end(), face, face + n); });
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());

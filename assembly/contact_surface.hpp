@@ -91,13 +91,16 @@ std::vector<signed char> self_contact_sides(GlobalIndex n_faces,
                                             const std::vector<long long>& pairs,
                                             const std::vector<signed char>& keep = {});
 
-/// Mean longest edge of the faces of a side set, summed in side-set order (the same value on
-/// every rank of a replicated mesh); 0 if there is no such set.
-double mean_face_size(const Mesh& mesh, const std::string& set_name);
+/// Mean longest edge of the faces of side sets (one, or those of `self: [a, b, ...]`), summed
+/// in side-set order (the same value on every rank of a replicated mesh); 0 if there is no
+/// such set.
+double mean_face_size(const Mesh& mesh, const std::vector<std::string>& set_names);
 /// Longest edge of a face (its n nodes, in order).
 double face_size(const Mesh& mesh, const GlobalIndex* nodes, int n);
 
-/// The nodes of a side set, sorted and unique (empty if there is no such set).
-std::vector<GlobalIndex> side_set_nodes(const Mesh& mesh, const std::string& set_name);
+/// The nodes of side sets (one, or those of `self: [a, b, ...]`), sorted and unique (empty if
+/// there is no such set).
+std::vector<GlobalIndex> side_set_nodes(const Mesh& mesh,
+                                        const std::vector<std::string>& set_names);
 
 }  // namespace grout

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numeric>
-#include <unordered_map>
 
 #include <Teuchos_CommHelpers.hpp>
 
@@ -24,12 +24,21 @@ const MaterialInput& material_of(const Input& input, const ElementBlock& block) 
 }
 
 // A rank assembles the elements that touch one of its nodes (for its rows) and computes
-// the stresses of its own elements, whose nodes may all belong to other ranks.
-bool is_local_element(const Partition& partition, int rank, GlobalIndex element,
-                      const GlobalIndex* conn, int npe) {
-  return partition.element_part[element] == rank ||
-         std::any_of(conn, conn + npe,
-                     [&](GlobalIndex n) { return partition.node_part[n] == rank; });
+// the stresses of its own elements, whose nodes may all belong to other ranks. One flag per
+// element of part.local.
+std::vector<char> assembled_elements(const MeshPart& part, int rank) {
+  std::vector<char> assembled(std::size_t(part.local.num_elements()), 0);
+  for (const auto& block : part.local.blocks) {
+    const int npe = block.nodes_per_element;
+    for (GlobalIndex i = 0; i < block.num_elements(); ++i) {
+      const GlobalIndex e = block.first_element + i;
+      const GlobalIndex* conn = &block.connectivity[i * npe];
+      assembled[e] =
+          part.element_owner[e] == rank ||
+          std::any_of(conn, conn + npe, [&](GlobalIndex n) { return part.node_owner[n] == rank; });
+    }
+  }
+  return assembled;
 }
 
 // The element's size: its largest node distance from node 0 (X: npe points of dim
@@ -48,48 +57,79 @@ double element_size(int npe, int dim, const double* X) {
 
 SolidProblem::SolidProblem(const Mesh& mesh, const Input& input, Teuchos::RCP<const Comm> comm)
     : mesh_(mesh), input_(input), comm_(std::move(comm)), dim_(mesh.dimension) {
-  num_nodes_ = mesh.num_nodes();
   // Contact slave faces' elements steer the cuts, so that the contact work is shared.
   std::vector<GlobalIndex> contact_elements;
   for (const ContactInput& c : input.contact)
-    if (const SideSet* set = mesh.find_side_set(c.slave))
-      contact_elements.insert(contact_elements.end(), set->elements.begin(), set->elements.end());
+    for (const std::string& name : contact_side_sets(c, false))
+      if (const SideSet* set = mesh.find_side_set(name))
+        contact_elements.insert(contact_elements.end(), set->elements.begin(), set->elements.end());
   const Partition partition = partition_mesh(mesh, comm_->getSize(), contact_elements);
-  build_maps(partition);
-  build_blocks(partition);
-  build_graph();
-  build_loads();
-  for (const auto& d : input.dirichlet) dirichlet_.push_back(&d);
+  // The replicated mesh as a part: local numbers are global, for nodes and elements alike
+  // (node_gid_ stays empty).
+  std::vector<GlobalIndex> identity(std::size_t(std::max(mesh.num_nodes(), mesh.num_elements())));
+  std::iota(identity.begin(), identity.end(), GlobalIndex(0));
+  build(MeshPart{mesh, mesh.num_nodes(), mesh.num_elements(), identity, partition.node_part,
+                 identity, partition.element_part});
 }
 
-// Owned nodes: those the partition gives this rank. Column nodes: owned first (same order as
-// the row map), then every other node of an element touching an owned node, ascending.
-void SolidProblem::build_maps(const Partition& partition) {
+SolidProblem::SolidProblem(const MeshPart& part, const Input& input, Teuchos::RCP<const Comm> comm)
+    : mesh_(part.local),
+      input_(input),
+      comm_(std::move(comm)),
+      dim_(part.local.dimension),
+      node_gid_(part.node_gid) {
+  build(part);
+}
+
+void SolidProblem::build(const MeshPart& part) {
+  num_nodes_ = part.global_num_nodes;
+  num_elements_ = part.global_num_elements;
+  const std::vector<char> assembled = assembled_elements(part, comm_->getRank());
+  build_maps(part, assembled);
+  build_blocks(part, assembled);
+  build_graph();
+  build_loads();
+  column_of_local_ = {};
+  for (const auto& d : input_.dirichlet) dirichlet_.push_back(&d);
+}
+
+// Owned nodes: those the partition gives this rank, ascending global id. Column nodes: owned
+// first (same order as the row map), then every other node of an assembled element, ascending.
+void SolidProblem::build_maps(const MeshPart& part, const std::vector<char>& assembled) {
   const int rank = comm_->getRank();
-  std::vector<char> is_column(num_nodes_, 0);
-  for (GlobalIndex n = 0; n < num_nodes_; ++n) {
-    if (partition.node_part[n] == rank) {
-      column_nodes_.push_back(n);
-      is_column[n] = 2;
+  const Mesh& mesh = part.local;
+  const std::size_t n_local = std::size_t(mesh.num_nodes());
+  std::vector<std::pair<GlobalIndex, GlobalIndex>> owned, ghosts;  // (global, local)
+  std::vector<char> is_column(n_local, 0);
+  for (std::size_t n = 0; n < n_local; ++n) {
+    if (part.node_owner[n] == rank) {
+      owned.emplace_back(part.node_gid[n], GlobalIndex(n));
+      is_column[n] = 1;
     }
   }
-  num_owned_nodes_ = int(column_nodes_.size());
-  std::vector<GlobalIndex> ghosts;
-  for (const auto& block : mesh_.blocks) {
+  for (const auto& block : mesh.blocks) {
     const int npe = block.nodes_per_element;
-    for (GlobalIndex e = 0; e < block.num_elements(); ++e) {
-      const GlobalIndex* conn = &block.connectivity[e * npe];
-      if (!is_local_element(partition, rank, block.first_element + e, conn, npe)) continue;
+    for (GlobalIndex i = 0; i < block.num_elements(); ++i) {
+      if (!assembled[block.first_element + i]) continue;
       for (int a = 0; a < npe; ++a) {
-        if (!is_column[conn[a]]) {
-          is_column[conn[a]] = 1;
-          ghosts.push_back(conn[a]);
+        const GlobalIndex n = block.connectivity[i * npe + a];
+        if (!is_column[n]) {
+          is_column[n] = 1;
+          ghosts.emplace_back(part.node_gid[n], n);
         }
       }
     }
   }
+  std::sort(owned.begin(), owned.end());
   std::sort(ghosts.begin(), ghosts.end());
-  column_nodes_.insert(column_nodes_.end(), ghosts.begin(), ghosts.end());
+  num_owned_nodes_ = int(owned.size());
+  std::vector<std::pair<GlobalIndex, GlobalIndex>>& column_nodes = owned;  // owned, then ghosts
+  column_nodes.insert(column_nodes.end(), ghosts.begin(), ghosts.end());
+  column_of_local_.assign(n_local, -1);
+  for (std::size_t k = 0; k < column_nodes.size(); ++k) {
+    column_nodes_.push_back(column_nodes[k].first);
+    column_of_local_[column_nodes[k].second] = int(k);
+  }
 
   auto dofs_of = [&](std::size_t count) {
     std::vector<GO> dofs(count * dim_);
@@ -97,36 +137,35 @@ void SolidProblem::build_maps(const Partition& partition) {
       for (int c = 0; c < dim_; ++c) dofs[k * dim_ + c] = column_nodes_[k] * dim_ + c;
     return dofs;
   };
-  const auto owned = dofs_of(num_owned_nodes_);
+  const auto owned_dofs = dofs_of(num_owned_nodes_);
   const auto column = dofs_of(column_nodes_.size());
   const GO n_global = num_nodes_ * dim_;
-  owned_map_ = Teuchos::rcp(new Map(n_global, owned.data(), owned.size(), 0, comm_));
+  owned_map_ = Teuchos::rcp(new Map(n_global, owned_dofs.data(), owned_dofs.size(), 0, comm_));
   column_map_ = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
                                      column.data(), column.size(), 0, comm_));
   importer_ = Teuchos::rcp(new Import(owned_map_, column_map_));
 
   column_coordinates_ =
       Kokkos::View<double**>("grout::column_coordinates", column_nodes_.size(), dim_);
-  for (std::size_t k = 0; k < column_nodes_.size(); ++k)
+  for (std::size_t k = 0; k < column_nodes.size(); ++k)
     for (int d = 0; d < dim_; ++d)
-      column_coordinates_(k, d) = mesh_.coordinates[column_nodes_[k] * dim_ + d];
+      column_coordinates_(k, d) = mesh.coordinates[column_nodes[k].second * dim_ + d];
 }
 
-void SolidProblem::build_blocks(const Partition& partition) {
+// Each block's assembled elements in ascending global id: the order in which every row sums
+// them, whichever mesh they come from.
+void SolidProblem::build_blocks(const MeshPart& part, const std::vector<char>& assembled) {
   const int rank = comm_->getRank();
-  std::unordered_map<GlobalIndex, int> column_index;
-  column_index.reserve(column_nodes_.size() * 2);
-  for (std::size_t k = 0; k < column_nodes_.size(); ++k) column_index[column_nodes_[k]] = int(k);
-
   const bool plane_stress = input_.model.plane == PlaneKind::stress;
-  for (const auto& block : mesh_.blocks) {
+  for (const auto& block : part.local.blocks) {
     const MaterialInput& material = material_of(input_, block);
     const int npe = block.nodes_per_element;
-    std::vector<GlobalIndex> local;
-    for (GlobalIndex e = 0; e < block.num_elements(); ++e) {
-      const GlobalIndex* conn = &block.connectivity[e * npe];
-      if (is_local_element(partition, rank, block.first_element + e, conn, npe)) local.push_back(e);
+    std::vector<std::pair<GlobalIndex, GlobalIndex>> local;  // (global, local) element
+    for (GlobalIndex i = 0; i < block.num_elements(); ++i) {
+      const GlobalIndex e = block.first_element + i;
+      if (assembled[e]) local.emplace_back(part.element_gid[e], e);
     }
+    std::sort(local.begin(), local.end());
     LocalBlock lb;
     lb.name = block.name;
     lb.topology = block.topology;
@@ -149,11 +188,11 @@ void SolidProblem::build_blocks(const Partition& partition) {
     lb.global = Kokkos::View<GlobalIndex*>("grout::block_elements", local.size());
     lb.owned = Kokkos::View<bool*>("grout::block_owned", local.size());
     for (std::size_t i = 0; i < local.size(); ++i) {
-      const GlobalIndex e = local[i];
-      for (int a = 0; a < npe; ++a)
-        lb.nodes(i, a) = column_index.at(block.connectivity[e * npe + a]);
-      lb.global(i) = block.first_element + e;
-      lb.owned(i) = partition.element_part[block.first_element + e] == rank;
+      const auto [global, e] = local[i];
+      const GlobalIndex* conn = &block.connectivity[(e - block.first_element) * npe];
+      for (int a = 0; a < npe; ++a) lb.nodes(i, a) = column_of_local_[conn[a]];
+      lb.global(i) = global;
+      lb.owned(i) = part.element_owner[e] == rank;
     }
     blocks_.push_back(lb);
   }
@@ -196,8 +235,6 @@ void SolidProblem::build_graph() {
 }
 
 void SolidProblem::build_loads() {
-  std::unordered_map<GlobalIndex, int> column_index;
-  for (std::size_t k = 0; k < column_nodes_.size(); ++k) column_index[column_nodes_[k]] = int(k);
   for (std::size_t l = 0; l < input_.loads.size(); ++l) {
     const SideSet* set = mesh_.find_side_set(input_.loads[l].side_set);
     if (!set) {
@@ -218,8 +255,7 @@ void SolidProblem::build_loads() {
       for (int a = 0; a < n; ++a) {
         const GlobalIndex node =
             block->connectivity[(e - block->first_element) * block->nodes_per_element + local[a]];
-        const auto it = column_index.find(node);
-        face.nodes[a] = it == column_index.end() ? -1 : it->second;
+        face.nodes[a] = column_of_local_[node];
         touches_owned |= face.nodes[a] >= 0 && face.nodes[a] < num_owned_nodes_;
       }
       if (touches_owned) faces_.push_back(face);
@@ -463,10 +499,11 @@ std::vector<double> SolidProblem::prescribed_displacements(double t) const {
       throw InputError(input_.file + ": grout/dirichlet/" + bc->name + "/node_set: no node set '" +
                        bc->node_set + "' in mesh '" + mesh_.file + "'");
     }
-    for (GlobalIndex n : set->nodes) {
+    for (GlobalIndex n : set->nodes) {  // nodes of mesh_
       double x[3] = {0.0, 0.0, 0.0};
       for (int d = 0; d < dim_; ++d) x[d] = mesh_.coordinates[n * dim_ + d];
-      value[n * dim_ + bc->component] = bc->value(t, x[0], x[1], x[2]);
+      const GlobalIndex global = node_gid_.empty() ? n : node_gid_[n];
+      value[global * dim_ + bc->component] = bc->value(t, x[0], x[1], x[2]);
     }
   }
   return value;
@@ -521,6 +558,34 @@ std::vector<std::vector<double>> SolidProblem::element_stresses(const Vector& u)
 std::vector<std::string> SolidProblem::stress_names() const {
   if (dim_ == 2) return {"stress_xx", "stress_yy", "stress_zz", "stress_xy"};
   return {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_zx"};
+}
+
+std::string describe_solid_holdings(const SolidProblem& solid) {
+  const Comm& comm = *solid.comm();
+  long long mine[4] = {solid.num_owned_nodes(), 0, 0, 0};
+  mine[1] = (long long)solid.column_coordinates().extent(0) - mine[0];
+  for (const auto& block : solid.local_blocks())
+    for (std::size_t e = 0; e < block.owned.extent(0); ++e) ++mine[block.owned(e) ? 2 : 3];
+  std::vector<long long> all(std::size_t(4 * comm.getSize()));
+  Teuchos::gatherAll(comm, 4, mine, int(all.size()), all.data());
+  if (comm.getRank() != 0) return {};
+  const auto percent = [](long long a, GlobalIndex b) {
+    return b > 0 ? 100.0 * double(a) / double(b) : 0.0;
+  };
+  std::string text;
+  for (int r = 0; r < comm.getSize(); ++r) {
+    const long long* c = all.data() + 4 * r;
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "solid on rank %d: nodes %lld owned + %lld ghost (%.1f %% of %lld), elements "
+                  "%lld owned + %lld ghost (%.1f %% of %lld)\n",
+                  r, c[0], c[1], percent(c[0] + c[1], solid.num_global_nodes()),
+                  (long long)solid.num_global_nodes(), c[2], c[3],
+                  percent(c[2] + c[3], solid.num_global_elements()),
+                  (long long)solid.num_global_elements());
+    text += line;
+  }
+  return text;
 }
 
 }  // namespace grout

@@ -2,17 +2,19 @@
 // The small-strain solid on Tpetra: dof maps, the matrix graph, element assembly of the
 // internal force and tangent, surface loads, prescribed displacements and element stresses.
 //
-// Distribution ("owner computes"): the mesh is replicated; a rank owns the nodes of the
-// partition and assembles, for its owned rows only, every element touching an owned node
-// (its own elements plus a layer of ghost elements). No assembly communication is needed,
-// and each row sums its element contributions in global element order, so the matrix and
-// residual are the same on any number of ranks.
+// Distribution ("owner computes"): a rank owns the nodes of the partition and assembles, for
+// its owned rows only, every element touching an owned node (its own elements plus a layer of
+// ghost elements). No assembly communication is needed, and each row sums its element
+// contributions in global element order, so the matrix and residual are the same on any number
+// of ranks and from either mesh: the replicated one (partitioned here, assembly/partition.hpp)
+// or one rank's part of the distributed one (assembly/mesh_part.hpp).
 
 #include <Kokkos_Core.hpp>
 #include <Teuchos_RCP.hpp>
 #include <string>
 #include <vector>
 
+#include "assembly/mesh_part.hpp"
 #include "assembly/partition.hpp"
 #include "assembly/tpetra_types.hpp"
 #include "io/input.hpp"
@@ -49,7 +51,13 @@ struct LoadedFace {
 
 class SolidProblem {
  public:
+  /// From the replicated mesh (every rank holds all of it): partitioned here by
+  /// partition_mesh, contact slave faces' elements steering the cuts.
   SolidProblem(const Mesh& mesh, const Input& input, Teuchos::RCP<const Comm> comm);
+  /// From this rank's part of a mesh, partitioned already (the owners of `part`). The same
+  /// global numbering (dof n*dim + c of global node n) and the same per-row sums as the
+  /// replicated path; `part.local` must outlive the problem (the vectors need not).
+  SolidProblem(const MeshPart& part, const Input& input, Teuchos::RCP<const Comm> comm);
 
   int dimension() const { return dim_; }
   const Teuchos::RCP<const Comm>& comm() const { return comm_; }
@@ -90,7 +98,8 @@ class SolidProblem {
   /// Consistent nodal forces of the pressure/traction loads at time t (owned rows).
   void external_force(double t, Vector& f_ext) const;
 
-  /// Prescribed displacement per global dof at time t (NaN where free), on every rank.
+  /// Prescribed displacement per global dof at time t (NaN where free), on every rank; from
+  /// a mesh part, of its nodes only (owned and ghost: every column of the solid's rows).
   std::vector<double> prescribed_displacements(double t) const;
 
   /// Volume-averaged stress of this rank's own elements in the order of stress_names() (the
@@ -104,6 +113,7 @@ class SolidProblem {
   std::vector<std::string> stress_names() const;
 
   GlobalIndex num_global_nodes() const { return num_nodes_; }
+  GlobalIndex num_global_elements() const { return num_elements_; }
   /// The element blocks this rank assembles (own elements plus a ghost layer), column-map
   /// node indices, and the reference coordinates of the column-map nodes.
   const std::vector<LocalBlock>& local_blocks() const { return blocks_; }
@@ -113,17 +123,21 @@ class SolidProblem {
   int num_owned_nodes() const { return num_owned_nodes_; }
 
  private:
-  void build_maps(const Partition& partition);
-  void build_blocks(const Partition& partition);
+  void build(const MeshPart& part);
+  void build_maps(const MeshPart& part, const std::vector<char>& assembled);
+  void build_blocks(const MeshPart& part, const std::vector<char>& assembled);
   void build_graph();
   void build_loads();
   Kokkos::View<double**> column_coordinates_;  ///< [column node][d]
 
-  const Mesh& mesh_;
+  const Mesh& mesh_;  ///< the replicated mesh or this rank's part (local numbering)
   const Input& input_;
   Teuchos::RCP<const Comm> comm_;
   int dim_ = 2;
-  GlobalIndex num_nodes_ = 0;
+  GlobalIndex num_nodes_ = 0, num_elements_ = 0;
+  /// Global node of each node of mesh_; empty for the replicated mesh (the identity).
+  std::vector<GlobalIndex> node_gid_;
+  std::vector<int> column_of_local_;  ///< mesh_ node -> column-map node, -1; construction only
   int num_owned_nodes_ = 0;
   std::vector<GlobalIndex> column_nodes_;  ///< column-map node -> global node
   Teuchos::RCP<const Map> owned_map_, column_map_;
@@ -134,5 +148,10 @@ class SolidProblem {
   std::vector<const DirichletInput*> dirichlet_;
   mutable double round_off2_ = 0.0;  ///< this rank's part of round_off_estimate()²
 };
+
+/// \brief Collective. One line per rank, "solid on rank r: nodes o owned + g ghost (x % of
+/// N), elements o owned + g ghost (x % of E)": the nodes of its rows and columns and the
+/// elements it assembles, gathered to rank 0 (the text is empty elsewhere).
+std::string describe_solid_holdings(const SolidProblem& solid);
 
 }  // namespace grout

@@ -4,7 +4,8 @@
 //   mpirun -np 2 grout input.yaml
 // --output-dir puts the Exodus and CSV files the input names into DIR instead of beside the
 // input (DIR is created if missing); --timers prints where the time went (solid assembly,
-// contact, Jacobian, linear solve; min/mean/max over ranks).
+// contact, Jacobian, linear solve; min/mean/max over ranks) and, before the first step,
+// which mesh the run reads and what each rank holds of it.
 //
 // Exit codes: 0 done, 2 bad input (message names the file and key or mesh entity; also an
 // output that cannot be written), 3 a step did not converge (every earlier step is already
@@ -60,7 +61,7 @@ void redirect_outputs(Input& input, const std::string& dir, bool root) {
     input.output.summary = (fs::path(dir) / fs::path(input.output.summary).filename()).string();
 }
 
-void run(const std::string& input_path, const std::string& output_dir,
+void run(const std::string& input_path, const std::string& output_dir, bool timers,
          const Teuchos::RCP<const Comm>& comm) {
   const bool root = comm->getRank() == 0;
   const auto start = std::chrono::steady_clock::now();
@@ -98,6 +99,12 @@ void run(const std::string& input_path, const std::string& output_dir,
 
   // Build: partition, maps, graph, contact interfaces; solvers from the `solver` sublist.
   const SolidProblem solid(mesh, input, comm);
+  if (timers) {  // collective
+    const std::string held = describe_solid_holdings(solid);
+    if (root)
+      std::printf("grout: mesh: replicated (every rank holds all %lld nodes and %lld elements)\n%s",
+                  mesh.num_nodes(), mesh.num_elements(), held.c_str());
+  }
   MechanicsProblem problem(solid, mesh, input);
   const NewtonOptions& newton = input.solver.newton;
   const SystemLayout layout = system_layout(problem, mesh);  // pairing, coordinates, bodies
@@ -181,7 +188,7 @@ int main(int argc, char** argv) {
   }
   // Every error ends here, on every rank: the rank that found it prints it, once.
   try {
-    agree_on_errors(*comm, [&] { run(input_path, output_dir, comm); });
+    agree_on_errors(*comm, [&] { run(input_path, output_dir, timers, comm); });
     if (timers) Teuchos::TimeMonitor::summarize(comm.ptr(), std::cout, false, true, false);
     return 0;
   } catch (const ErrorOnOtherRank& e) {

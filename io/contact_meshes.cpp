@@ -403,6 +403,19 @@ Mesh quarter_disc_mesh(int level, double radius) {
   return checked(std::move(m), "quarter_disc_mesh");
 }
 
+namespace {
+
+// The plane of the *_on_plane meshes: its sets prefixed "plane_", and a node set "plane" of all
+// its nodes (to hold it, or to make it rigid).
+void name_rigid_plane(Mesh& plane) {
+  add_prefix(plane, "plane_");
+  NodeSet all{"plane", 0, {}};
+  for (GlobalIndex n = 0; n < plane.num_nodes(); ++n) all.nodes.push_back(n);
+  plane.node_sets.push_back(std::move(all));
+}
+
+}  // namespace
+
 Mesh sphere_on_plane_axisymmetric_mesh(int level, double radius, double contact_width) {
   if (!(contact_width > 0.0 && contact_width < radius))
     throw std::invalid_argument("sphere_on_plane_axisymmetric_mesh: need 0 < contact_width < R");
@@ -417,10 +430,7 @@ Mesh sphere_on_plane_axisymmetric_mesh(int level, double radius, double contact_
   transform(plane, [&](const Point& p) {
     return Point{2 * R * grade(p[0]), -2 * R * grade(1.0 - p[1]), 0.0};
   });
-  add_prefix(plane, "plane_");
-  NodeSet all{"plane", 0, {}};
-  for (GlobalIndex n = 0; n < plane.num_nodes(); ++n) all.nodes.push_back(n);
-  plane.node_sets.push_back(std::move(all));
+  name_rigid_plane(plane);
   Mesh mesh = append_mesh(sphere, plane);
   add_side_set(mesh, "sphere", "sphere_contact", on_arc(R, R, contact_width));
   add_side_set(mesh, "sphere", "sphere_top", on_line_y(R, tol));
@@ -453,10 +463,7 @@ Mesh cylinder_on_plane_mesh(int level, double radius, double contact_width) {
   transform(cylinder, [&](const Point& p) { return Point{p[0], p[1] + R, 0.0}; });
   const int m = 1 << (level - 1);
   Mesh plane = rectangle_mesh(8 * m, 4 * m, -2 * R, 2 * R, -2 * R, 0.0, false, 0, 1, "plane");
-  add_prefix(plane, "plane_");
-  NodeSet all{"plane", 0, {}};
-  for (GlobalIndex n = 0; n < plane.num_nodes(); ++n) all.nodes.push_back(n);
-  plane.node_sets.push_back(std::move(all));
+  name_rigid_plane(plane);
   Mesh mesh = append_mesh(cylinder, plane);
   add_side_set(mesh, "cylinder", "cylinder_contact", on_arc(R, R, contact_width));
   add_side_set(mesh, "cylinder", "cylinder_top", on_line_y(R, tol));

@@ -285,11 +285,36 @@ std::vector<LoadInput> read_loads(const Section& grout, int dimension) {
   return loads;
 }
 
+/// `self: a` or `self: [a, b, ...]`: the side sets whose union is the self-contact surface
+/// (each a non-empty name, none twice).
+std::vector<std::string> self_contact_sets(const Section& s) {
+  const Teuchos::ParameterEntry& entry = s.list().getEntry("self");
+  const auto wrong = [&] {
+    s.fail("self", "expected a side set name or a list [a, b, ...] of side set names");
+  };
+  std::vector<std::string> sets;
+  if (entry.isType<std::string>()) {
+    sets.push_back(Teuchos::getValue<std::string>(entry));
+  } else if (entry.isType<Teuchos::Array<std::string>>()) {
+    const auto& list = Teuchos::getValue<Teuchos::Array<std::string>>(entry);
+    sets.assign(list.begin(), list.end());
+    if (sets.empty()) wrong();
+  } else {
+    wrong();
+  }
+  for (std::size_t i = 0; i < sets.size(); ++i) {
+    if (sets[i].empty()) wrong();
+    for (std::size_t j = 0; j < i; ++j)
+      if (sets[j] == sets[i]) s.fail("self", "side set '" + sets[i] + "' is listed twice");
+  }
+  return sets;
+}
+
 std::vector<ContactInput> read_contact(const Section& grout) {
   const std::vector<Key> keys = {
       Key::string("slave"),
       Key::string("master"),
-      Key::string("self"),
+      Key::any("self"),  // a side set or a list of side sets (self_contact_sets)
       Key::choice("type", {"frictionless", "frictional", "tied"}, "contact type").required(),
       Key::number("friction_coefficient").at_least(0),
       Key::number("c_n").above(0),
@@ -309,7 +334,8 @@ std::vector<ContactInput> read_contact(const Section& grout) {
       for (const char* other : {"slave", "master"})
         if (s.has(other)) s.fail(other, "not with 'self' (a self-contact pair names one side set)");
       c.self = true;
-      c.slave = c.master = s.string("self");
+      c.self_sets = self_contact_sets(s);
+      c.slave = c.master = c.self_sets.front();
     } else {
       for (const char* side : {"slave", "master"})
         if (!s.has(side)) s.fail(side, "missing required key (or 'self' for self-contact)");

@@ -68,6 +68,9 @@ struct ContactInput {
   /// `self: <side set>`: self-contact of one surface (slave = master = that side set; each
   /// contacting region picks its slave and master faces, nonlinear/contact_interface.hpp).
   bool self = false;
+  /// The side sets of `self: a` or `self: [a, b, ...]` (slave = master = the first): their
+  /// union, in this order, is the one self-contact surface (contact_side_sets).
+  std::vector<std::string> self_sets;
   ContactKind type = ContactKind::frictionless;
   double friction_coefficient = 0.0;  ///< only for frictional
   /// Complementarity parameters of the normal and tangential NCP functions; 0 = the default
@@ -151,6 +154,10 @@ struct Input {
   SolverSettings solver;  ///< `solver`: Newton, the linear solver, NOX/Belos/MueLu sublists
   OutputInput output;
 };
+
+/// The side sets of a contact pair's slave side (master = false) or master side: the one the
+/// input names, or for `self: [a, b, ...]` all of them (one surface, faces in this order).
+std::vector<std::string> contact_side_sets(const ContactInput& contact, bool master);
 
 /// The material assigned to `block` (by name or id_<n>); nullptr if none.
 const MaterialInput* find_material(const Input& input, const ElementBlock& block);

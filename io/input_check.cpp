@@ -210,6 +210,34 @@ void check_axisymmetric(const Input& input, const Mesh& mesh, const MeshCheck& c
 
 }  // namespace
 
+namespace {
+
+/// `self: [a, b, ...]`: the sets' union is one surface, so no face may be in two of them (its
+/// contact terms would count twice).
+void check_self_sets_disjoint(const Mesh& mesh, const ContactInput& c, const MeshCheck& check) {
+  std::map<std::pair<GlobalIndex, int>, std::string> set_of;  // (element, side) -> set
+  for (const std::string& name : contact_side_sets(c, false)) {
+    const SideSet& set = *mesh.find_side_set(name);
+    for (std::size_t i = 0; i < set.elements.size(); ++i) {
+      const auto [it, fresh] = set_of.emplace(std::make_pair(set.elements[i], set.sides[i]), name);
+      if (!fresh && it->second != name) {
+        check.fail("grout/contact/" + c.name + "/self",
+                   "side sets '" + it->second + "' and '" + name + "' both hold side " +
+                       std::to_string(set.sides[i]) + " of element " +
+                       std::to_string(set.elements[i] + 1) +
+                       " (the self-contact surface is their union: a face counts once)");
+      }
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> contact_side_sets(const ContactInput& contact, bool master) {
+  if (contact.self && !contact.self_sets.empty()) return contact.self_sets;
+  return {master ? contact.master : contact.slave};
+}
+
 const MaterialInput* find_material(const Input& input, const ElementBlock& block) {
   for (const MaterialInput& m : input.materials)
     if (block.named(m.block)) return &m;
@@ -269,16 +297,19 @@ void check_input_against_mesh(const Input& input, const Mesh& mesh) {
   for (const ContactInput& c : input.contact) {
     const std::string key = "grout/contact/" + c.name;
     if (c.self) {
-      check.side_set(key + "/self", c.slave);
+      for (const std::string& set : contact_side_sets(c, false)) check.side_set(key + "/self", set);
+      check_self_sets_disjoint(mesh, c, check);
     } else {
       check.side_set(key + "/slave", c.slave);
       check.side_set(key + "/master", c.master);
     }
-    const auto [it, fresh] = pair_of_slave.emplace(mesh.find_side_set(c.slave)->name, c.name);
-    if (!fresh) {
-      check.fail(key + (c.self ? "/self" : "/slave"),
-                 "side set '" + c.slave + "' is already the slave of grout/contact/" + it->second +
-                     " (a slave side belongs to one contact pair)");
+    for (const std::string& set : contact_side_sets(c, false)) {
+      const auto [it, fresh] = pair_of_slave.emplace(mesh.find_side_set(set)->name, c.name);
+      if (!fresh) {
+        check.fail(key + (c.self ? "/self" : "/slave"),
+                   "side set '" + set + "' is already the slave of grout/contact/" + it->second +
+                       " (a slave side belongs to one contact pair)");
+      }
     }
   }
   check.boundary_faces();

@@ -117,6 +117,28 @@ KOKKOS_INLINE_FUNCTION MaterialStatus complete_right_cauchy_green(HyperelasticLa
   return MaterialStatus::ok;
 }
 
+/// Which tensor a plane-stress law completes: the deformation gradient or C = FᵀF.
+enum class PlaneStressTensor { F, C };
+
+/// \brief For a plane-stress law: A (F or C, only its in-plane part read) completed into A_full
+/// (complete_deformation_gradient, complete_right_cauchy_green), A pointed at A_full and law
+/// replaced by its three-dimensional form, so that the caller evaluates the 3D law. Any other
+/// law: nothing changes. \return collapsed if the completion fails.
+template <PlaneStressTensor T, class Scalar>
+KOKKOS_INLINE_FUNCTION MaterialStatus use_three_dimensional_law(HyperelasticLaw& law,
+                                                                ElasticConstants c,
+                                                                const Scalar (*&A)[3],
+                                                                Scalar A_full[3][3]) {
+  if (!is_plane_stress(law)) return MaterialStatus::ok;
+  const MaterialStatus s = T == PlaneStressTensor::F
+                               ? complete_deformation_gradient(law, c, A, A_full)
+                               : complete_right_cauchy_green(law, c, A, A_full);
+  if (s != MaterialStatus::ok) return MaterialStatus::collapsed;
+  A = A_full;
+  law = three_dimensional_law(law);
+  return MaterialStatus::ok;
+}
+
 /// \brief First Piola-Kirchhoff stress P(F) and strain energy density W(F) of `law` with Lamé
 /// constants c (formulas in the file comment).
 /// \pre F: the full 3 x 3 deformation gradient (plane strain: F33 = 1, F13 = F23 = F31 = F32 = 0;
@@ -129,12 +151,9 @@ KOKKOS_INLINE_FUNCTION MaterialStatus first_piola_kirchhoff(HyperelasticLaw law,
                                                             Scalar& W) {
   using std::log;
   Scalar F_plane_stress[3][3];
-  if (is_plane_stress(law)) {
-    if (complete_deformation_gradient(law, c, F, F_plane_stress) != MaterialStatus::ok)
-      return MaterialStatus::collapsed;
-    F = F_plane_stress;
-    law = three_dimensional_law(law);
-  }
+  if (use_three_dimensional_law<PlaneStressTensor::F>(law, c, F, F_plane_stress) !=
+      MaterialStatus::ok)
+    return MaterialStatus::collapsed;
   Scalar F_inv_T[3][3];
   const Scalar J = determinant_and_inverse_transpose(F, F_inv_T);
   if (!(J > 0.0)) return MaterialStatus::collapsed;
@@ -217,12 +236,9 @@ KOKKOS_INLINE_FUNCTION MaterialStatus second_piola_kirchhoff(HyperelasticLaw law
                                                              Scalar& W) {
   using std::log;
   Scalar C_plane_stress[3][3];
-  if (is_plane_stress(law)) {
-    if (complete_right_cauchy_green(law, c, C, C_plane_stress) != MaterialStatus::ok)
-      return MaterialStatus::collapsed;
-    C = C_plane_stress;
-    law = three_dimensional_law(law);
-  }
+  if (use_three_dimensional_law<PlaneStressTensor::C>(law, c, C, C_plane_stress) !=
+      MaterialStatus::ok)
+    return MaterialStatus::collapsed;
   const bool neo_hookean = law == HyperelasticLaw::neo_hookean;
   Scalar C_inv[3][3];  // C symmetric: C^-T = C^-1 (Neo-Hookean only)
   const Scalar det_C = determinant_and_inverse_transpose(C, neo_hookean ? C_inv : nullptr);
@@ -250,12 +266,9 @@ template <class Scalar>
 KOKKOS_INLINE_FUNCTION MaterialStatus strain_energy_of_C(HyperelasticLaw law, ElasticConstants c,
                                                          const Scalar C[3][3], Scalar& W) {
   Scalar C_plane_stress[3][3];
-  if (is_plane_stress(law)) {
-    if (complete_right_cauchy_green(law, c, C, C_plane_stress) != MaterialStatus::ok)
-      return MaterialStatus::collapsed;
-    C = C_plane_stress;
-    law = three_dimensional_law(law);
-  }
+  if (use_three_dimensional_law<PlaneStressTensor::C>(law, c, C, C_plane_stress) !=
+      MaterialStatus::ok)
+    return MaterialStatus::collapsed;
   const Scalar det_C = determinant_and_inverse_transpose<Scalar>(C, nullptr);
   if (!(det_C > 0.0)) return MaterialStatus::collapsed;
   W = detail::strain_energy_of_C(law, c, C, det_C);

@@ -249,6 +249,30 @@ GROUT_INLINE_FUNCTION void add_mortar_point_2d(const Scalar& xi, const Scalar& e
   }
 }
 
+/// D_jj, M_jl and the overlap of one LINE2/LINE2 pair, summed in local variables over the
+/// integration points and stored once.
+template <class Scalar>
+struct Line2PairSums {
+  Scalar overlap = 0.0, D[2] = {0.0, 0.0}, M[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
+  /// One point of weight w (the measure included): overlap += w, D_j += w Φ_j,
+  /// M_jl += w Φ_j N²_l.
+  GROUT_INLINE_FUNCTION void add(const Scalar& w, const Scalar Phi[2], const Scalar Nm[2]) {
+    overlap += w;
+    for (int j = 0; j < 2; ++j) {
+      const Scalar wp = w * Phi[j];
+      D[j] += wp;
+      for (int l = 0; l < 2; ++l) M[j][l] += wp * Nm[l];
+    }
+  }
+  GROUT_INLINE_FUNCTION void store(MortarPairResult<Scalar>& out) const {
+    out.overlap = overlap;
+    for (int j = 0; j < 2; ++j) {
+      out.D[j] = D[j];
+      for (int l = 0; l < 2; ++l) out.M[j][l] = M[j][l];
+    }
+  }
+};
+
 /// \brief Exact (segment-based) D_jj and M_jl of one LINE2/LINE2 pair with an n_gauss-point rule
 /// on the overlap (steps 1-4 above), the slave given by its MortarSlave2D. D, M and the overlap
 /// are summed in local variables and stored once.
@@ -262,23 +286,14 @@ GROUT_INLINE_FUNCTION MortarStatus integrate_mortar_2d(const MortarSlave2D<Scala
   const MortarStatus s = mortar_integration_points_2d(slave, xm, n_gauss, xi, eta, w);
   if (s != MortarStatus::ok) return s;
   // Φ_1,2 = (1 ∓ 3ξ)/2, N²_1,2 = (1 ∓ η)/2 (dual_basis.hpp).
-  Scalar overlap = 0.0, D[2] = {0.0, 0.0}, M[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
+  Line2PairSums<Scalar> sums;
   for (int g = 0; g < n_gauss; ++g) {
     Scalar Phi[2], Nm[2];
     line2_dual_shape(xi[g], Phi);
     line2_shape(eta[g], Nm);
-    overlap += w[g];
-    for (int j = 0; j < 2; ++j) {
-      const Scalar wp = w[g] * Phi[j];
-      D[j] += wp;
-      for (int l = 0; l < 2; ++l) M[j][l] += wp * Nm[l];
-    }
+    sums.add(w[g], Phi, Nm);
   }
-  out.overlap = overlap;
-  for (int j = 0; j < 2; ++j) {
-    out.D[j] = D[j];
-    for (int l = 0; l < 2; ++l) out.M[j][l] = M[j][l];
-  }
+  sums.store(out);
   return MortarStatus::ok;
 }
 
@@ -336,24 +351,16 @@ integrate_mortar_2d_axisymmetric(const MortarSlave2D<Scalar>& slave, const Scala
   const MortarStatus s = mortar_integration_points_2d(slave, xm, n_gauss, xi, eta, w);
   if (s != MortarStatus::ok) return s;
   constexpr double two_pi = 6.283185307179586476925286766559;
-  Scalar overlap = 0.0, D[2] = {0.0, 0.0}, M[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
+  Line2PairSums<Scalar> sums;
   for (int g = 0; g < n_gauss; ++g) {
     Scalar Ns[2], Nm[2];
     line2_shape(xi[g], Ns);
     line2_shape(eta[g], Nm);
     const Scalar wr = two_pi * (slave.a[0] + xi[g] * slave.b[0]) * w[g];
-    overlap += wr;
-    for (int j = 0; j < 2; ++j) {
-      const Scalar wp = wr * (A[j][0] * Ns[0] + A[j][1] * Ns[1]);
-      D[j] += wp;
-      for (int l = 0; l < 2; ++l) M[j][l] += wp * Nm[l];
-    }
+    const Scalar Phi[2] = {A[0][0] * Ns[0] + A[0][1] * Ns[1], A[1][0] * Ns[0] + A[1][1] * Ns[1]};
+    sums.add(wr, Phi, Nm);
   }
-  out.overlap = overlap;
-  for (int j = 0; j < 2; ++j) {
-    out.D[j] = D[j];
-    for (int l = 0; l < 2; ++l) out.M[j][l] = M[j][l];
-  }
+  sums.store(out);
   return MortarStatus::ok;
 }
 

@@ -164,7 +164,7 @@ GROUT_INLINE_FUNCTION int side_area_vector(Topology side, int dim, const Scalar*
   double dN[max_element_nodes * 3];
   const int n = shape_functions(side, xi, N, dN);
   const int tdim = dim - 1;
-  Scalar T[2][3];
+  Scalar T[2][3] = {};  // zeroed: GCC cannot see that tdim rows are filled
   for (int j = 0; j < tdim; ++j)
     for (int i = 0; i < dim; ++i) {
       T[j][i] = 0.0;

@@ -63,8 +63,9 @@ KOKKOS_INLINE_FUNCTION ElementStatus total_lagrangian_element(
   const int num_points = quadrature_num_points(topology, degree);
   for (int q = 0; q < num_points; ++q) {
     const QuadraturePoint p = quadrature_point(topology, degree, q);
-    double G[max_element_nodes * 3], det_J = 0.0;       // G[a * dim + J] = dN_a/dX_J
-    double N[max_element_nodes], h[max_element_nodes];  // axisymmetric: N_a, N_a / R
+    // Zeroed: GCC cannot see that shape_gradients fills them (-Wmaybe-uninitialized).
+    double G[max_element_nodes * 3] = {}, det_J = 0.0;            // G[a * dim + J] = dN_a/dX_J
+    double N[max_element_nodes] = {}, h[max_element_nodes] = {};  // axisymmetric: N_a, N_a / R
     const ElementStatus status =
         shape_gradients(topology, dim, X, p.xi, axisymmetric ? N : nullptr, G, det_J);
     if (status != ElementStatus::ok) return status;
@@ -140,7 +141,8 @@ KOKKOS_INLINE_FUNCTION ElementStatus total_lagrangian_cauchy_stress(
   const int num_points = quadrature_num_points(topology, degree);
   for (int q = 0; q < num_points; ++q) {
     const QuadraturePoint p = quadrature_point(topology, degree, q);
-    double G[max_element_nodes * 3], det_J = 0.0, N[max_element_nodes];
+    // Zeroed: GCC cannot see that shape_gradients fills them (-Wmaybe-uninitialized).
+    double G[max_element_nodes * 3] = {}, det_J = 0.0, N[max_element_nodes] = {};
     const ElementStatus status =
         shape_gradients(topology, dim, X, p.xi, axisymmetric ? N : nullptr, G, det_J);
     if (status != ElementStatus::ok) return status;

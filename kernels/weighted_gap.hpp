@@ -28,6 +28,29 @@ KOKKOS_INLINE_FUNCTION void mortar_weighted_vector(const MortarPairResult<Scalar
     }
 }
 
+/// \brief v = D_jj x¹_j − Σ_l M_jl x²_l of one assembled slave row j (the sum of
+/// mortar_weighted_vector over j's pairs), a < dim. The row's masters l < n_masters are given
+/// by their weights M(l) and positions xm(l, a); x may equally be a displacement or an
+/// increment (the tied row, the contact work).
+template <class Scalar, class MasterWeight, class MasterPosition>
+KOKKOS_INLINE_FUNCTION void mortar_row_weighted_vector(int dim, const Scalar& D, const Scalar* xs,
+                                                       int n_masters, const MasterWeight& M,
+                                                       const MasterPosition& xm, Scalar* v) {
+  for (int a = 0; a < dim; ++a) {
+    v[a] = D * xs[a];
+    for (int l = 0; l < n_masters; ++l) v[a] -= M(l) * xm(l, a);
+  }
+}
+
+/// \brief The weighted gap of one assembled slave row, g̃_j = −n_j · v_j with v_j of
+/// mortar_row_weighted_vector (positive = open); the nodal gap is g_j = g̃_j / D_jj.
+template <class Scalar>
+KOKKOS_INLINE_FUNCTION Scalar weighted_gap_of_row(int dim, const Scalar* n, const Scalar* v) {
+  Scalar g = 0.0;
+  for (int a = 0; a < dim; ++a) g -= n[a] * v[a];
+  return g;
+}
+
 /// \brief One pair's contribution to g̃_j = −n_j · (D_jj x¹_j − Σ_l M_jl x²_l), j < n_slave.
 /// \pre ns: unit slave nodal normals (outward from the slave body).
 template <int Dim, class Scalar>

@@ -39,7 +39,7 @@ ContactInterface::ContactInterface(const Mesh& mesh, const Input& input, const C
   surface_ = std::move(local.surface);
   owned_master_ = std::move(local.owned_master);
   const ContactSurface& s = surface_;
-  const std::vector<GlobalIndex> all_slave = side_set_nodes(mesh, ci.slave);
+  const std::vector<GlobalIndex> all_slave = side_set_nodes(mesh, contact_side_sets(ci, false));
   for (std::size_t j = 0; j < s.slave_nodes.size(); ++j) {
     if (!owns(s.slave_nodes[j])) continue;
     owned_.push_back(int(j));
@@ -48,11 +48,15 @@ ContactInterface::ContactInterface(const Mesh& mesh, const Input& input, const C
   }
   const int n_owned = int(owned_.size());
   num_multipliers_ = GO(all_slave.size()) * dim_;
-  if (ci.self) self_faces_ = GlobalIndex(mesh.find_side_set(ci.slave)->elements.size());
+  if (ci.self)  // the faces of the surface (ids 0 .. self_faces_ - 1 over its side sets)
+    for (const std::string& set : contact_side_sets(ci, false))
+      self_faces_ += GlobalIndex(mesh.find_side_set(set)->elements.size());
 
   const double E1 = youngs_modulus_of(input, mesh, ci.slave, ci);
   const double E2 = youngs_modulus_of(input, mesh, ci.master, ci);
-  c_hat_ = ci.c_n > 0.0 ? ci.c_n : 2.0 / (1.0 / E1 + 1.0 / E2) / mean_face_size(mesh, ci.slave);
+  c_hat_ = ci.c_n > 0.0
+               ? ci.c_n
+               : 2.0 / (1.0 / E1 + 1.0 / E2) / mean_face_size(mesh, contact_side_sets(ci, false));
   active_tolerance_ = 1e-10 * 2.0 / (1.0 / E1 + 1.0 / E2);
   std::vector<double> proximity(n_owned, 0.0);  // start_gap × the mean size of the node's faces
   for (int q = 0; q < n_owned; ++q) {
@@ -64,7 +68,7 @@ ContactInterface::ContactInterface(const Mesh& mesh, const Input& input, const C
   policy_ = ActiveSetPolicy(std::move(proximity), ci.start_closure);
   c_t_hat_ = ci.c_t > 0.0 ? ci.c_t : c_hat_;
   // κ = 1e-11 of the default ĉ (not of an input c_n: the iterates must not depend on it).
-  hold_ = 1e-11 * 2.0 / (1.0 / E1 + 1.0 / E2) / mean_face_size(mesh, ci.slave);
+  hold_ = 1e-11 * 2.0 / (1.0 / E1 + 1.0 / E2) / mean_face_size(mesh, contact_side_sets(ci, false));
   // Collocation points: per slave element (2D) or per direction (3D); 20 unless the input
   // sets them.
   options_.mortar = mortar_options(dim_,
@@ -91,6 +95,7 @@ ContactInterface::ContactInterface(const Mesh& mesh, const Input& input, const C
   step_energy_.assign(n_owned, 0.0);
   closing_.assign(n_owned, 0);
   candidates_.assign(n_owned, {});
+  weighted_.assign(n_owned, {});
   row_kinds_.assign(n_owned, {LambdaRow::identity, LambdaRow::identity, LambdaRow::identity});
   slip_increment_.assign(n_owned, {0.0, 0.0, 0.0});
   slip_accumulated_.assign(n_owned, {0.0, 0.0, 0.0});

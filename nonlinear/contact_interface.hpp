@@ -119,6 +119,14 @@ class ContactInterface {
   /// The owned slave nodes' mortar rows at positions in surface_.nodes (update_geometry).
   void build_stencil(const ContactMortar& m);
   LambdaRow declared_kind(const ContactLawResult& law, int r) const;
+  // The pieces of write_rows per owned slave node q (contact_rows.cpp).
+  void law_inputs(int q, NewtonPhase phase, const std::vector<double>& prescribed,
+                  ContactLawNode& in, double* slip, SparseGradient* dslip);
+  void add_contact_forces(int q, ContactTerms& terms) const;
+  void record_node(int q, const ContactLawNode& in, const ContactLawResult& r, const double* slip);
+  SparseGradient gap_gradient(int q) const;
+  void add_law_jacobian(int q, const ContactLawResult& r, const SparseGradient* dslip,
+                        ContactTerms& terms) const;
   /// The Newton step's tangential hold of owned node q (frictionless, active): Jacobian only.
   void add_tangential_hold(int q, ContactTerms& terms) const;
 
@@ -161,6 +169,17 @@ class ContactInterface {
   };
   std::vector<std::size_t> slave_pos_, stencil_begin_;
   std::vector<MasterTerm> stencil_;
+  /// Owned slave node q's mortar row in the ContactMortar in use, as build_stencil laid it out.
+  struct SlaveRow {
+    int j;                    ///< index in surface_.slave_nodes
+    GlobalIndex node;         ///< the slave node
+    std::size_t i;            ///< its index in surface_.nodes (positions_, X_, u_)
+    const MortarValue& D;     ///< D_jj
+    const SlaveFrame& frame;  ///< n_j, τ_j and their derivatives
+    const MasterTerm* begin;  ///< its master terms [begin, end)
+    const MasterTerm* end;
+  };
+  SlaveRow slave_row(int q) const;
   // Per owned slave node: results of the last evaluation and the slip history.
   std::vector<double> pressure_, gap_;
   std::vector<double> iterate_gap_;  ///< g_j at the last evaluation (if gap_known_)
@@ -180,7 +199,8 @@ class ContactInterface {
   using LawResults = Kokkos::View<ContactLawResult*, LawMemory>;
   LawNodes law_nodes_;
   LawResults law_results_;
-  std::vector<ClosureCandidate> candidates_;                    ///< of prepare_active_set
+  std::vector<ClosureCandidate> candidates_;     ///< of prepare_active_set
+  std::vector<std::array<double, 3>> weighted_;  ///< v_j = D x¹_j − Σ M x², of prepare_active_set
   std::vector<std::array<double, 3>> slip_increment_;           ///< ū_k of the step
   std::vector<std::array<double, 3>> slip_accumulated_;         ///< Σ ū_k τ_k (vector)
   std::vector<std::array<std::array<double, 3>, 2>> tangents_;  ///< τ_k

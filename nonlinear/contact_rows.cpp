@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "kernels/contact_laws.hpp"
+#include "kernels/weighted_gap.hpp"
 #include "nonlinear/contact_interface.hpp"
 
 namespace grout {
@@ -46,18 +47,17 @@ ClosureCounts ContactInterface::prepare_active_set(const Vector& x, NewtonPhase 
   // Positions by index in surface_.nodes: current, and of the last converged step.
   const auto position = [&](std::size_t i, int d) { return positions_[i][d]; };
   const auto old_position = [&](std::size_t i, int d) { return X_[i][d] + u_old_[i][d]; };
-  // g_j = −n_j·(D_jj x_j − Σ_l M_jl x_l) / D_jj at the given positions (owned node q).
-  const auto nodal_gap = [&](int q, const auto& at) {
+  // g_j = g̃_j / D_jj with g̃_j = −n_j·v_j, v_j = D_jj x_j − Σ_l M_jl x_l, at the given positions
+  // (owned node q; kernels/weighted_gap.hpp), v_j into v.
+  const auto nodal_gap = [&](int q, const auto& at, double* v) {
     const int j = owned_[q];
-    const SlaveFrame& fr = m.frames[j];
-    double g = 0.0;
-    for (int a = 0; a < dim; ++a) {
-      double v = m.D[j].value * at(slave_pos_[q], a);
-      for (std::size_t e = stencil_begin_[q]; e < stencil_begin_[q + 1]; ++e)
-        v -= stencil_[e].M->value * at(stencil_[e].pos, a);
-      g -= fr.n[a] * v;
-    }
-    return g / m.D[j].value;
+    double xs[3];
+    for (int a = 0; a < dim; ++a) xs[a] = at(slave_pos_[q], a);
+    const MasterTerm* t = stencil_.data() + stencil_begin_[q];
+    mortar_row_weighted_vector(
+        dim, m.D[j].value, xs, int(stencil_begin_[q + 1] - stencil_begin_[q]),
+        [&](int l) { return t[l].M->value; }, [&](int l, int a) { return at(t[l].pos, a); }, v);
+    return weighted_gap_of_row(dim, m.frames[j].n, v) / m.D[j].value;
   };
   for (int q = 0; q < n_owned; ++q) {
     const int j = owned_[q];
@@ -66,11 +66,12 @@ ClosureCounts ContactInterface::prepare_active_set(const Vector& x, NewtonPhase 
     node.paired = m.D[j].value > D_tol_;
     if (!node.paired) continue;
     node.was_active = active_[q] != 0;
-    node.gap = nodal_gap(q, position);
+    double v_old[3];
+    node.gap = nodal_gap(q, position, weighted_[q].data());
     // The base of the update: the last evaluation's gap; at the first update a node that
     // had no master then is measured from its last converged position.
     node.gap_old = gap_known_[q]                        ? iterate_gap_[q]
-                   : phase == NewtonPhase::first_update ? nodal_gap(q, old_position)
+                   : phase == NewtonPhase::first_update ? nodal_gap(q, old_position, v_old)
                                                         : 0.0;
     double lambda_n = 0.0;
     for (int a = 0; a < dim; ++a) lambda_n += m.frames[j].n[a] * lambda_[q][a];
@@ -83,10 +84,9 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
                                             const std::vector<double>& prescribed,
                                             ContactTerms& terms, Vector& F) {
   const int dim = dim_;
-  const ContactMortar& m = current_geometry_ ? current_ : reference_;
-  const ContactSurface& s = surface_;
   const int n_owned = int(owned_.size());
   const bool tied = input_.type == ContactKind::tied;
+  const bool coulomb = input_.type == ContactKind::frictional;
   ContactRowSums sums;
 
   // After the step's start: the late-closing nodes held back (first_update_closures.hpp),
@@ -100,38 +100,9 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
     }
   }
 
-  auto Fv = F.getLocalViewHost(Tpetra::Access::ReadWrite);
-  const Map& map = *F.getMap();
-  const GO num_u = GO(mesh_.num_nodes()) * dim;
-  const auto add_F_ = [&](GO row, double v) {
-    if (row < num_u)  // a slave or master row: a term tagged by the slave node
-      terms.add_force(row, v);
-    else  // an owned multiplier row, set once
-      Fv(map.getLocalElement(row), 0) += v;
-  };
-  const auto add_entry = [&](GO row, GO col, double v) { terms.add_entry(row, col, v); };
-  const auto begin_node = [&](GlobalIndex node) {
-    terms.begin_node(GO(index_) * GO(mesh_.num_nodes()) + node);
-  };
-  // Positions by global node (the weighted slip's interface) and by index in surface_.nodes.
-  const auto position = [&](GlobalIndex node, int d) { return positions_[position_of(node)][d]; };
-  const auto old_position = [&](GlobalIndex node, int d) {
-    const std::size_t i = position_of(node);
-    return X_[i][d] + u_old_[i][d];
-  };
-  const auto x_at = [&](std::size_t i, int d) { return positions_[i][d]; };
-  const auto x_old_at = [&](std::size_t i, int d) { return X_[i][d] + u_old_[i][d]; };
-  // The master terms of owned node q's row (build_stencil).
-  const auto terms_of = [&](int q) {
-    return std::make_pair(stencil_.data() + stencil_begin_[q],
-                          stencil_.data() + stencil_begin_[q + 1]);
-  };
-  const double D_tol = D_tol_;
-
-  // Multiplier rows of the owned slave nodes (q: owned index, j: index in s.slave_nodes): the
-  // law's inputs per node, the law's launch (kernels/contact_laws.hpp: rows, status, ∂C/∂v over
-  // the local variables v), then the chain rule to the global dofs through ∂v/∂x.
-  const bool coulomb = input_.type == ContactKind::frictional;
+  // Multiplier rows of the owned slave nodes (q: owned index): the law's inputs per node, the
+  // law's launch (kernels/contact_laws.hpp: rows, status, ∂C/∂v over the local variables v),
+  // then the chain rule to the global dofs through ∂v/∂x.
   ContactLawParameters law;
   law.dim = dim;
   law.kind = tied ? tied_law : coulomb ? coulomb_law : frictionless_law;
@@ -145,181 +116,36 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
   }
   auto nodes_host = Kokkos::create_mirror_view(law_nodes_);
   std::vector<double> slip_value(n_owned * 2, 0.0);
-  std::vector<std::array<double, 3>> weighted(n_owned);  // D x¹_j − Σ_l M_jl x²_l
   std::vector<std::array<SparseGradient, 2>> dslip(coulomb ? n_owned : 0);
-  for (int q = 0; q < n_owned; ++q) {
-    const int j = owned_[q];
-    const GlobalIndex node = s.slave_nodes[j];
-    const double D = m.D[j].value;
-    const auto [m_begin, m_end] = terms_of(q);
-    const std::size_t i = slave_pos_[q];
-    const SlaveFrame& fr = m.frames[j];
-    ContactLawNode& in = nodes_host(q);
-    in = ContactLawNode();
-    for (int a = 0; a < dim; ++a) {
-      in.lambda[a] = lambda_[q][a];
-      in.n[a] = fr.n[a];
-      for (int k = 0; k < dim - 1; ++k) in.t[k][a] = fr.t[k][a];
-    }
-    in.paired = D > D_tol;
-    if (!in.paired) continue;
-    in.held_back = held_back_[q];
-    for (int a = 0; a < dim; ++a) {  // held components: prescribed slave dof, free masters' share
-      in.prescribed[a] = !std::isnan(prescribed[node * dim + a]);
-      double free_sum = 0.0;
-      for (const MasterTerm* t = m_begin; t != m_end; ++t)
-        if (std::isnan(prescribed[t->node * dim + a])) free_sum += std::abs(t->M->value);
-      in.free_share[a] = free_sum / D;
-    }
-    if (tied) {  // t_a = (D u¹_j − Σ_l M_jl u²_l) / D
-      for (int a = 0; a < dim; ++a) {
-        double v = D * u_[i][a];
-        for (const MasterTerm* t = m_begin; t != m_end; ++t) v -= t->M->value * u_[t->pos][a];
-        in.tied[a] = v / D;
-      }
-      continue;
-    }
-    // g = g̃ / D, g̃ = −n·(D x¹_j − Σ_l M_jl x²_l).
-    double g_tilde = 0.0, lambda_n = 0.0;
-    for (int a = 0; a < dim; ++a) {
-      double& v = weighted[q][a];
-      v = D * x_at(i, a);
-      for (const MasterTerm* t = m_begin; t != m_end; ++t) v -= t->M->value * x_at(t->pos, a);
-      g_tilde -= fr.n[a] * v;
-      lambda_n += fr.n[a] * lambda_[q][a];
-    }
-    in.gap = g_tilde / D;
-    in.near = policy_.near(q, lambda_n, in.gap, phase);
-    if (coulomb) {  // ū_k, objective on the current geometry (assembly/weighted_slip.hpp)
-      std::vector<MortarRowEntry> m_row;
-      for (const MasterTerm* t = m_begin; t != m_end; ++t) m_row.emplace_back(t->node, t->M);
-      const bool objective = current_geometry_ && history_[q].D > D_tol;
-      weighted_slip_increment(dim, node, fr, m.D[j], m_row, objective ? &history_[q] : nullptr,
-                              position, old_position, &slip_value[2 * q], dslip[q].data());
-      for (int k = 0; k < dim - 1; ++k) in.slip[k] = slip_value[2 * q + k];
-    }
-  }
+  for (int q = 0; q < n_owned; ++q)
+    law_inputs(q, phase, prescribed, nodes_host(q), &slip_value[2 * q],
+               coulomb ? dslip[q].data() : nullptr);
   Kokkos::deep_copy(law_nodes_, nodes_host);
   evaluate_contact_law(LawSpace(), law, Kokkos::View<const ContactLawNode*, LawMemory>(law_nodes_),
                        true, law_results_);
   auto results = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), law_results_);
 
-  // Contact forces f¹_k = D_kk λ_k, f²_l = −Σ_j M_jl λ_j of owned slave node q.
-  const auto add_forces = [&](int q) {
-    const int j = owned_[q];
-    const GlobalIndex node = s.slave_nodes[j];
-    const MortarValue& D = m.D[j];
-    for (int a = 0; a < dim; ++a) {
-      const GO row = node * dim + a;
-      add_F_(row, D.value * lambda_[q][a]);
-      add_entry(row, lambda_gid(q, a), D.value);
-      for (const auto& [dof, dv] : D.gradient) add_entry(row, dof, lambda_[q][a] * dv);
-    }
-    const auto [m_begin, m_end] = terms_of(q);
-    for (const MasterTerm* t = m_begin; t != m_end; ++t) {
-      const GlobalIndex master = t->node;
-      const MortarValue& M = *t->M;
-      for (int a = 0; a < dim; ++a) {
-        const GO row = master * dim + a;
-        add_F_(row, -M.value * lambda_[q][a]);
-        add_entry(row, lambda_gid(q, a), -M.value);
-        for (const auto& [dof, dv] : M.gradient) add_entry(row, dof, -lambda_[q][a] * dv);
-      }
-    }
-  };
-  using L = ContactLawLayout;
+  auto Fv = F.getLocalViewHost(Tpetra::Access::ReadWrite);
+  const Map& map = *F.getMap();
   for (int q = 0; q < n_owned; ++q) {
-    const int j = owned_[q];
-    const GlobalIndex node = s.slave_nodes[j];
-    begin_node(node);  // one tag per node: its forces, rows and hold, keys unique per row
-    add_forces(q);
-    const double D = m.D[j].value;
-    const auto [m_begin, m_end] = terms_of(q);
-    const std::size_t i = slave_pos_[q];
-    const SlaveFrame& fr = m.frames[j];
     const ContactLawNode& in = nodes_host(q);
     const ContactLawResult& r = results(q);
-    previous_active_[q] = active_[q];
-    active_[q] = char(r.status);
-    pressure_[q] = gap_[q] = 0.0;
-    {  // e_j = −½ λ_j·(D Δx_j − Σ_l M_jl Δx_l), Δ since the last converged state
-      double w = 0.0;
-      for (int a = 0; a < dim; ++a) {
-        double wa = D * (x_at(i, a) - x_old_at(i, a));
-        for (const MasterTerm* t = m_begin; t != m_end; ++t)
-          wa -= t->M->value * (x_at(t->pos, a) - x_old_at(t->pos, a));
-        w += lambda_[q][a] * wa;
-      }
-      step_energy_[q] = -0.5 * w;
-    }
-    if (in.paired) {
-      for (int a = 0; a < dim; ++a) pressure_[q] += fr.n[a] * lambda_[q][a];  // λ_n = n·λ
-      if (!tied) gap_[q] = in.gap;
-      if (!tied && r.status == node_open) slip_increment_[q] = {0.0, 0.0, 0.0};
-      if (coulomb && r.status != node_open)
-        for (int k = 0; k < dim - 1; ++k)
-          slip_increment_[q][k] = r.held_axis[k] >= 0 ? 0.0 : slip_value[2 * q + k];
-    }
+    // One tag per node: its forces, rows and hold, keys unique per row.
+    terms.begin_node(GO(index_) * GO(mesh_.num_nodes()) + surface_.slave_nodes[owned_[q]]);
+    add_contact_forces(q, terms);
+    record_node(q, in, r, &slip_value[2 * q]);
     if (r.status != node_open) {  // round-off of rows that carry ĉ × (a gap or a slip)
       double x_max = 0.0;
-      for (int a = 0; a < dim; ++a) x_max = std::max(x_max, std::abs(X_[i][a]));
+      for (int a = 0; a < dim; ++a) x_max = std::max(x_max, std::abs(X_[slave_pos_[q]][a]));
       const double row =
           std::numeric_limits<double>::epsilon() * std::max(c_hat_, c_t_hat_) * x_max;
       sums.floor2 += dim * row * row;
     }
-    // ∂g = (∂g̃ − g ∂D) / D, ∂g̃ = −Σ_a v_a ∂n_a − Σ_a n_a ∂v_a,
-    // ∂v_a = x_ja ∂D + D e_ja − Σ_l (x_la ∂M_jl + M_jl e_la); only where a row uses g.
-    SparseGradient dg;
-    bool uses_gap = false;
-    for (int row = 0; row < dim; ++row) uses_gap = uses_gap || r.dC[row][L::gap()] != 0.0;
-    if (uses_gap) {
-      const double rD = 1.0 / D;
-      const double* v = weighted[q].data();  // of the law's inputs
-      double n_dot_x = 0.0;
-      for (int a = 0; a < dim; ++a) {
-        n_dot_x += fr.n[a] * x_at(i, a);
-        for (const auto& [dof, dn] : fr.dn[a]) dg.emplace_back(dof, -rD * v[a] * dn);
-        dg.emplace_back(node * dim + a, -rD * fr.n[a] * D);
-      }
-      for (const auto& [dof, dD] : m.D[j].gradient)
-        dg.emplace_back(dof, -rD * (n_dot_x + in.gap) * dD);
-      for (const MasterTerm* t = m_begin; t != m_end; ++t) {
-        double n_dot_xl = 0.0;
-        for (int a = 0; a < dim; ++a) {
-          n_dot_xl += fr.n[a] * x_at(t->pos, a);
-          dg.emplace_back(t->node * dim + a, rD * fr.n[a] * t->M->value);
-        }
-        for (const auto& [dof, dM] : t->M->gradient) dg.emplace_back(dof, rD * n_dot_xl * dM);
-      }
-      compress_gradient(dg);
-    }
-    // Row r: F = C_r, J = Σ_v ∂C_r/∂v ∂v/∂x (λ: the multiplier dofs; n, τ: the frame's
-    // gradients; g: dg; ū: the weighted slip's; t: e_j − Σ_l M_jl/D e_l).
-    for (int row = 0; row < dim; ++row) {
-      const GO gid = lambda_gid(q, row);
+    for (int row = 0; row < dim; ++row) {  // F = C_r on the owned multiplier rows, set once
       row_kinds_[q][row] = declared_kind(r, row);
-      add_F_(gid, r.C[row]);
-      const double* dC = r.dC[row];
-      SparseGradient J;
-      const auto chain = [&](const SparseGradient& grad, double scale) {
-        if (scale != 0.0)
-          for (const auto& [dof, value] : grad) J.emplace_back(dof, scale * value);
-      };
-      for (int a = 0; a < dim; ++a) {
-        if (dC[L::lambda(a)] != 0.0) J.emplace_back(lambda_gid(q, a), dC[L::lambda(a)]);
-        chain(fr.dn[a], dC[L::normal(a)]);
-        for (int k = 0; k < dim - 1; ++k) chain(fr.dt[k][a], dC[L::tangent(k, a)]);
-        if (dC[L::tied(a)] != 0.0) {
-          J.emplace_back(node * dim + a, dC[L::tied(a)]);
-          for (const MasterTerm* t = m_begin; t != m_end; ++t)
-            J.emplace_back(t->node * dim + a, -dC[L::tied(a)] * t->M->value / D);
-        }
-      }
-      chain(dg, dC[L::gap()]);
-      for (int k = 0; k < dim - 1 && coulomb; ++k) chain(dslip[q][k], dC[L::slip(k)]);
-      compress_gradient(J);
-      for (const auto& [dof, value] : J) add_entry(gid, dof, value);
+      Fv(map.getLocalElement(lambda_gid(q, row)), 0) += r.C[row];
     }
+    add_law_jacobian(q, r, coulomb ? dslip[q].data() : nullptr, terms);
     if (law.kind == frictionless_law && r.status != node_open) add_tangential_hold(q, terms);
   }
   for (int q = 0; q < n_owned; ++q) {
@@ -329,6 +155,197 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
     sums.changes += active_[q] != previous_active_[q] || held_back_[q];
   }
   return sums;
+}
+
+ContactInterface::SlaveRow ContactInterface::slave_row(int q) const {
+  const ContactMortar& m = current_geometry_ ? current_ : reference_;
+  const int j = owned_[q];
+  return {j,
+          surface_.slave_nodes[j],
+          slave_pos_[q],
+          m.D[j],
+          m.frames[j],
+          stencil_.data() + stencil_begin_[q],
+          stencil_.data() + stencil_begin_[q + 1]};
+}
+
+// The law's inputs of owned node q (j: its index in surface_.slave_nodes): λ and the frame;
+// for a paired node the held components, then the tied jump t = (D u¹_j − Σ_l M_jl u²_l) / D,
+// or the gap as prepare_active_set measured it at these positions and, with Coulomb, the
+// weighted slip ū_k (objective on the current geometry, assembly/weighted_slip.hpp) and its
+// gradient.
+void ContactInterface::law_inputs(int q, NewtonPhase phase, const std::vector<double>& prescribed,
+                                  ContactLawNode& in, double* slip, SparseGradient* dslip) {
+  const SlaveRow sr = slave_row(q);
+  const double D = sr.D.value;
+  const int dim = dim_;
+  in = ContactLawNode();
+  for (int a = 0; a < dim; ++a) {
+    in.lambda[a] = lambda_[q][a];
+    in.n[a] = sr.frame.n[a];
+    for (int k = 0; k < dim - 1; ++k) in.t[k][a] = sr.frame.t[k][a];
+  }
+  in.paired = D > D_tol_;
+  if (!in.paired) return;
+  in.held_back = held_back_[q];
+  for (int a = 0; a < dim; ++a) {  // held components: prescribed slave dof, free masters' share
+    in.prescribed[a] = !std::isnan(prescribed[sr.node * dim + a]);
+    double free_sum = 0.0;
+    for (const MasterTerm* t = sr.begin; t != sr.end; ++t)
+      if (std::isnan(prescribed[t->node * dim + a])) free_sum += std::abs(t->M->value);
+    in.free_share[a] = free_sum / D;
+  }
+  if (input_.type == ContactKind::tied) {
+    double v[3];
+    mortar_row_weighted_vector(
+        dim, D, u_[slave_pos_[q]].data(), int(sr.end - sr.begin),
+        [&](int l) { return sr.begin[l].M->value; },
+        [&](int l, int a) { return u_[sr.begin[l].pos][a]; }, v);
+    for (int a = 0; a < dim; ++a) in.tied[a] = v[a] / D;
+    return;
+  }
+  double lambda_n = 0.0;
+  for (int a = 0; a < dim; ++a) lambda_n += sr.frame.n[a] * lambda_[q][a];
+  in.gap = candidates_[q].gap;
+  in.near = policy_.near(q, lambda_n, in.gap, phase);
+  if (dslip) {
+    // Positions by global node (the weighted slip's interface).
+    const auto position = [&](GlobalIndex n, int d) { return positions_[position_of(n)][d]; };
+    const auto old_position = [&](GlobalIndex n, int d) {
+      const std::size_t k = position_of(n);
+      return X_[k][d] + u_old_[k][d];
+    };
+    std::vector<MortarRowEntry> m_row;
+    for (const MasterTerm* t = sr.begin; t != sr.end; ++t) m_row.emplace_back(t->node, t->M);
+    const bool objective = current_geometry_ && history_[q].D > D_tol_;
+    weighted_slip_increment(dim, sr.node, sr.frame, sr.D, m_row, objective ? &history_[q] : nullptr,
+                            position, old_position, slip, dslip);
+    for (int k = 0; k < dim - 1; ++k) in.slip[k] = slip[k];
+  }
+}
+
+// Contact forces f¹_k = D_kk λ_k, f²_l = −Σ_j M_jl λ_j of owned slave node q, and their
+// derivatives in λ and (through D and M) in the displacements.
+void ContactInterface::add_contact_forces(int q, ContactTerms& terms) const {
+  const SlaveRow sr = slave_row(q);
+  const MortarValue& D = sr.D;
+  const int dim = dim_;
+  for (int a = 0; a < dim; ++a) {
+    const GO row = sr.node * dim + a;
+    terms.add_force(row, D.value * lambda_[q][a]);
+    terms.add_entry(row, lambda_gid(q, a), D.value);
+    for (const auto& [dof, dv] : D.gradient) terms.add_entry(row, dof, lambda_[q][a] * dv);
+  }
+  for (std::size_t e = stencil_begin_[q]; e < stencil_begin_[q + 1]; ++e) {
+    const MasterTerm& t = stencil_[e];
+    const MortarValue& M = *t.M;
+    for (int a = 0; a < dim; ++a) {
+      const GO row = t.node * dim + a;
+      terms.add_force(row, -M.value * lambda_[q][a]);
+      terms.add_entry(row, lambda_gid(q, a), -M.value);
+      for (const auto& [dof, dv] : M.gradient) terms.add_entry(row, dof, -lambda_[q][a] * dv);
+    }
+  }
+}
+
+// What the evaluation leaves of owned node q for the output, the step's bookkeeping and the
+// next iterate: its status, λ_n = n·λ, the gap, the contact work e_j and the slip increment.
+void ContactInterface::record_node(int q, const ContactLawNode& in, const ContactLawResult& r,
+                                   const double* slip) {
+  const SlaveRow sr = slave_row(q);
+  const double D = sr.D.value;
+  const int dim = dim_;
+  const bool tied = input_.type == ContactKind::tied;
+  const auto x_at = [&](std::size_t k, int d) { return positions_[k][d]; };
+  const auto x_old_at = [&](std::size_t k, int d) { return X_[k][d] + u_old_[k][d]; };
+  previous_active_[q] = active_[q];
+  active_[q] = char(r.status);
+  pressure_[q] = gap_[q] = 0.0;
+  {  // e_j = −½ λ_j·(D Δx_j − Σ_l M_jl Δx_l), Δ since the last converged state
+    double dx[3], w[3];
+    for (int a = 0; a < dim; ++a) dx[a] = x_at(sr.i, a) - x_old_at(sr.i, a);
+    mortar_row_weighted_vector(
+        dim, D, dx, int(sr.end - sr.begin), [&](int l) { return sr.begin[l].M->value; },
+        [&](int l, int a) { return x_at(sr.begin[l].pos, a) - x_old_at(sr.begin[l].pos, a); }, w);
+    double e = 0.0;
+    for (int a = 0; a < dim; ++a) e += lambda_[q][a] * w[a];
+    step_energy_[q] = -0.5 * e;
+  }
+  if (!in.paired) return;
+  for (int a = 0; a < dim; ++a) pressure_[q] += sr.frame.n[a] * lambda_[q][a];  // λ_n = n·λ
+  if (tied) return;
+  gap_[q] = in.gap;
+  if (r.status == node_open) slip_increment_[q] = {0.0, 0.0, 0.0};
+  if (input_.type == ContactKind::frictional && r.status != node_open)
+    for (int k = 0; k < dim - 1; ++k) slip_increment_[q][k] = r.held_axis[k] >= 0 ? 0.0 : slip[k];
+}
+
+// ∂g of owned node q: ∂g = (∂g̃ − g ∂D) / D, ∂g̃ = −Σ_a v_a ∂n_a − Σ_a n_a ∂v_a,
+// ∂v_a = x_ja ∂D + D e_ja − Σ_l (x_la ∂M_jl + M_jl e_la), v_j and g as prepare_active_set
+// measured them.
+SparseGradient ContactInterface::gap_gradient(int q) const {
+  const SlaveRow sr = slave_row(q);
+  const double D = sr.D.value;
+  const int dim = dim_;
+  const double rD = 1.0 / D;
+  const double* v = weighted_[q].data();
+  SparseGradient dg;
+  double n_dot_x = 0.0;
+  for (int a = 0; a < dim; ++a) {
+    n_dot_x += sr.frame.n[a] * positions_[sr.i][a];
+    for (const auto& [dof, dn] : sr.frame.dn[a]) dg.emplace_back(dof, -rD * v[a] * dn);
+    dg.emplace_back(sr.node * dim + a, -rD * sr.frame.n[a] * D);
+  }
+  for (const auto& [dof, dD] : sr.D.gradient)
+    dg.emplace_back(dof, -rD * (n_dot_x + candidates_[q].gap) * dD);
+  for (std::size_t e = stencil_begin_[q]; e < stencil_begin_[q + 1]; ++e) {
+    const MasterTerm& t = stencil_[e];
+    double n_dot_xl = 0.0;
+    for (int a = 0; a < dim; ++a) {
+      n_dot_xl += sr.frame.n[a] * positions_[t.pos][a];
+      dg.emplace_back(t.node * dim + a, rD * sr.frame.n[a] * t.M->value);
+    }
+    for (const auto& [dof, dM] : t.M->gradient) dg.emplace_back(dof, rD * n_dot_xl * dM);
+  }
+  compress_gradient(dg);
+  return dg;
+}
+
+// The Jacobian of owned node q's multiplier rows: row r, J = Σ_v ∂C_r/∂v ∂v/∂x (λ: the
+// multiplier dofs; n, τ: the frame's gradients; g: gap_gradient, only where a row uses g;
+// ū: the weighted slip's, dslip; t: e_j − Σ_l M_jl/D e_l).
+void ContactInterface::add_law_jacobian(int q, const ContactLawResult& r,
+                                        const SparseGradient* dslip, ContactTerms& terms) const {
+  const SlaveRow sr = slave_row(q);
+  const double D = sr.D.value;
+  using L = ContactLawLayout;
+  const int dim = dim_;
+  bool uses_gap = false;
+  for (int row = 0; row < dim; ++row) uses_gap = uses_gap || r.dC[row][L::gap()] != 0.0;
+  const SparseGradient dg = uses_gap ? gap_gradient(q) : SparseGradient();
+  for (int row = 0; row < dim; ++row) {
+    const GO gid = lambda_gid(q, row);
+    const double* dC = r.dC[row];
+    SparseGradient J;
+    const auto chain = [&](const SparseGradient& grad, double scale) {
+      if (scale != 0.0)
+        for (const auto& [dof, value] : grad) J.emplace_back(dof, scale * value);
+    };
+    for (int a = 0; a < dim; ++a) {
+      if (dC[L::lambda(a)] != 0.0) J.emplace_back(lambda_gid(q, a), dC[L::lambda(a)]);
+      chain(sr.frame.dn[a], dC[L::normal(a)]);
+      for (int k = 0; k < dim - 1; ++k) chain(sr.frame.dt[k][a], dC[L::tangent(k, a)]);
+      if (dC[L::tied(a)] != 0.0) {
+        J.emplace_back(sr.node * dim + a, dC[L::tied(a)]);
+        for (const MasterTerm* t = sr.begin; t != sr.end; ++t)
+          J.emplace_back(t->node * dim + a, -dC[L::tied(a)] * t->M->value / D);
+      }
+    }
+    chain(dg, dC[L::gap()]);
+    for (int k = 0; k < dim - 1 && dslip; ++k) chain(dslip[k], dC[L::slip(k)]);
+    compress_gradient(J);
+    for (const auto& [dof, value] : J) terms.add_entry(gid, dof, value);
+  }
 }
 
 // The Newton step's tangential hold (Jacobian only: F stays exact, so a converged state
@@ -354,20 +371,15 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
 // drag on the slip since the last converged step) holds the rotation for good, but moves the
 // patch tests by 1e-8..2e-7 and breaks ring_pendulum's angular momentum balance: not kept.
 void ContactInterface::add_tangential_hold(int q, ContactTerms& terms) const {
+  const SlaveRow sr = slave_row(q);
+  const double D = sr.D.value;
   const int dim = dim_;
-  const ContactMortar& m = current_geometry_ ? current_ : reference_;
-  const int j = owned_[q];
-  const GlobalIndex node = surface_.slave_nodes[j];
-  const double D = m.D[j].value;
-  const MasterTerm* m_begin = stencil_.data() + stencil_begin_[q];
-  const MasterTerm* m_end = stencil_.data() + stencil_begin_[q + 1];
-  const SlaveFrame& fr = m.frames[j];
   for (int k = 0; k < dim - 1; ++k) {
     SparseGradient w;
     for (int a = 0; a < dim; ++a) {
-      w.emplace_back(node * dim + a, fr.t[k][a]);
-      for (const MasterTerm* t = m_begin; t != m_end; ++t)
-        w.emplace_back(t->node * dim + a, -fr.t[k][a] * t->M->value / D);
+      w.emplace_back(sr.node * dim + a, sr.frame.t[k][a]);
+      for (const MasterTerm* t = sr.begin; t != sr.end; ++t)
+        w.emplace_back(t->node * dim + a, -sr.frame.t[k][a] * t->M->value / D);
     }
     compress_gradient(w);
     const double spring = hold_ * D;

@@ -4,6 +4,7 @@
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 
 #include "io/errors.hpp"
@@ -49,6 +50,8 @@ struct LinearSolver::Impl {
     return *iterative;
   }
   std::string last_type;
+  // type: auto took the iterative path and it failed: the direct solver from then on.
+  bool iterative_failed = false;
 
   // Whether a solve of `type` condenses the multipliers: as told, else on the iterative path
   // (the point of the condensation) and on the distributed MUMPS path: on the 3D Hertz
@@ -167,6 +170,8 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   // A `MUMPS` sublist asks for MUMPS: auto then keeps it for the smallest 2D systems too.
   if (impl_->type == "auto" && type == "amesos2" && impl_->settings.mumps_given)
     type = default_direct_type(dim);
+  if (impl_->type == "auto" && type == "belos" && impl_->iterative_failed)
+    type = default_direct_type(dim);
   impl_->last_type = type;
   impl_->last_symmetric = false;
   if (!impl_->condenses(type) || layout.multiplier_pairing.empty())
@@ -255,7 +260,32 @@ int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector
   const IterativeSettings settings{
       impl_->settings.belos, impl_->settings.muelu,     impl_->settings.reuse_preconditioner,
       impl_->layout.dim,     impl_->layout.coordinates, impl_->layout.node_bodies};
-  return impl_->iterative_solver().solve(K, b, x, belos_type, settings);
+  try {
+    return impl_->iterative_solver().solve(K, b, x, belos_type, settings);
+  } catch (const ExitCodeError&) {  // no module, or an error with its own exit code
+    throw;
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    // Under type: auto a failed iterative solve (Krylov not converged, loss of accuracy, a
+    // MueLu set-up that breaks down on a body held only by contact) is not the step's fault:
+    // a cut-back would fail the same way. The direct solver takes this system and the rest
+    // of the run, with a note.
+    if (impl_->type != "auto") throw;
+    const int dim = impl_->layout.dim > 0 ? impl_->layout.dim : 2;
+    const std::string direct = default_direct_type(dim);
+    if (K->getRowMap()->getComm()->getRank() == 0) {
+      std::printf(
+          "grout: note: %s: the iterative solve of %lld unknowns failed (%s); type auto uses "
+          "the direct solver (%s) from now on\n",
+          impl_->settings.where.c_str(), (long long)K->getGlobalNumRows(), e.what(),
+          direct.c_str());
+      std::fflush(stdout);
+    }
+    impl_->iterative_failed = true;
+    impl_->last_type = direct;
+    return solve_system(K, b, x, direct, "");
+  }
 }
 
 }  // namespace grout

@@ -239,7 +239,8 @@ std::vector<std::pair<GO, GO>> MechanicsProblem::multiplier_pairing() const {
 std::vector<GlobalIndex> MechanicsProblem::slave_nodes() const {
   std::vector<GlobalIndex> nodes;
   for (const auto& c : interfaces_) {
-    const std::vector<GlobalIndex> set = side_set_nodes(mesh_, c->input().slave);
+    const std::vector<GlobalIndex> set =
+        side_set_nodes(mesh_, contact_side_sets(c->input(), false));
     nodes.insert(nodes.end(), set.begin(), set.end());
   }
   return nodes;

@@ -8,18 +8,24 @@ namespace grout {
 
 namespace {
 
+// Values on K's rows (its row map) imported to its columns (its column map): K's own
+// importer where the domain map is the row map, else one built from the two maps.
+void import_to_columns(const Matrix& K, const Vector& on_rows, Vector& on_columns) {
+  const auto importer = K.getGraph()->getImporter();
+  if (!importer.is_null() && K.getDomainMap()->isSameAs(*K.getRowMap())) {
+    on_columns.doImport(on_rows, *importer, Tpetra::INSERT);
+  } else {
+    on_columns.doImport(on_rows, Import(K.getRowMap(), K.getColMap()), Tpetra::INSERT);
+  }
+}
+
 // The rank owning each column of K (K's column map's local order): the ranks imported from
 // the row map, as the column indices are above.
 std::vector<int> column_owners(const Matrix& K) {
   const auto row_map = K.getRowMap();
   Vector owner_on_rows(row_map), owner_on_columns(K.getColMap());
   owner_on_rows.putScalar(double(row_map->getComm()->getRank()));
-  const auto importer = K.getGraph()->getImporter();
-  if (!importer.is_null() && K.getDomainMap()->isSameAs(*row_map)) {
-    owner_on_columns.doImport(owner_on_rows, *importer, Tpetra::INSERT);
-  } else {
-    owner_on_columns.doImport(owner_on_rows, Import(row_map, K.getColMap()), Tpetra::INSERT);
-  }
+  import_to_columns(K, owner_on_rows, owner_on_columns);
   auto c = owner_on_columns.getLocalViewHost(Tpetra::Access::ReadOnly);
   std::vector<int> owners(c.extent(0));
   for (std::size_t j = 0; j < owners.size(); ++j) owners[j] = int(c(j, 0));
@@ -98,12 +104,7 @@ MumpsEntries mumps_entries(const MumpsNumbering& numbering, const Matrix& K, boo
       auto r = row_values.getLocalViewHost(Tpetra::Access::OverwriteAll);
       for (LO i = 0; i < n_local; ++i) r(i, 0) = double(offset + i);
     }
-    const auto importer = K.getGraph()->getImporter();
-    if (!importer.is_null() && K.getDomainMap()->isSameAs(*row_map)) {
-      col_values.doImport(row_values, *importer, Tpetra::INSERT);
-    } else {
-      col_values.doImport(row_values, Import(row_map, K.getColMap()), Tpetra::INSERT);
-    }
+    import_to_columns(K, row_values, col_values);
     auto c = col_values.getLocalViewHost(Tpetra::Access::ReadOnly);
     for (std::size_t j = 0; j < e.column_index.size(); ++j)
       e.column_index[j] = (long long)(c(j, 0));

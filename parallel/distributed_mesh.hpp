@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "assembly/mesh_part.hpp"
 #include "assembly/tpetra_types.hpp"
 #include "io/mesh.hpp"
 
@@ -62,6 +63,12 @@ struct DistributedMesh {
   /// Local index of global element `gid`, or -1 when this rank does not hold it.
   GlobalIndex local_element(GlobalIndex gid) const;
 };
+
+/// The part SolidProblem reads (references into `mesh`, which must outlive its use).
+inline MeshPart mesh_part(const DistributedMesh& mesh) {
+  return MeshPart{mesh.local,      mesh.global_num_nodes, mesh.global_num_elements, mesh.node_gid,
+                  mesh.node_owner, mesh.element_gid,      mesh.element_owner};
+}
 
 /// How the elements are partitioned.
 struct DistributionOptions {

@@ -23,6 +23,28 @@ std::string set_label(const char* kind, const std::string& name, int id) {
   return std::string(kind) + " '" + name + "' (id " + std::to_string(id) + ")";
 }
 
+/// Exodus's 1-based numbers of `what` (node, element) in [first, last), each in [1, n], made
+/// 0-based; a number out of range is the file's error, naming `label`.
+void to_zero_based(GlobalIndex* first, GlobalIndex* last, GlobalIndex n, const char* what,
+                   const std::string& file, const std::string& label) {
+  for (GlobalIndex* v = first; v != last; ++v) {
+    if (*v < 1 || *v > n)
+      fail(file,
+           label + " refers to " + what + " " + std::to_string(*v) + " of " + std::to_string(n));
+    --*v;
+  }
+}
+
+/// This rank's slice [begin, begin + count) of a set of `size` entries, its begin recorded.
+struct SetSlice {
+  GlobalIndex begin, count;
+};
+SetSlice set_slice(GlobalIndex size, int rank, int ranks, std::vector<GlobalIndex>& begins) {
+  const GlobalIndex begin = slice_begin(size, rank, ranks);
+  begins.push_back(begin);
+  return {begin, slice_begin(size, rank + 1, ranks) - begin};
+}
+
 /// Rank 0's part of read_mesh_header: the header as a Mesh without per-entity arrays, and the
 /// sizes [nodes, elements, blocks..., side sets..., node sets...].
 Mesh read_header(const std::string& path, std::vector<long long>& sizes) {
@@ -98,13 +120,8 @@ void read_connectivity(const ReadOnlyFile& file, const MeshHeader& h, MeshSlices
     file.check(ex_get_partial_conn(file.id(), EX_ELEM_BLOCK, block.id, lo - block.first_element + 1,
                                    hi - lo, s.element_nodes.data() + at, nullptr, nullptr),
                "reading the connectivity of " + label);
-    for (std::size_t i = at; i < s.element_nodes.size(); ++i) {
-      GlobalIndex& node = s.element_nodes[i];
-      if (node < 1 || node > h.num_nodes)
-        fail(h.file, label + " refers to node " + std::to_string(node) + " of " +
-                         std::to_string(h.num_nodes));
-      --node;  // Exodus is 1-based
-    }
+    to_zero_based(s.element_nodes.data() + at, s.element_nodes.data() + s.element_nodes.size(),
+                  h.num_nodes, "node", h.file, label);
     for (GlobalIndex e = lo; e < hi; ++e) {
       s.element_block.push_back(int(b));
       s.element_nodes_offset.push_back(s.element_nodes_offset.back() + npe);
@@ -117,9 +134,7 @@ void read_side_sets(const ReadOnlyFile& file, const MeshHeader& h, MeshSlices& s
   for (std::size_t k = 0; k < h.side_sets.size(); ++k) {
     const SideSet& set = h.side_sets[k];
     const std::string label = set_label("side set", set.name, set.id);
-    const GlobalIndex size = h.side_set_size[k], begin = slice_begin(size, rank, ranks);
-    const GlobalIndex count = slice_begin(size, rank + 1, ranks) - begin;
-    s.side_set_begin.push_back(begin);
+    const auto [begin, count] = set_slice(h.side_set_size[k], rank, ranks, s.side_set_begin);
     std::vector<GlobalIndex> elements(static_cast<std::size_t>(count)),
         sides(static_cast<std::size_t>(count));
     if (count > 0)
@@ -127,12 +142,8 @@ void read_side_sets(const ReadOnlyFile& file, const MeshHeader& h, MeshSlices& s
                                          sides.data()),
                  "reading " + label);
     // Element numbers in a side set are 1-based positions in the global element order.
-    for (auto& e : elements) {
-      if (e < 1 || e > h.num_elements)
-        fail(h.file, label + " refers to element " + std::to_string(e) + " of " +
-                         std::to_string(h.num_elements));
-      --e;
-    }
+    to_zero_based(elements.data(), elements.data() + elements.size(), h.num_elements, "element",
+                  h.file, label);
     std::vector<int> side(sides.size());
     for (std::size_t i = 0; i < sides.size(); ++i) {
       const ElementBlock& block = h.blocks[std::size_t(h.block_of(elements[i]))];
@@ -151,19 +162,12 @@ void read_node_sets(const ReadOnlyFile& file, const MeshHeader& h, MeshSlices& s
   for (std::size_t k = 0; k < h.node_sets.size(); ++k) {
     const NodeSet& set = h.node_sets[k];
     const std::string label = set_label("node set", set.name, set.id);
-    const GlobalIndex size = h.node_set_size[k], begin = slice_begin(size, rank, ranks);
-    const GlobalIndex count = slice_begin(size, rank + 1, ranks) - begin;
-    s.node_set_begin.push_back(begin);
+    const auto [begin, count] = set_slice(h.node_set_size[k], rank, ranks, s.node_set_begin);
     std::vector<GlobalIndex> nodes(static_cast<std::size_t>(count));
     if (count > 0)
       file.check(ex_get_partial_node_set(file.id(), set.id, begin + 1, count, nodes.data()),
                  "reading " + label);
-    for (auto& node : nodes) {
-      if (node < 1 || node > h.num_nodes)
-        fail(h.file, label + " refers to node " + std::to_string(node) + " of " +
-                         std::to_string(h.num_nodes));
-      --node;
-    }
+    to_zero_based(nodes.data(), nodes.data() + nodes.size(), h.num_nodes, "node", h.file, label);
     s.node_set_nodes.push_back(std::move(nodes));
   }
 }

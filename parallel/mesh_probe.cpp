@@ -1,8 +1,11 @@
 // grout_mesh_probe: reads a mesh as the distributed mesh (default) or as the replicated mesh
 // (--replicated: read on rank 0 and broadcast), and prints what each rank holds, the time of
 // each step and each rank's peak resident memory. Exit code 2 for a bad mesh, on every rank.
+// --solid then builds the small-strain solid on it (SolidProblem: maps, graph, one linear
+// elastic material per block) and assembles f_int and K at u = 0, the memory a driver run
+// needs before its first solve.
 //
-//   grout_mesh_probe mesh.exo [--replicated] [--timers] [--contact <side set> ...]
+//   grout_mesh_probe mesh.exo [--replicated] [--solid] [--timers] [--contact <side set> ...]
 //   [--contact-weight w] [--balance-contact]
 
 #include <sys/resource.h>
@@ -19,6 +22,7 @@
 
 #include "assembly/agree_on_errors.hpp"
 #include "assembly/distribute_mesh.hpp"
+#include "assembly/solid_problem.hpp"
 #include "drivers/mpi_startup.hpp"
 #include "io/errors.hpp"
 #include "io/exodus.hpp"
@@ -32,6 +36,29 @@ double peak_rss_mb() {
   return double(usage.ru_maxrss) / 1024.0;  // KiB on Linux
 }
 
+// One linear elastic material per block of `mesh`.
+grout::Input solid_input(const grout::Mesh& mesh) {
+  grout::Input input;
+  input.file = "grout_mesh_probe";
+  input.model.dimension = mesh.dimension;
+  for (const grout::ElementBlock& block : mesh.blocks) {
+    grout::MaterialInput m;
+    m.name = m.block = block.name;
+    m.youngs_modulus = 1.0;
+    m.poissons_ratio = 0.3;
+    input.materials.push_back(m);
+  }
+  return input;
+}
+
+// Builds the solid, assembles f_int and K at u = 0, and says what each rank assembles.
+std::string build_solid(const grout::SolidProblem& solid) {
+  grout::Vector u(solid.owned_map()), f(solid.owned_map());
+  const auto K = solid.create_matrix();
+  solid.assemble(u, f, K.get());
+  return grout::describe_solid_holdings(solid);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -40,12 +67,14 @@ int main(int argc, char** argv) {
   const auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;
   std::string path;
-  bool replicated = false, timers = false;
+  bool replicated = false, timers = false, solid = false;
   grout::DistributionOptions options;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--replicated") {
       replicated = true;
+    } else if (arg == "--solid") {
+      solid = true;
     } else if (arg == "--timers") {
       timers = true;
     } else if (arg == "--contact" && i + 1 < argc) {
@@ -64,9 +93,10 @@ int main(int argc, char** argv) {
   }
   if (path.empty()) {
     if (root)
-      std::fprintf(stderr,
-                   "usage: grout_mesh_probe mesh.exo [--replicated] [--contact <side set>]"
-                   " [--contact-weight w] [--balance-contact]\n");
+      std::fprintf(
+          stderr,
+          "usage: grout_mesh_probe mesh.exo [--replicated] [--solid] [--contact <side set>]"
+          " [--contact-weight w] [--balance-contact]\n");
     return 2;
   }
   try {
@@ -84,9 +114,17 @@ int main(int argc, char** argv) {
         if (root)
           text = "mesh on every rank: " + std::to_string(mesh.num_nodes()) + " nodes, " +
                  std::to_string(mesh.num_elements()) + " elements\n";
+        if (solid) {
+          const grout::Input input = solid_input(mesh);
+          text += build_solid(grout::SolidProblem(mesh, input, comm));
+        }
       } else {
         const grout::DistributedMesh mesh = grout::read_distributed_mesh(*comm, path, options);
         text = grout::describe_holdings(*comm, mesh);
+        if (solid) {
+          const grout::Input input = solid_input(mesh.local);
+          text += build_solid(grout::SolidProblem(grout::mesh_part(mesh), input, comm));
+        }
         // Contact balance: faces of each contact side set and owned dofs (nodes x dimension)
         // per rank.
         for (const std::string& name : options.contact_side_sets) {

@@ -181,7 +181,7 @@ TEST(AxisymmetricFiniteStrain, HomogeneousStretchGivesTheLawsCauchyStress) {
   for (const Topology t : {Topology::quad4, Topology::tri3}) {
     const double* X = t == Topology::quad4 ? quad : tri;
     const int nodes = grout::topology_num_nodes(t);
-    double u[8], s[6];
+    double u[8] = {}, s[6] = {};
     for (int k = 0; k < nodes; ++k)
       u[2 * k] = (sr - 1) * X[2 * k], u[2 * k + 1] = (sz - 1) * X[2 * k + 1];
     const auto law = grout::HyperelasticLaw::neo_hookean;

@@ -144,6 +144,28 @@ TEST(LinearSolver, AutoPicksTheDirectSolverForSmallSystems) {
   EXPECT_EQ(solver.last_type(), "mumps_gathered");
 }
 
+// type: auto falls back to the direct solver when its iterative solve fails (here: Belos
+// limited to one iteration), for that system and every later one; an explicit type: belos
+// keeps the failure.
+TEST(LinearSolver, AutoFallsBackToTheDirectSolverWhenTheIterativeSolveFails) {
+  const auto A = tridiagonal(auto_iterative_threshold(2));
+  Vector b(A->getRowMap()), x(A->getRowMap());
+  b.randomize();
+  Teuchos::ParameterList params;
+  params.sublist("Belos").set("Maximum Iterations", 1);
+  LinearSolver solver(params, "test", {});
+  EXPECT_NO_THROW(solver.solve(A, b, x));
+  EXPECT_EQ(solver.last_type(), "mumps_gathered");
+  EXPECT_LT(relative_residual(*A, x, b), 1e-10);
+  x.putScalar(0.0);
+  solver.solve(A, b, x);
+  EXPECT_EQ(solver.last_type(), "mumps_gathered");
+  EXPECT_LT(relative_residual(*A, x, b), 1e-10);
+  params.set("type", "belos");
+  LinearSolver belos(params, "test", {});
+  EXPECT_ANY_THROW(belos.solve(A, b, x));
+}
+
 TEST(LinearSolver, GatheredMumpsIsCorrectOnAnyRankCount) {
   Teuchos::ParameterList params;
   params.set("type", "mumps");

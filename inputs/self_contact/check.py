@@ -55,6 +55,9 @@ if __name__ == "__main__":
     failures += cc.check_uniform_case("patch_2d", strip(2), "lower_flank", P)
     failures += cc.check_uniform_case("patch_2d_fine_slave", strip(2), "lower_flank", P)
     failures += cc.check_uniform_case("patch_3d", strip(3), "lower_flank", P)
+    # `self: [fold_upper, fold_lower]`: the same surface as `fold`, its faces numbered from the
+    # upper flank's, which is then the slave (docs/input.md "Self-contact").
+    failures += cc.check_uniform_case("patch_2d_split", strip(2), "upper_flank", P)
     for f in failures:
         print("FAIL:", f)
     sys.exit(1 if failures else 0)

@@ -16,8 +16,11 @@ both cuts.) The lower arm has --nx-lower elements along the cut, the upper arm -
 non-matching flanks. The left column is [0, a] x [0, 2] with 2 elements across. Interior nodes
 of each of the three patches are shifted by a fixed pattern (distorted quads).
 
-Sets: side sets `fold` (both flanks), `top` (y = 2), `bottom` (y = 0), `left` (x = 0); node
-sets of each (<name>_nodes), and `lower_flank_nodes`, `upper_flank_nodes` (the two flanks).
+Sets: side sets `fold` (both flanks), `fold_lower` and `fold_upper` (each flank alone), `top`
+(y = 2), `bottom` (y = 0), `left` (x = 0), `right` (x = L, both arms), `slit_column` and
+`slit_arm` (the vertical cut's flanks on the left column and on the upper arm, for the
+frictional test's shear tractions); node sets of each (<name>_nodes), and `lower_flank_nodes`,
+`upper_flank_nodes` (the two flanks).
 --dim 3 sweeps the mesh along z over [0, 0.5] in --layers layers (node sets z0_nodes,
 zt_nodes).
 """
@@ -74,17 +77,24 @@ def build(nx_lower, nx_upper):
     faces = mesh.boundary_faces()
     lower_flank = set(index[k] for k in index if k[2] == 0 and abs(k[1] - 1.0) < 1e-12 and k[0] >= A - 1e-12)
     upper_flank = set(index[k] for k in index if k[2] == 1 and abs(k[1] - 1.0) < 1e-12)
-    sets = {"fold": [], "top": [], "bottom": [], "left": []}
+    sets = {"fold": [], "top": [], "bottom": [], "left": [], "right": [], "slit_column": [],
+            "slit_arm": [], "fold_lower": [], "fold_upper": []}
     for key, (e, side) in faces.items():
         a, b = sorted(key)
         if {a, b} <= lower_flank or {a, b} <= upper_flank:
             sets["fold"].append((e, side))
+            sets["fold_lower" if {a, b} <= lower_flank else "fold_upper"].append((e, side))
         elif abs(x[a, 1] - 2.0) < 1e-12 and abs(x[b, 1] - 2.0) < 1e-12:
             sets["top"].append((e, side))
         elif abs(x[a, 1]) < 1e-12 and abs(x[b, 1]) < 1e-12:
             sets["bottom"].append((e, side))
         elif abs(x[a, 0]) < 1e-12 and abs(x[b, 0]) < 1e-12:
             sets["left"].append((e, side))
+        elif abs(x[a, 0] - L) < 1e-12 and abs(x[b, 0] - L) < 1e-12:
+            sets["right"].append((e, side))
+        elif abs(x[a, 0] - A) < 1e-12 and abs(x[b, 0] - A) < 1e-12:  # the vertical cut
+            column = x[list(elements[e]), 0].mean() < A
+            sets["slit_column" if column else "slit_arm"].append((e, side))
     for name, sides in sets.items():
         mesh.side_sets[name] = sorted(sides)
     mesh.add_side_set_node_sets()
