@@ -61,7 +61,7 @@ FreeRotationLimit::FreeRotationLimit(const Mesh& mesh, const Input& input,
         r2 += d * d;
       }
     body.L = std::sqrt(r2 / double(body.nodes.size()));
-    body.h = mean_face_size(mesh, ci.slave);
+    body.h = mean_face_size(mesh, std::vector<std::string>{ci.slave});
     if (!(body.L > 0.0) || !(body.h > 0.0)) continue;
     bodies_.push_back(std::move(body));
   }
