@@ -9,6 +9,7 @@
 #include <Teuchos_CommHelpers.hpp>
 
 #include "assembly/crs_row_search.hpp"
+#include "assembly/rank_holdings.hpp"
 #include "io/errors.hpp"
 #include "kernels/energy_momentum.hpp"
 #include "kernels/surface_load.hpp"
@@ -561,31 +562,14 @@ std::vector<std::string> SolidProblem::stress_names() const {
 }
 
 std::string describe_solid_holdings(const SolidProblem& solid) {
-  const Comm& comm = *solid.comm();
-  long long mine[4] = {solid.num_owned_nodes(), 0, 0, 0};
-  mine[1] = (long long)solid.column_coordinates().extent(0) - mine[0];
+  RankHoldings mine;
+  mine.owned_nodes = solid.num_owned_nodes();
+  mine.ghost_nodes = (long long)solid.column_coordinates().extent(0) - mine.owned_nodes;
   for (const auto& block : solid.local_blocks())
-    for (std::size_t e = 0; e < block.owned.extent(0); ++e) ++mine[block.owned(e) ? 2 : 3];
-  std::vector<long long> all(std::size_t(4 * comm.getSize()));
-  Teuchos::gatherAll(comm, 4, mine, int(all.size()), all.data());
-  if (comm.getRank() != 0) return {};
-  const auto percent = [](long long a, GlobalIndex b) {
-    return b > 0 ? 100.0 * double(a) / double(b) : 0.0;
-  };
-  std::string text;
-  for (int r = 0; r < comm.getSize(); ++r) {
-    const long long* c = all.data() + 4 * r;
-    char line[256];
-    std::snprintf(line, sizeof line,
-                  "solid on rank %d: nodes %lld owned + %lld ghost (%.1f %% of %lld), elements "
-                  "%lld owned + %lld ghost (%.1f %% of %lld)\n",
-                  r, c[0], c[1], percent(c[0] + c[1], solid.num_global_nodes()),
-                  (long long)solid.num_global_nodes(), c[2], c[3],
-                  percent(c[2] + c[3], solid.num_global_elements()),
-                  (long long)solid.num_global_elements());
-    text += line;
-  }
-  return text;
+    for (std::size_t e = 0; e < block.owned.extent(0); ++e)
+      ++(block.owned(e) ? mine.owned_elements : mine.ghost_elements);
+  return describe_rank_holdings(*solid.comm(), "solid", mine, solid.num_global_nodes(),
+                                solid.num_global_elements());
 }
 
 }  // namespace grout

@@ -113,7 +113,7 @@ GROUT_INLINE_FUNCTION ElementStatus shape_gradients(Topology t, int dim, const S
   if (dim < 1 || dim > 3 || topology_dimension(t) != dim) return ElementStatus::unsupported;
   double dN[max_element_nodes * 3];
   const int n = shape_functions(t, xi, N, dN);
-  Scalar J[3][3];
+  Scalar J[3][3] = {};  // zeroed: GCC cannot see that the dim x dim block is filled
   for (int i = 0; i < dim; ++i)
     for (int j = 0; j < dim; ++j) {
       J[i][j] = 0.0;

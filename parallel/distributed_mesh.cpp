@@ -2,6 +2,7 @@
 // migration, checks; and the DistributedMesh look-ups and holdings report.
 
 #include "parallel/distributed_mesh.hpp"
+#include "assembly/rank_holdings.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
@@ -206,27 +207,12 @@ MeshHoldings mesh_holdings(const DistributedMesh& m) {
 }
 
 std::string describe_holdings(const Comm& comm, const DistributedMesh& m) {
-  const MeshHoldings mine = mesh_holdings(m);
-  const long long local[5] = {mine.owned_nodes, mine.ghost_nodes, mine.owned_elements,
-                              mine.ghost_elements, mine.owned_side_set_entries};
-  std::vector<long long> all(std::size_t(5 * comm.getSize()));
-  Teuchos::gatherAll(comm, 5, local, int(all.size()), all.data());
-  if (comm.getRank() != 0) return {};
-  std::string text;
-  const auto percent = [](long long a, long long b) {
-    return b > 0 ? 100.0 * double(a) / double(b) : 0.0;
-  };
-  for (int r = 0; r < comm.getSize(); ++r) {
-    const long long* c = all.data() + 5 * r;
-    char line[256];
-    std::snprintf(line, sizeof line,
-                  "mesh on rank %d: nodes %lld owned + %lld ghost (%.1f %% of %lld), elements "
-                  "%lld owned + %lld ghost (%.1f %% of %lld), side-set faces %lld owned\n",
-                  r, c[0], c[1], percent(c[0] + c[1], m.global_num_nodes), m.global_num_nodes, c[2],
-                  c[3], percent(c[2] + c[3], m.global_num_elements), m.global_num_elements, c[4]);
-    text += line;
-  }
-  return text;
+  const MeshHoldings h = mesh_holdings(m);
+  RankHoldings mine;
+  mine.owned_nodes = h.owned_nodes, mine.ghost_nodes = h.ghost_nodes;
+  mine.owned_elements = h.owned_elements, mine.ghost_elements = h.ghost_elements;
+  mine.side_set_faces = h.owned_side_set_entries;
+  return describe_rank_holdings(comm, "mesh", mine, m.global_num_nodes, m.global_num_elements);
 }
 
 }  // namespace grout
