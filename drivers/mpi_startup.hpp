@@ -101,7 +101,7 @@ inline bool is_loopback(const sockaddr_storage& address) {
 /// for the fence's answer: Nagle's algorithm holds the last one back until the server's delayed
 /// ACK, 40 ms on Linux, in every run (measured: MPI_Finalize 45 ms, 2.5 ms with TCP_NODELAY;
 /// a 2-rank MPI_Init + MPI_Finalize under tools/local_mpi_env 90 -> 48 ms; docs/performance.md,
-/// "MPI_Finalize under mpirun: 40 ms of Nagle"). Sets TCP_NODELAY on the process's TCP
+/// "Running in parallel: Open MPI settings"). Sets TCP_NODELAY on the process's TCP
 /// sockets whose peer is a loopback address: the shared-memory transports (the settings above)
 /// open no other, and on loopback the option only changes when small messages leave. Returns
 /// the number of sockets set.
