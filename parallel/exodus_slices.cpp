@@ -129,21 +129,37 @@ void read_connectivity(const ReadOnlyFile& file, const MeshHeader& h, MeshSlices
   }
 }
 
+/// This rank's slice of one set (`kind`: "side set" or "node set"): its label, its begin
+/// recorded in `begins`, and its ids (elements or nodes, `what`) read by
+/// `read(first, count, ids)` (Exodus's partial read, `first` 1-based) and made 0-based against
+/// their count n.
+template <class Set, class Read>
+std::vector<GlobalIndex> read_set_slice(const Set& set, const char* kind, GlobalIndex size,
+                                        int rank, int ranks, std::vector<GlobalIndex>& begins,
+                                        GlobalIndex n, const char* what, const std::string& file,
+                                        std::string& label, const Read& read) {
+  label = set_label(kind, set.name, set.id);
+  const auto [begin, count] = set_slice(size, rank, ranks, begins);
+  std::vector<GlobalIndex> ids(static_cast<std::size_t>(count));
+  if (count > 0) read(begin + 1, count, ids.data());
+  to_zero_based(ids.data(), ids.data() + ids.size(), n, what, file, label);
+  return ids;
+}
+
 void read_side_sets(const ReadOnlyFile& file, const MeshHeader& h, MeshSlices& s, int rank,
                     int ranks) {
   for (std::size_t k = 0; k < h.side_sets.size(); ++k) {
     const SideSet& set = h.side_sets[k];
-    const std::string label = set_label("side set", set.name, set.id);
-    const auto [begin, count] = set_slice(h.side_set_size[k], rank, ranks, s.side_set_begin);
-    std::vector<GlobalIndex> elements(static_cast<std::size_t>(count)),
-        sides(static_cast<std::size_t>(count));
-    if (count > 0)
-      file.check(ex_get_partial_side_set(file.id(), set.id, begin + 1, count, elements.data(),
-                                         sides.data()),
-                 "reading " + label);
+    std::string label;
+    std::vector<GlobalIndex> sides;
     // Element numbers in a side set are 1-based positions in the global element order.
-    to_zero_based(elements.data(), elements.data() + elements.size(), h.num_elements, "element",
-                  h.file, label);
+    std::vector<GlobalIndex> elements = read_set_slice(
+        set, "side set", h.side_set_size[k], rank, ranks, s.side_set_begin, h.num_elements,
+        "element", h.file, label, [&](GlobalIndex first, GlobalIndex count, GlobalIndex* ids) {
+          sides.resize(static_cast<std::size_t>(count));
+          file.check(ex_get_partial_side_set(file.id(), set.id, first, count, ids, sides.data()),
+                     "reading " + label);
+        });
     std::vector<int> side(sides.size());
     for (std::size_t i = 0; i < sides.size(); ++i) {
       const ElementBlock& block = h.blocks[std::size_t(h.block_of(elements[i]))];
@@ -161,14 +177,13 @@ void read_node_sets(const ReadOnlyFile& file, const MeshHeader& h, MeshSlices& s
                     int ranks) {
   for (std::size_t k = 0; k < h.node_sets.size(); ++k) {
     const NodeSet& set = h.node_sets[k];
-    const std::string label = set_label("node set", set.name, set.id);
-    const auto [begin, count] = set_slice(h.node_set_size[k], rank, ranks, s.node_set_begin);
-    std::vector<GlobalIndex> nodes(static_cast<std::size_t>(count));
-    if (count > 0)
-      file.check(ex_get_partial_node_set(file.id(), set.id, begin + 1, count, nodes.data()),
-                 "reading " + label);
-    to_zero_based(nodes.data(), nodes.data() + nodes.size(), h.num_nodes, "node", h.file, label);
-    s.node_set_nodes.push_back(std::move(nodes));
+    std::string label;
+    s.node_set_nodes.push_back(read_set_slice(
+        set, "node set", h.node_set_size[k], rank, ranks, s.node_set_begin, h.num_nodes, "node",
+        h.file, label, [&](GlobalIndex first, GlobalIndex count, GlobalIndex* ids) {
+          file.check(ex_get_partial_node_set(file.id(), set.id, first, count, ids),
+                     "reading " + label);
+        }));
   }
 }
 
