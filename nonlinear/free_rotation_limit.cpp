@@ -6,51 +6,39 @@
 #include <set>
 
 #include "assembly/contact_surface.hpp"
+#include "io/mesh_bodies.hpp"
 #include "kernels/small_dense_lu.hpp"
 
 namespace grout {
 
-namespace {
-
-// The blocks of the faces of side set `name` (block indices in mesh.blocks).
-std::set<int> blocks_of_side_set(const Mesh& mesh, const std::string& name) {
-  std::set<int> out;
-  const SideSet* set = mesh.find_side_set(name);
-  if (!set) return out;
-  for (GlobalIndex e : set->elements) {
-    const ElementBlock* b = mesh.block_of(e);
-    if (b) out.insert(int(b - mesh.blocks.data()));
-  }
-  return out;
-}
-
-}  // namespace
-
 FreeRotationLimit::FreeRotationLimit(const Mesh& mesh, const Input& input,
                                      Teuchos::RCP<const Map> map)
     : mesh_(mesh), dim_(mesh.dimension), map_(std::move(map)) {
-  // Blocks a tied or frictional pair touches: their rotation is held by that pair.
+  // Bodies as everywhere else: the connected components of the elements (io/mesh_bodies).
+  const std::vector<int> body_of = node_bodies(mesh);
+  const auto bodies_of = [&](const std::vector<std::string>& sets) {
+    std::set<int> out;
+    for (GlobalIndex n : side_set_nodes(mesh, sets)) out.insert(body_of[std::size_t(n)]);
+    return out;
+  };
+  // Bodies a tied, frictional or self-contact pair touches: their rotation is held by it.
   std::set<int> held;
   for (const ContactInput& ci : input.contact) {
     if (ci.type == ContactKind::frictionless && !ci.self) continue;
-    for (const std::string& side : {ci.slave, ci.master})
-      for (int b : blocks_of_side_set(mesh, side)) held.insert(b);
+    for (const bool master : {false, true})
+      for (int b : bodies_of(contact_side_sets(ci, master))) held.insert(b);
   }
   for (std::size_t i = 0; i < input.contact.size(); ++i) {
     const ContactInput& ci = input.contact[i];
     if (ci.type != ContactKind::frictionless || ci.self) continue;
-    const std::set<int> blocks = blocks_of_side_set(mesh, ci.slave);
-    if (blocks.empty() ||
-        std::any_of(blocks.begin(), blocks.end(), [&](int b) { return held.count(b) > 0; }))
+    const std::set<int> slave_bodies = bodies_of({ci.slave});
+    if (slave_bodies.empty() || std::any_of(slave_bodies.begin(), slave_bodies.end(),
+                                            [&](int b) { return held.count(b) > 0; }))
       continue;
     Body body;
     body.pair = int(i);
-    for (int b : blocks)
-      body.nodes.insert(body.nodes.end(), mesh.blocks[b].connectivity.begin(),
-                        mesh.blocks[b].connectivity.end());
-    std::sort(body.nodes.begin(), body.nodes.end());
-    body.nodes.erase(std::unique(body.nodes.begin(), body.nodes.end()), body.nodes.end());
-    if (body.nodes.empty()) continue;
+    for (GlobalIndex n = 0; n < mesh.num_nodes(); ++n)  // ascending: sorted
+      if (slave_bodies.count(body_of[std::size_t(n)])) body.nodes.push_back(n);
     for (GlobalIndex n : body.nodes)
       for (int c = 0; c < dim_; ++c) body.X0[c] += mesh.coordinates[n * dim_ + c];
     for (int c = 0; c < dim_; ++c) body.X0[c] /= double(body.nodes.size());

@@ -17,8 +17,9 @@
 // the edge of the contact zone without a master; the zone then stops at the last paired node,
 // which carries a pressure spike (random_094: b 8 % above Hertz).
 //
-// What. For each slave body of a frictionless pair (the element blocks of its slave faces,
-// unless a tied or frictional pair also touches them; no self-contact), with G and P the
+// What. For each slave body of a frictionless pair (the connected components of elements
+// that hold its slave faces, io/mesh_bodies.hpp, unless a tied, frictional or self-contact
+// pair also touches them; not for a self-contact pair itself), with G and P the
 // Gram matrices of its rigid modes over all and over its prescribed dofs (reference
 // coordinates, kernels/free_rigid_modes.hpp): if a free rigid mode turns the body, the step δ
 // is fitted with rigid modes over the body (β = G⁻¹b), its free part β_f taken, and of that
