@@ -12,13 +12,6 @@ namespace {
 
 using FaceFilter = std::function<bool(const GlobalIndex* nodes, int n)>;
 
-// io's contact_side_sets (the contact core links without the input checks): the slave
-// (master = false) or master side's side sets, all those of `self: [a, b, ...]`.
-std::vector<std::string> side_sets_of(const ContactInput& contact, bool master) {
-  if (contact.self && !contact.self_sets.empty()) return contact.self_sets;
-  return {master ? contact.master : contact.slave};
-}
-
 // The faces of the side sets (one, or the sets of `self: [a, b, ...]`, one surface) that
 // `keep` accepts (all if `keep` is empty), in side-set order; a face's id is its position in
 // the sets taken one after the other.
@@ -121,10 +114,10 @@ ContactSurface build_contact_surface(const Mesh& mesh, const Input& input,
   s.type = contact.type;
   s.dimension = mesh.dimension;
   s.self = contact.self;
-  s.slave =
-      faces_of(mesh, input, contact, contact.self ? "self" : "slave", side_sets_of(contact, false));
-  s.master =
-      faces_of(mesh, input, contact, contact.self ? "self" : "master", side_sets_of(contact, true));
+  s.slave = faces_of(mesh, input, contact, contact.self ? "self" : "slave",
+                     contact_side_sets(contact, false));
+  s.master = faces_of(mesh, input, contact, contact.self ? "self" : "master",
+                      contact_side_sets(contact, true));
   if (!contact.self) check_bodies(mesh, input, contact, s.slave, s.master);
   index_slave_nodes(s);
 
@@ -147,7 +140,8 @@ LocalContactFaces build_local_contact_surface(const Mesh& mesh, const Input& inp
   // The whole surfaces (the mesh is replicated, so every rank finds the same answer).
   const char* const slave_key = contact.self ? "self" : "slave";
   if (contact.self)
-    faces_of(mesh, input, contact, slave_key, side_sets_of(contact, false));  // exists, not empty
+    faces_of(mesh, input, contact, slave_key,
+             contact_side_sets(contact, false));  // exists, not empty
   else
     check_bodies(mesh, input, contact, faces_of(mesh, input, contact, "slave", {contact.slave}),
                  faces_of(mesh, input, contact, "master", {contact.master}));
@@ -162,8 +156,8 @@ LocalContactFaces build_local_contact_surface(const Mesh& mesh, const Input& inp
   };
   // Nodes of the faces with an owned node; then every face touching one of them.
   const std::vector<GlobalIndex> near = unique_nodes(
-      faces_of(mesh, input, contact, slave_key, side_sets_of(contact, false), has_owned));
-  s.slave = faces_of(mesh, input, contact, slave_key, side_sets_of(contact, false),
+      faces_of(mesh, input, contact, slave_key, contact_side_sets(contact, false), has_owned));
+  s.slave = faces_of(mesh, input, contact, slave_key, contact_side_sets(contact, false),
                      [&](const GlobalIndex* nodes, int n) {
                        for (int a = 0; a < n; ++a)
                          if (std::binary_search(near.begin(), near.end(), nodes[a])) return true;
@@ -173,7 +167,7 @@ LocalContactFaces build_local_contact_surface(const Mesh& mesh, const Input& inp
   for (std::size_t f = 0; f < s.slave.size(); ++f)
     s.integrate[f] = has_owned(s.slave.nodes[f].data(), s.slave.num_nodes[f]);
   index_slave_nodes(s);
-  local.owned_master = faces_of(mesh, input, contact, "master", side_sets_of(contact, true),
+  local.owned_master = faces_of(mesh, input, contact, "master", contact_side_sets(contact, true),
                                 [&](const GlobalIndex* nodes, int n) {
                                   for (int a = 0; a < n && !contact.self; ++a) {
                                     // an owned slave node?

@@ -157,7 +157,11 @@ struct Input {
 
 /// The side sets of a contact pair's slave side (master = false) or master side: the one the
 /// input names, or for `self: [a, b, ...]` all of them (one surface, faces in this order).
-std::vector<std::string> contact_side_sets(const ContactInput& contact, bool master);
+/// Inline: the contact core (the embedding API's, without the input checks) uses it too.
+inline std::vector<std::string> contact_side_sets(const ContactInput& contact, bool master) {
+  if (contact.self && !contact.self_sets.empty()) return contact.self_sets;
+  return {master ? contact.master : contact.slave};
+}
 
 /// The material assigned to `block` (by name or id_<n>); nullptr if none.
 const MaterialInput* find_material(const Input& input, const ElementBlock& block);

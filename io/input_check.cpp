@@ -233,11 +233,6 @@ void check_self_sets_disjoint(const Mesh& mesh, const ContactInput& c, const Mes
 
 }  // namespace
 
-std::vector<std::string> contact_side_sets(const ContactInput& contact, bool master) {
-  if (contact.self && !contact.self_sets.empty()) return contact.self_sets;
-  return {master ? contact.master : contact.slave};
-}
-
 const MaterialInput* find_material(const Input& input, const ElementBlock& block) {
   for (const MaterialInput& m : input.materials)
     if (block.named(m.block)) return &m;
