@@ -35,9 +35,11 @@ with an error: a non-HEX8 element, a hexahedron with 1 to 3 (or 4 not forming a 
 than 4) nodes on the plane or crossing it with none (the mesh is not layered in z there), and a
 plane that no face lies on.
 """
+import gzip
 import os
 import re
 import sys
+import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from exodus_mesh import Mesh, MeshError, SIDES, write_exodus  # noqa: E402
@@ -301,6 +303,29 @@ def convert(path, layer=None):
                           "longer than 32 characters)" % (part.name, block, full))
     mesh.add_side_set_node_sets()
     return mesh, dropped
+
+
+def convert_renamed(src, renames, layer=None):
+    """convert() of a Kratos .mdpa read from `src` (gzipped if its name ends in .gz), with each
+    regular expression of `renames`, [(pattern, new name)], replaced in the text first (the
+    cases' meshes, published with long SubModelPart names): every pattern must match. Returns
+    (mesh, nodes dropped); a MeshError names the file."""
+    opener = gzip.open if src.endswith(".gz") else open
+    try:
+        with opener(src, "rt", encoding="utf-8", newline="") as f:
+            text = f.read()
+    except (OSError, UnicodeDecodeError) as e:
+        raise MeshError("%s: %s" % (src, e))
+    for pattern, new in renames:
+        text, n = re.subn(pattern, new, text)
+        if n == 0:
+            raise MeshError("%s: no SubModelPart matches %s" % (src, pattern))
+    with tempfile.TemporaryDirectory() as tmp:
+        name = os.path.basename(src)
+        path = os.path.join(tmp, name[:-3] if name.endswith(".gz") else name)
+        with open(path, "w", encoding="utf-8", newline="") as f:
+            f.write(text)
+        return convert(path, layer)
 
 
 def main(argv):

@@ -15,15 +15,12 @@ Written: block "cylinders"; node sets base, top, slave, master; side sets "slave
 "master_cylinders", "base_cylinders", "top_cylinders" (the block's boundary faces whose three
 nodes lie in the part), each with a node set "<side set>_nodes".
 """
-import gzip
 import os
-import re
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 from exodus_mesh import MeshError, write_exodus  # noqa: E402
-from mdpa_to_exodus import convert  # noqa: E402
+from mdpa_to_exodus import convert_renamed  # noqa: E402
 
 RENAME = [(r"\bParts_Parts_Auto1\b", "cylinders"), (r"\bDISPLACEMENT_FixedBase\b", "base"),
           (r"\bDISPLACEMENT_Displacement_Auto[12]\b", "top"),
@@ -37,26 +34,10 @@ def main(argv):
         return 2
     out, src = argv[1], argv[2]
     try:
-        with gzip.open(src, "rt", encoding="utf-8", newline="") as f:
-            text = f.read()
-    except (OSError, UnicodeDecodeError) as e:
-        print("cylinders_mesh.py: error: %s: %s" % (src, e), file=sys.stderr)
+        mesh, _ = convert_renamed(src, RENAME)
+    except MeshError as e:
+        print("cylinders_mesh.py: error: %s" % e, file=sys.stderr)
         return 2
-    for pattern, name in RENAME:
-        text, n = re.subn(pattern, name, text)
-        if n == 0:
-            print("cylinders_mesh.py: error: %s: no SubModelPart matches %s" % (src, pattern),
-                  file=sys.stderr)
-            return 2
-    with tempfile.TemporaryDirectory() as tmp:
-        path = os.path.join(tmp, os.path.basename(src)[:-3])
-        with open(path, "w", encoding="utf-8", newline="") as f:
-            f.write(text)
-        try:
-            mesh, _ = convert(path)
-        except MeshError as e:
-            print("cylinders_mesh.py: error: %s" % e, file=sys.stderr)
-            return 2
     write_exodus(mesh, out, title="Kratos cylinders, " + os.path.basename(src))
     print("cylinders_mesh.py: %s -> %s: %d nodes, node sets %s, side sets %s"
           % (src, out, len(mesh.coords), sorted(mesh.node_sets), sorted(mesh.side_sets)))

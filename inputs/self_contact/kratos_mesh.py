@@ -9,15 +9,13 @@ whatever the order of the condition's nodes), nodes of no element dropped.
 
 Usage: kratos_mesh.py OUTPUT.exo INPUT.mdpa.gz OLD=NEW [OLD=NEW ...]
 """
-import gzip
 import os
 import re
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 from exodus_mesh import MeshError, write_exodus  # noqa: E402
-from mdpa_to_exodus import convert  # noqa: E402
+from mdpa_to_exodus import convert_renamed  # noqa: E402
 
 
 def main(argv):
@@ -25,26 +23,13 @@ def main(argv):
         print(__doc__.strip().splitlines()[-1], file=sys.stderr)
         return 2
     out, src = argv[1], argv[2]
+    pairs = (a.split("=", 1) for a in argv[3:])
+    renames = [(r"\b%s\b" % re.escape(old), new) for old, new in pairs]
     try:
-        with gzip.open(src, "rt", encoding="utf-8", newline="") as f:
-            text = f.read()
-    except (OSError, UnicodeDecodeError) as e:
-        print("kratos_mesh.py: error: %s: %s" % (src, e), file=sys.stderr)
+        mesh, dropped = convert_renamed(src, renames)
+    except MeshError as e:
+        print("kratos_mesh.py: error: %s" % e, file=sys.stderr)
         return 2
-    for old, new in (a.split("=", 1) for a in argv[3:]):
-        text, n = re.subn(r"\b%s\b" % re.escape(old), new, text)
-        if n == 0:
-            print("kratos_mesh.py: error: %s: no SubModelPart %s" % (src, old), file=sys.stderr)
-            return 2
-    with tempfile.TemporaryDirectory() as tmp:
-        path = os.path.join(tmp, os.path.basename(src)[:-3])
-        with open(path, "w", encoding="utf-8", newline="") as f:
-            f.write(text)
-        try:
-            mesh, dropped = convert(path)
-        except MeshError as e:
-            print("kratos_mesh.py: error: %s" % e, file=sys.stderr)
-            return 2
     write_exodus(mesh, out, title="Kratos " + os.path.basename(src))
     print("kratos_mesh.py: %s -> %s: %d nodes (%d of no element dropped), node sets %s, side "
           "sets %s" % (src, out, len(mesh.coords), dropped, sorted(mesh.node_sets),
