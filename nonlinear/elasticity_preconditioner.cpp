@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "kernels/free_rigid_modes.hpp"
+
 namespace grout {
 
 Teuchos::RCP<MultiVector> rigid_body_modes(const Map& map, int dim,
@@ -17,7 +19,7 @@ Teuchos::RCP<MultiVector> rigid_body_modes(const Map& map, int dim,
     for (int d = 0; d < dim; ++d) centre[d] += coordinates[n * dim + d];
   for (int d = 0; d < dim; ++d) centre[d] /= num_nodes > 0 ? double(num_nodes) : 1.0;
 
-  const int num_modes = dim == 2 ? 3 : 6;
+  const int num_modes = rigid_mode_count(dim);
   auto modes = Teuchos::rcp(new MultiVector(Teuchos::rcpFromRef(map), num_modes));
   auto v = modes->getLocalViewHost(Tpetra::Access::OverwriteAll);
   for (LO i = 0; i < LO(map.getNodeNumElements()); ++i) {
@@ -27,18 +29,11 @@ Teuchos::RCP<MultiVector> rigid_body_modes(const Map& map, int dim,
     if (node >= GO(num_nodes))
       throw std::invalid_argument("rigid_body_modes: dof " + std::to_string(g) +
                                   " is not a displacement dof");
-    double x[3] = {0.0, 0.0, 0.0};
-    for (int d = 0; d < dim; ++d) x[d] = coordinates[node * dim + d] - centre[d];
-    for (int k = 0; k < num_modes; ++k) v(i, k) = 0.0;
-    v(i, c) = 1.0;  // translation e_c
-    if (dim == 2) {
-      // rotation about z: (−y, x)
-      v(i, 2) = c == 0 ? -x[1] : x[0];
-    } else {
-      // rotations about x: (0, −z, y); about y: (z, 0, −x); about z: (−y, x, 0)
-      const double rx[3] = {0.0, -x[2], x[1]}, ry[3] = {x[2], 0.0, -x[0]},
-                   rz[3] = {-x[1], x[0], 0.0};
-      v(i, 3) = rx[c], v(i, 4) = ry[c], v(i, 5) = rz[c];
+    // Translations e_c, then the rotations e_k × (x − centre) (kernels/free_rigid_modes.hpp).
+    for (int k = 0; k < num_modes; ++k) {
+      double r[3];
+      rigid_mode_value(dim, k, &coordinates[std::size_t(node) * dim], centre, 1.0, r);
+      v(i, k) = r[c];
     }
   }
   return modes;
