@@ -120,16 +120,24 @@ def active_on(r, faces, step=-1):
     return int(np.sum(r.nodal("contact_status", step)[nodes] > 0))
 
 
+def finished(path, end, failures):
+    """The rows of PATH.csv if the run reached t = end, else None (and a failure)."""
+    rows = rows_of(path + ".csv")
+    if not rows or abs(float(rows[-1]["time"]) - end) > 1e-9:
+        failures.append("%s: ends at t = %s (expected %g)"
+                        % (path, rows[-1]["time"] if rows else "-", end))
+        return None
+    return rows
+
+
 def check_tubes(stem, mesh, ranks, end, short=False, plot=None):
     failures = []
     sets = side_set_faces(mesh, ["inner_lower", "inner_upper", "upper_outer", "lower_outer"])
     inner = np.concatenate([sets["inner_lower"], sets["inner_upper"]])
     for np_ in ranks:
         path = "np%d/%s" % (np_, stem)
-        rows = rows_of(path + ".csv")
-        if not rows or abs(float(rows[-1]["time"]) - end) > 1e-9:
-            failures.append("%s: ends at t = %s (expected %g)"
-                            % (path, rows[-1]["time"] if rows else "-", end))
+        rows = finished(path, end, failures)
+        if rows is None:
             continue
         r = Results(path + ".e")
         X = r.coordinates().T
@@ -180,10 +188,8 @@ def check_s_profile(stem, mesh, ranks, end):
     sets = side_set_faces(mesh, ["fold_lower", "fold_upper"])
     for np_ in ranks:
         path = "np%d/%s" % (np_, stem)
-        rows = rows_of(path + ".csv")
-        if not rows or abs(float(rows[-1]["time"]) - end) > 1e-9:
-            failures.append("%s: ends at t = %s (expected %g)"
-                            % (path, rows[-1]["time"] if rows else "-", end))
+        rows = finished(path, end, failures)
+        if rows is None:
             continue
         r = Results(path + ".e")
         X = r.coordinates().T
