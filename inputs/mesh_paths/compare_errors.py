@@ -3,8 +3,8 @@
 
 Usage: compare_errors.py GROUT [LAUNCHER ...]
 
-Writes inputs with one defect each (a block, node set or side set the mesh lacks, a block
-without a material, a 2D model on a 3D mesh), from the working directory's meshes, and runs each
+Writes inputs with one defect each (a block, node set or side set the mesh lacks, an empty side
+or node set (empty_sets.exo), a block without a material, a 2D model on a 3D mesh), from the working directory's meshes, and runs each
 on 1 and 2 ranks as the driver chooses (these static inputs without contact read the
 distributed mesh) and with GROUT_MESH=replicated: both must exit 2 with the same
 "grout: error: ..." line, naming the file and the key. LAUNCHER: the MPI launcher and its
@@ -33,6 +33,12 @@ CASES = {  # name: (mesh, replacements, regex the message must match)
                          "grout/dirichlet/fix_x/node_set: no node set 'lft_nodes'"),
     "missing_side_set": ("quad4.exo", [("side_set: right", "side_set: rigth")],
                          "grout/loads/pull/side_set: no side set 'rigth'"),
+    "empty_side_set": ("empty_sets.exo", [("side_set: right", "side_set: empty")],
+                       "grout/loads/pull/side_set: side set 'empty' in mesh 'empty_sets.exo' is "
+                       "empty (it has no faces)"),
+    "empty_node_set": ("empty_sets.exo", [("node_set: left_nodes", "node_set: empty")],
+                       "grout/dirichlet/fix_x/node_set: node set 'empty' in mesh "
+                       "'empty_sets.exo' is empty (it has no nodes)"),
     "block_without_material": ("stacked.exo", [("block: block", "block: lower"),
                                                ("left_nodes", "lower_left_nodes"),
                                                ("bottom_nodes", "lower_bottom_nodes"),
