@@ -1,5 +1,6 @@
 #include "drivers/results_file.hpp"
 
+#include <stdexcept>
 #include <utility>
 
 #include "drivers/gathered_geometry.hpp"
@@ -10,6 +11,8 @@ ResultsFile::ResultsFile(const Mesh& mesh, const SolidProblem& solid, bool per_r
                          const DistributedMesh* distributed)
     : mesh_(mesh), comm_(*solid.comm()), per_rank_(per_rank), distributed_(distributed) {
   const Comm& comm = comm_;
+  if (per_rank && distributed)  // make_output_piece cuts its pieces from the whole mesh
+    throw std::logic_error("ResultsFile: output/parallel: per_rank needs the replicated mesh");
   for (int k = 0; k < solid.num_owned_nodes(); ++k) owned_nodes_.push_back(solid.column_node(k));
   if (!per_rank) {
     nodes_to_root_ = std::make_unique<RootGather>(comm, owned_nodes_, solid.num_global_nodes());
