@@ -7,18 +7,26 @@
 // contact, Jacobian, linear solve; min/mean/max over ranks) and, before the first step,
 // which mesh the run reads and what each rank holds of it.
 //
+// The mesh: a static run without contact, on a direct solver and with one results file, reads
+// the distributed mesh (each rank its part, drivers/mesh_choice.hpp); any other run the
+// replicated mesh. GROUT_MESH=replicated keeps the replicated mesh for every run.
+//
 // Exit codes: 0 done, 2 bad input (message names the file and key or mesh entity; also an
 // output that cannot be written), 3 a step did not converge (every earlier step is already
 // written), 1 anything else. On several ranks an error found by one rank ends every rank
 // with one message and one exit code (assembly/agree_on_errors.hpp).
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_Core.hpp>
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "assembly/agree_on_errors.hpp"
 #include "assembly/distribute_mesh.hpp"
@@ -26,6 +34,7 @@
 #include "assembly/mass_matrix.hpp"
 #include "assembly/solid_problem.hpp"
 #include "drivers/heap_settings.hpp"
+#include "drivers/mesh_choice.hpp"
 #include "drivers/mpi_startup.hpp"
 #include "drivers/results_output.hpp"
 #include "io/errors.hpp"
@@ -36,6 +45,9 @@
 #include "nonlinear/load_stepping.hpp"
 #include "nonlinear/mechanics_problem.hpp"
 #include "nonlinear/newton.hpp"
+#include "nonlinear/system_layout.hpp"
+#include "parallel/distributed_mesh.hpp"
+#include "parallel/exodus_slices.hpp"
 
 namespace {
 
@@ -61,6 +73,59 @@ void redirect_outputs(Input& input, const std::string& dir, bool root) {
     input.output.summary = (fs::path(dir) / fs::path(input.output.summary).filename()).string();
 }
 
+/// The mesh of a run: the replicated mesh, or this rank's part of the distributed mesh.
+struct RunMesh {
+  std::optional<Mesh> replicated;
+  std::optional<DistributedMesh> distributed;
+  std::string replicated_reason;  ///< why not the distributed mesh (drivers/mesh_choice.hpp)
+
+  const Mesh& mesh() const { return distributed ? distributed->local : *replicated; }
+  GlobalIndex num_nodes() const {
+    return distributed ? distributed->global_num_nodes : replicated->num_nodes();
+  }
+  GlobalIndex num_elements() const {
+    return distributed ? distributed->global_num_elements : replicated->num_elements();
+  }
+};
+
+/// Collective. Reads the mesh the run can use (drivers/mesh_choice.hpp) and checks the input
+/// against it; every rank agrees on the outcome.
+RunMesh read_mesh(const Input& input, bool forced_replicated,
+                  const Teuchos::RCP<const Comm>& comm) {
+  const MeshChoice choice = choose_mesh(
+      input, [&] { return read_mesh_header(*comm, input.mesh_file).num_nodes; }, forced_replicated);
+  RunMesh run_mesh;
+  if (!choice.distributed) {
+    run_mesh.replicated_reason = choice.reason;
+    run_mesh.replicated =
+        read_and_broadcast_mesh(*comm, [&] { return read_exodus(input.mesh_file); });
+    agree_on_errors(*comm, [&] { check_input_against_mesh(input, *run_mesh.replicated); });
+    return run_mesh;
+  }
+  const DistributedMesh& mesh =
+      run_mesh.distributed.emplace(read_distributed_mesh(*comm, input.mesh_file));
+  double x_max = 0.0, x_max_all = 0.0;  // the axisymmetric check's extent in x
+  for (GlobalIndex n = 0; n < mesh.num_owned_nodes; ++n)
+    x_max =
+        std::max(x_max, std::abs(mesh.local.coordinates[std::size_t(n * mesh.local.dimension)]));
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, x_max, Teuchos::outArg(x_max_all));
+  const MeshPartNumbers numbers{mesh.node_gid, mesh.element_gid,          mesh.element_owner,
+                                mesh.rank,     mesh.side_set_global_size, mesh.node_set_global_size,
+                                x_max_all};
+  agree_on_errors(*comm, [&] { check_input_against_mesh(input, mesh.local, numbers); });
+  return run_mesh;
+}
+
+/// The layout the direct solvers read (linear_solver.hpp): the dimension and the multiplier
+/// pairing; no coordinates or bodies, which only the iterative path reads. Collective.
+SystemLayout direct_solver_layout(const MechanicsProblem& problem, int dim) {
+  SystemLayout layout;
+  layout.multiplier_pairing = problem.multiplier_pairing();
+  layout.dofs_per_node = dim;
+  layout.dim = dim;
+  return layout;
+}
+
 void run(const std::string& input_path, const std::string& output_dir, bool timers,
          const Teuchos::RCP<const Comm>& comm) {
   const bool root = comm->getRank() == 0;
@@ -69,15 +134,18 @@ void run(const std::string& input_path, const std::string& output_dir, bool time
   // Parse: the input is validated into plain structs before anything is built. Each phase
   // whose errors one rank alone may find ends with every rank agreeing on its outcome.
   Input input;
+  bool forced_replicated = false;
   agree_on_errors(*comm, [&] {
     input = read_input(input_path);
     if (!output_dir.empty()) redirect_outputs(input, output_dir, root);
+    forced_replicated = replicated_mesh_forced();
   });
-  const Mesh mesh = read_and_broadcast_mesh(*comm, [&] { return read_exodus(input.mesh_file); });
-  agree_on_errors(*comm, [&] { check_input_against_mesh(input, mesh); });
+  const RunMesh run_mesh = read_mesh(input, forced_replicated, comm);
+  const Mesh& mesh = run_mesh.mesh();  // the replicated mesh or this rank's part
+  const DistributedMesh* distributed = run_mesh.distributed ? &*run_mesh.distributed : nullptr;
   if (root) {
     std::printf("grout: %s: %lld nodes, %lld elements, %d rank(s)\n", input.file.c_str(),
-                mesh.num_nodes(), mesh.num_elements(), comm->getSize());
+                run_mesh.num_nodes(), run_mesh.num_elements(), comm->getSize());
     // Said before the first step, so that a run that is killed still names its results.
     if (input.output.parallel == OutputParallel::per_rank && comm->getSize() > 1)
       std::printf(
@@ -98,20 +166,32 @@ void run(const std::string& input_path, const std::string& output_dir, bool time
   }
 
   // Build: partition, maps, graph, contact interfaces; solvers from the `solver` sublist.
-  const SolidProblem solid(mesh, input, comm);
+  const std::unique_ptr<const SolidProblem> solid_problem =
+      distributed ? std::make_unique<const SolidProblem>(mesh_part(*distributed), input, comm)
+                  : std::make_unique<const SolidProblem>(mesh, input, comm);
+  const SolidProblem& solid = *solid_problem;
   if (timers) {  // collective
+    const std::string mesh_held = distributed ? describe_holdings(*comm, *distributed) : "";
     const std::string held = describe_solid_holdings(solid);
-    if (root)
-      std::printf("grout: mesh: replicated (every rank holds all %lld nodes and %lld elements)\n%s",
-                  mesh.num_nodes(), mesh.num_elements(), held.c_str());
+    if (root && distributed)
+      std::printf("grout: mesh: distributed (each rank reads a slice and holds its part)\n%s%s",
+                  mesh_held.c_str(), held.c_str());
+    else if (root)
+      std::printf(
+          "grout: mesh: replicated (every rank holds all %lld nodes and %lld elements; %s)\n%s",
+          run_mesh.num_nodes(), run_mesh.num_elements(), run_mesh.replicated_reason.c_str(),
+          held.c_str());
   }
   MechanicsProblem problem(solid, mesh, input);
   const NewtonOptions& newton = input.solver.newton;
-  const SystemLayout layout = system_layout(problem, mesh);  // pairing, coordinates, bodies
+  // The replicated mesh's layout also has every node's coordinates and body (iterative path).
+  const SystemLayout layout =
+      distributed ? direct_solver_layout(problem, mesh.dimension) : system_layout(problem, mesh);
   LinearSolver linear(input.solver.linear, layout);
   std::unique_ptr<ResultsOutput> output;
-  agree_on_errors(*comm,
-                  [&] { output = std::make_unique<ResultsOutput>(mesh, input, solid, problem); });
+  agree_on_errors(*comm, [&] {
+    output = std::make_unique<ResultsOutput>(mesh, input, solid, problem, distributed);
+  });
   SteppingOptions stepping;
   stepping.end_time = input.time.end;
   stepping.steps = input.time.steps;

@@ -1,17 +1,23 @@
 #include "drivers/results_file.hpp"
 
+#include <stdexcept>
 #include <utility>
+
+#include "drivers/gathered_geometry.hpp"
 
 namespace grout {
 
-ResultsFile::ResultsFile(const Mesh& mesh, const SolidProblem& solid, bool per_rank)
-    : mesh_(mesh), per_rank_(per_rank) {
-  const Comm& comm = *solid.comm();
+ResultsFile::ResultsFile(const Mesh& mesh, const SolidProblem& solid, bool per_rank,
+                         const DistributedMesh* distributed)
+    : mesh_(mesh), comm_(*solid.comm()), per_rank_(per_rank), distributed_(distributed) {
+  const Comm& comm = comm_;
+  if (per_rank && distributed)  // make_output_piece cuts its pieces from the whole mesh
+    throw std::logic_error("ResultsFile: output/parallel: per_rank needs the replicated mesh");
   for (int k = 0; k < solid.num_owned_nodes(); ++k) owned_nodes_.push_back(solid.column_node(k));
   if (!per_rank) {
     nodes_to_root_ = std::make_unique<RootGather>(comm, owned_nodes_, solid.num_global_nodes());
     elements_to_root_ =
-        std::make_unique<RootGather>(comm, solid.owned_elements(), mesh.num_elements());
+        std::make_unique<RootGather>(comm, solid.owned_elements(), solid.num_global_elements());
     return;
   }
   piece_ = std::make_unique<OutputPiece>(make_output_piece(mesh, solid));
@@ -31,9 +37,33 @@ void ResultsFile::open(const std::string& path, const ResultsFileNames& names,
     writer_ = std::make_unique<ExodusWriter>(path, piece_->mesh, names.nodal, names.element,
                                              names.global, provenance, &piece_->exodus);
     piece_.reset();
+  } else if (distributed_) {
+    writer_ = std::make_unique<ExodusWriter>(path, distributed_outline(*distributed_), names.nodal,
+                                             names.element, names.global, provenance);
   } else {
     writer_ = std::make_unique<ExodusWriter>(path, mesh_, names.nodal, names.element, names.global,
                                              provenance);
+  }
+}
+
+void ResultsFile::write_mesh() {
+  if (!distributed_) return;
+  const DistributedMesh& mesh = *distributed_;
+  for (int d = 0; d < mesh.local.dimension; ++d) {
+    const std::vector<double> x = gather_coordinates(comm_, mesh, d);
+    guarded([&](ExodusWriter& w) { w.put_coordinates(d, x); });
+  }
+  for (std::size_t b = 0; b < mesh.local.blocks.size(); ++b) {
+    const std::vector<GlobalIndex> nodes = gather_connectivity(comm_, mesh, b);
+    guarded([&](ExodusWriter& w) { w.put_connectivity(b, nodes); });
+  }
+  for (std::size_t s = 0; s < mesh.local.side_sets.size(); ++s) {
+    const auto set = gather_side_set(comm_, mesh, s);  // (elements, sides)
+    guarded([&](ExodusWriter& w) { w.put_side_set(s, set.first, set.second); });
+  }
+  for (std::size_t s = 0; s < mesh.local.node_sets.size(); ++s) {
+    const std::vector<GlobalIndex> nodes = gather_node_set(comm_, mesh, s);
+    guarded([&](ExodusWriter& w) { w.put_node_set(s, nodes); });
   }
 }
 

@@ -3,7 +3,9 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <algorithm>
+#include <exception>
 #include <iomanip>
+#include <numeric>
 #include <sstream>
 #include <unordered_map>
 
@@ -27,10 +29,33 @@ std::vector<std::string> output_stress_names(const SolidProblem& solid) {
   if (solid.dimension() == 2) names.insert(names.end(), {"stress_yz", "stress_zx"});
   return names;
 }
+
+/// This rank's entries of the node set `name`: each one's global node and its position in the
+/// file's set, and the set's size in the file. On the replicated mesh every entry, at its
+/// place; on a distributed mesh's part the entries of its local nodes (node_set_position).
+struct NodeSetEntries {
+  std::vector<GlobalIndex> nodes, positions;
+  GlobalIndex size = 0;
+};
+NodeSetEntries node_set_entries(const Mesh& mesh, const DistributedMesh* distributed,
+                                const std::string& name) {
+  const NodeSet& set = *mesh.find_node_set(name);
+  NodeSetEntries entries;
+  entries.size = GlobalIndex(set.nodes.size());
+  entries.nodes = set.nodes;
+  entries.positions.resize(set.nodes.size());
+  std::iota(entries.positions.begin(), entries.positions.end(), GlobalIndex(0));
+  if (!distributed) return entries;
+  const auto s = std::size_t(&set - mesh.node_sets.data());
+  entries.size = distributed->node_set_global_size[s];
+  for (GlobalIndex& n : entries.nodes) n = distributed->node_gid[std::size_t(n)];
+  entries.positions = distributed->node_set_position[s];
+  return entries;
+}
 }  // namespace
 
 ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidProblem& solid,
-                             const MechanicsProblem& problem)
+                             const MechanicsProblem& problem, const DistributedMesh* distributed)
     : mesh_(mesh),
       input_(input),
       solid_(solid),
@@ -70,7 +95,7 @@ ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidPr
   // Collective set-up first: nothing below it may throw on one rank before a collective call.
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: results output set-up"));
   const bool per_rank = input.output.parallel == OutputParallel::per_rank;
-  exodus_ = std::make_unique<ResultsFile>(mesh, solid, per_rank);
+  exodus_ = std::make_unique<ResultsFile>(mesh, solid, per_rank, distributed);
   const Comm& comm = *solid.comm();
   for (std::size_t g = first_reaction; g < reaction_globals_end; ++g) {
     const std::string& name = global_names_[g];
@@ -78,21 +103,36 @@ ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidPr
     SetSum sum;
     sum.axis = name.back() - 'x';
     std::vector<GlobalIndex> positions;  // of this rank's entries in the set
-    const std::vector<GlobalIndex>& set = mesh.find_node_set(set_name)->nodes;
+    const NodeSetEntries set = node_set_entries(mesh, distributed, set_name);
     const auto& owned = exodus_->owned_nodes();
-    for (std::size_t k = 0; k < set.size(); ++k) {
-      const auto it = std::lower_bound(owned.begin(), owned.end(), set[k]);
-      if (it == owned.end() || *it != set[k]) continue;
-      positions.push_back(GlobalIndex(k));
+    for (std::size_t k = 0; k < set.nodes.size(); ++k) {
+      const auto it = std::lower_bound(owned.begin(), owned.end(), set.nodes[k]);
+      if (it == owned.end() || *it != set.nodes[k]) continue;
+      positions.push_back(set.positions[k]);
       sum.owned.push_back(std::size_t(it - owned.begin()));
     }
-    sum.to_root = std::make_unique<RootGather>(comm, positions, GlobalIndex(set.size()));
+    sum.to_root = std::make_unique<RootGather>(comm, positions, set.size);
     reaction_sums_.push_back(std::move(sum));
   }
 
   // Then this rank's files: under `single` rank 0 writes every file, under `per_rank` each
-  // rank its Exodus file and rank 0 the CSV files.
-  if (!per_rank && !root_) return;
+  // rank its Exodus file and rank 0 the CSV files; a distributed mesh's arrays follow, gathered
+  // (collective, so a file error on rank 0 waits until they are through).
+  std::exception_ptr error;
+  if (per_rank || root_) {
+    try {
+      open_files(input, nodal);
+    } catch (...) {
+      error = std::current_exception();
+    }
+  }
+  exodus_->write_mesh();
+  if (error) std::rethrow_exception(error);
+}
+
+void ResultsOutput::open_files(const Input& input, const std::vector<std::string>& nodal) {
+  const Comm& comm = *solid_.comm();
+  const SolidProblem& solid = solid_;
   const std::vector<OutputFile> files =
       output_files(input, profile_wanted_, comm.getRank(), comm.getSize());
   check_output_files(input, files);
@@ -115,8 +155,8 @@ ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidPr
       profile_.write(
           "step,time,node,x,y,contact_pressure,normal_gap,contact_status,lm_x,lm_y,"
           "slip_x,slip_y\n");
-      profile_nodes_ = problem.slave_nodes();
-      const auto& X = mesh.coordinates;
+      profile_nodes_ = problem_.slave_nodes();
+      const auto& X = mesh_.coordinates;
       std::sort(profile_nodes_.begin(), profile_nodes_.end(), [&](GlobalIndex a, GlobalIndex b) {
         return X[2 * a] < X[2 * b] || (X[2 * a] == X[2 * b] && X[2 * a + 1] < X[2 * b + 1]);
       });

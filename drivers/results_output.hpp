@@ -21,13 +21,17 @@ namespace grout {
 
 class ResultsOutput {
  public:
+  /// Collective. `distributed`: `mesh` is this rank's part of that mesh (it must outlive the
+  /// constructor; output/parallel: single, no contact); nullptr: the replicated mesh.
   ResultsOutput(const Mesh& mesh, const Input& input, const SolidProblem& solid,
-                const MechanicsProblem& problem);
+                const MechanicsProblem& problem, const DistributedMesh* distributed = nullptr);
   void write(const ConvergedStep& step);
 
  private:
   /// Component `d` of a dof vector at the owned nodes (ResultsFile::owned_nodes order).
   std::vector<double> component(const Vector& v, int d) const;
+  /// This rank's files under their temporary names (not collective; may throw).
+  void open_files(const Input& input, const std::vector<std::string>& nodal);
   /// Position of a global node among the owned nodes.
   std::size_t owned_position(GlobalIndex node) const;
 

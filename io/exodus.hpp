@@ -54,6 +54,28 @@ struct ExodusPiece {
   std::vector<NodeCommMap> node_maps;
 };
 
+/// \brief The mesh of a file without its arrays: what ExodusWriter defines before any
+/// coordinate, connectivity or set entry is written. `blocks` (names, ids, topologies, nodes
+/// per element, first elements) and the sets (names, ids) carry no entries; their sizes are
+/// `block_sizes`, `side_set_sizes`, `node_set_sizes`. A writer made from an outline takes the
+/// arrays one at a time (put_coordinates, put_connectivity, put_side_set, put_node_set), as
+/// rank 0 receives them from the ranks of a distributed mesh.
+struct MeshOutline {
+  std::string file;
+  int dimension = 2;
+  GlobalIndex num_nodes = 0;
+  std::vector<ElementBlock> blocks;
+  std::vector<GlobalIndex> block_sizes;
+  std::vector<SideSet> side_sets;
+  std::vector<GlobalIndex> side_set_sizes;
+  std::vector<NodeSet> node_sets;
+  std::vector<GlobalIndex> node_set_sizes;
+  GlobalIndex num_elements() const;
+};
+
+/// The outline of `mesh` (names, ids and sizes; no arrays copied).
+MeshOutline mesh_outline(const Mesh& mesh);
+
 /// \brief Writes a results file: the mesh at construction, then one time step per call
 /// of write_step() (or begin_step(), put_nodal() and put_element() once per variable,
 /// put_globals(), end_step()), flushed to disk at the end of each step so that a later
@@ -67,6 +89,11 @@ class ExodusWriter {
                std::vector<std::string> element_vars, std::vector<std::string> global_vars,
                const ExodusProvenance& provenance = {}, const ExodusPiece* piece = nullptr);
   ~ExodusWriter();
+  /// The file defined from `outline`; its coordinates, connectivity and set entries follow
+  /// through the put_* calls below, each once, before the first step.
+  ExodusWriter(const std::string& path, const MeshOutline& outline,
+               std::vector<std::string> nodal_vars, std::vector<std::string> element_vars,
+               std::vector<std::string> global_vars, const ExodusProvenance& provenance = {});
   ExodusWriter(ExodusWriter&& other) noexcept;
   ExodusWriter& operator=(ExodusWriter&& other) noexcept;
   ExodusWriter(const ExodusWriter&) = delete;
@@ -90,6 +117,16 @@ class ExodusWriter {
   /// Flushes the step to disk and counts it.
   void end_step();
 
+  /// Coordinate `component` (0 x, 1 y, 2 z) of every node.
+  void put_coordinates(int component, const std::vector<double>& values);
+  /// Block `b`'s connectivity: 0-based nodes, element-major, block_sizes[b] elements.
+  void put_connectivity(std::size_t b, const std::vector<GlobalIndex>& nodes);
+  /// Side set `s`'s entries: 0-based elements and 1-based Exodus sides, in the set's order.
+  void put_side_set(std::size_t s, const std::vector<GlobalIndex>& elements,
+                    const std::vector<int>& sides);
+  /// Node set `s`'s entries: 0-based nodes, in the set's order.
+  void put_node_set(std::size_t s, const std::vector<GlobalIndex>& nodes);
+
   int num_steps() const { return num_steps_; }
   const std::string& path() const { return path_; }
 
@@ -98,7 +135,15 @@ class ExodusWriter {
     long long id;
     GlobalIndex first_element;
     GlobalIndex num_elements;
+    int nodes_per_element;
+    std::string name;
   };
+  struct SetSlot {
+    long long id;
+    std::string name;
+    GlobalIndex size;
+  };
+  void keep_outline(const MeshOutline& outline);
   void close() noexcept;
   void check_step(int status, const std::string& what) const;
 
@@ -107,6 +152,7 @@ class ExodusWriter {
   GlobalIndex num_nodes_ = 0;
   GlobalIndex num_elements_ = 0;
   std::vector<BlockSlice> blocks_;
+  std::vector<SetSlot> side_sets_, node_sets_;  ///< for the put_* calls
   std::size_t num_nodal_ = 0, num_element_ = 0, num_global_ = 0;
   int num_steps_ = 0;
   int step_ = 0;  ///< the step being written (begin_step)

@@ -90,6 +90,7 @@ class WriteFile {
   WriteFile& operator=(const WriteFile&) = delete;
 
   int id() const { return id_; }
+  const std::string& path() const { return path_; }
   int release() { return std::exchange(id_, -1); }
   void check(int status, const std::string& what) const {
     if (status < 0)
@@ -134,58 +135,90 @@ void write_coordinates(const WriteFile& file, const Mesh& mesh) {
     file.check(
         ex_put_coord(file.id(), xyz[0].data(), xyz[1].data(), d == 3 ? xyz[2].data() : nullptr),
         "coordinates");
+}
+
+void write_coordinate_names(const WriteFile& file) {
   const char* names[3] = {"x", "y", "z"};
   file.check(ex_put_coord_names(file.id(), const_cast<char**>(names)), "coordinate names");
 }
 
-void write_blocks(const WriteFile& file, const Mesh& mesh, const std::vector<int64_t>& ids) {
-  for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
-    const ElementBlock& block = mesh.blocks[b];
+/// 0-based entity indices as Exodus's 1-based ones.
+std::vector<int64_t> one_based(const std::vector<GlobalIndex>& indices) {
+  std::vector<int64_t> out(indices.begin(), indices.end());
+  for (auto& i : out) ++i;
+  return out;
+}
+
+/// Writes one array of the mesh into the open file `id` (`path` for the message).
+void check_mesh_array(int status, const std::string& path, const std::string& what) {
+  if (status < 0)
+    fail(path, "Exodus error while writing " + what + " (" + exodus_reason(status) + ")");
+}
+
+void write_connectivity(int id, const std::string& path, int64_t block_id, const std::string& name,
+                        const std::vector<GlobalIndex>& nodes) {
+  if (nodes.empty()) return;
+  check_mesh_array(
+      ex_put_conn(id, EX_ELEM_BLOCK, block_id, one_based(nodes).data(), nullptr, nullptr), path,
+      "connectivity of element block '" + name + "'");
+}
+
+void write_side_set(int id, const std::string& path, int64_t set_id, const std::string& name,
+                    const std::vector<GlobalIndex>& elements, const std::vector<int>& sides) {
+  if (elements.empty()) return;
+  std::vector<int64_t> sides64(sides.begin(), sides.end());
+  check_mesh_array(ex_put_set(id, EX_SIDE_SET, set_id, one_based(elements).data(), sides64.data()),
+                   path, "side set '" + name + "'");
+}
+
+void write_node_set(int id, const std::string& path, int64_t set_id, const std::string& name,
+                    const std::vector<GlobalIndex>& nodes) {
+  if (nodes.empty()) return;
+  check_mesh_array(ex_put_set(id, EX_NODE_SET, set_id, one_based(nodes).data(), nullptr), path,
+                   "node set '" + name + "'");
+}
+
+/// The blocks of `outline`, and with `mesh` their connectivity.
+void write_blocks(const WriteFile& file, const MeshOutline& outline,
+                  const std::vector<int64_t>& ids, const Mesh* mesh) {
+  for (std::size_t b = 0; b < outline.blocks.size(); ++b) {
+    const ElementBlock& block = outline.blocks[b];
     const char* type = exodus_element_type(block.topology);
-    if (!type) fail(mesh.file, "element block '" + block.name + "' has no Exodus element type");
-    const GlobalIndex n = block.num_elements();
-    file.check(
-        ex_put_block(file.id(), EX_ELEM_BLOCK, ids[b], type, n, block.nodes_per_element, 0, 0, 0),
-        "element block '" + block.name + "'");
-    if (n == 0) continue;
-    std::vector<int64_t> connectivity(block.connectivity.begin(), block.connectivity.end());
-    for (auto& node : connectivity) ++node;  // Exodus is 1-based
-    file.check(ex_put_conn(file.id(), EX_ELEM_BLOCK, ids[b], connectivity.data(), nullptr, nullptr),
-               "connectivity of element block '" + block.name + "'");
+    if (!type) fail(outline.file, "element block '" + block.name + "' has no Exodus element type");
+    file.check(ex_put_block(file.id(), EX_ELEM_BLOCK, ids[b], type, outline.block_sizes[b],
+                            block.nodes_per_element, 0, 0, 0),
+               "element block '" + block.name + "'");
+    if (mesh)
+      write_connectivity(file.id(), file.path(), ids[b], block.name, mesh->blocks[b].connectivity);
   }
-  file.put_names(EX_ELEM_BLOCK, entity_names(mesh.blocks), "element block names");
+  file.put_names(EX_ELEM_BLOCK, entity_names(outline.blocks), "element block names");
 }
 
-void write_side_sets(const WriteFile& file, const Mesh& mesh, const std::vector<int64_t>& ids) {
-  for (std::size_t s = 0; s < mesh.side_sets.size(); ++s) {
-    const SideSet& set = mesh.side_sets[s];
-    const std::string what = "side set '" + set.name + "'";
-    file.check(ex_put_set_param(file.id(), EX_SIDE_SET, ids[s], int64_t(set.elements.size()), 0),
-               what);
-    if (set.elements.empty()) continue;
-    std::vector<int64_t> elements(set.elements.begin(), set.elements.end());
-    for (auto& e : elements) ++e;
-    std::vector<int64_t> sides(set.sides.begin(), set.sides.end());
-    file.check(ex_put_set(file.id(), EX_SIDE_SET, ids[s], elements.data(), sides.data()), what);
+void write_side_sets(const WriteFile& file, const MeshOutline& outline,
+                     const std::vector<int64_t>& ids, const Mesh* mesh) {
+  for (std::size_t s = 0; s < outline.side_sets.size(); ++s) {
+    const std::string& name = outline.side_sets[s].name;
+    file.check(ex_put_set_param(file.id(), EX_SIDE_SET, ids[s], outline.side_set_sizes[s], 0),
+               "side set '" + name + "'");
+    if (mesh)
+      write_side_set(file.id(), file.path(), ids[s], name, mesh->side_sets[s].elements,
+                     mesh->side_sets[s].sides);
   }
-  file.put_names(EX_SIDE_SET, entity_names(mesh.side_sets), "side set names");
+  file.put_names(EX_SIDE_SET, entity_names(outline.side_sets), "side set names");
 }
 
-void write_node_sets(const WriteFile& file, const Mesh& mesh, const std::vector<int64_t>& ids) {
-  for (std::size_t s = 0; s < mesh.node_sets.size(); ++s) {
-    const NodeSet& set = mesh.node_sets[s];
-    const std::string what = "node set '" + set.name + "'";
-    file.check(ex_put_set_param(file.id(), EX_NODE_SET, ids[s], int64_t(set.nodes.size()), 0),
-               what);
-    if (set.nodes.empty()) continue;
-    std::vector<int64_t> nodes(set.nodes.begin(), set.nodes.end());
-    for (auto& n : nodes) ++n;
-    file.check(ex_put_set(file.id(), EX_NODE_SET, ids[s], nodes.data(), nullptr), what);
+void write_node_sets(const WriteFile& file, const MeshOutline& outline,
+                     const std::vector<int64_t>& ids, const Mesh* mesh) {
+  for (std::size_t s = 0; s < outline.node_sets.size(); ++s) {
+    const std::string& name = outline.node_sets[s].name;
+    file.check(ex_put_set_param(file.id(), EX_NODE_SET, ids[s], outline.node_set_sizes[s], 0),
+               "node set '" + name + "'");
+    if (mesh) write_node_set(file.id(), file.path(), ids[s], name, mesh->node_sets[s].nodes);
   }
-  file.put_names(EX_NODE_SET, entity_names(mesh.node_sets), "node set names");
+  file.put_names(EX_NODE_SET, entity_names(outline.node_sets), "node set names");
 }
 
-int longest_name(const Mesh& mesh, const std::vector<std::vector<std::string>>& variables) {
+int longest_name(const MeshOutline& mesh, const std::vector<std::vector<std::string>>& variables) {
   std::size_t n = 0;
   for (const auto& b : mesh.blocks) n = std::max(n, b.name.size());
   for (const auto& s : mesh.side_sets) n = std::max(n, s.name.size());
@@ -234,7 +267,7 @@ std::vector<int64_t> local_ids_where(const std::vector<char>& flags, char value)
 /// before ex_put_init): file type "p" with one processor in the file, the global counts,
 /// the load-balance parameters (internal and border nodes and elements, no external nodes)
 /// and the sizes of the nodal communication maps (no elemental ones).
-void write_piece_header(const WriteFile& file, const Mesh& mesh, const ExodusPiece& piece) {
+void write_piece_header(const WriteFile& file, const MeshOutline& mesh, const ExodusPiece& piece) {
   const GlobalIndex num_border_nodes =
       std::count(piece.border_node.begin(), piece.border_node.end(), 1);
   const GlobalIndex num_border_elements =
@@ -245,8 +278,8 @@ void write_piece_header(const WriteFile& file, const Mesh& mesh, const ExodusPie
                                 int64_t(mesh.blocks.size()), int64_t(mesh.node_sets.size()),
                                 int64_t(mesh.side_sets.size())),
              "the Nemesis global counts");
-  file.check(ex_put_loadbal_param(file.id(), mesh.num_nodes() - num_border_nodes, num_border_nodes,
-                                  0, mesh.num_elements() - num_border_elements, num_border_elements,
+  file.check(ex_put_loadbal_param(file.id(), mesh.num_nodes - num_border_nodes, num_border_nodes, 0,
+                                  mesh.num_elements() - num_border_elements, num_border_elements,
                                   int64_t(piece.node_maps.size()), 0, piece.processor),
              "the Nemesis load-balance parameters");
   if (piece.node_maps.empty()) return;
@@ -263,7 +296,7 @@ void write_piece_header(const WriteFile& file, const Mesh& mesh, const ExodusPie
 /// The rest of the Nemesis I data (after the mesh): global block and set sizes, the
 /// internal/border node and element maps, the nodal communication maps, and the node and
 /// element id maps (global numbers, 1-based) that readers show as global ids.
-void write_piece_maps(const WriteFile& file, const Mesh& mesh, const ExodusPiece& piece) {
+void write_piece_maps(const WriteFile& file, const MeshOutline& mesh, const ExodusPiece& piece) {
   std::vector<int64_t> ids = entity_ids(mesh.blocks);
   std::vector<int64_t> counts(piece.global_block_sizes.begin(), piece.global_block_sizes.end());
   if (!ids.empty())
@@ -305,34 +338,37 @@ void write_piece_maps(const WriteFile& file, const Mesh& mesh, const ExodusPiece
     file.check(ex_put_id_map(file.id(), EX_ELEM_MAP, element_map.data()), "the element id map");
 }
 
-/// Create `path` and write the mesh (and the variable names); the file stays open.
-WriteFile create_mesh_file(const std::string& path, const Mesh& mesh,
+/// Create `path` and define the mesh of `outline` (and the variable names); with `mesh`, its
+/// arrays are written too, else they follow through ExodusWriter's put_* calls. The file stays
+/// open.
+WriteFile create_mesh_file(const std::string& path, const MeshOutline& outline, const Mesh* mesh,
                            const std::vector<std::string>& nodal_vars,
                            const std::vector<std::string>& element_vars,
                            const std::vector<std::string>& global_vars,
                            const ExodusProvenance& provenance, const ExodusPiece* piece) {
-  if (mesh.dimension != 2 && mesh.dimension != 3)
-    fail(path, "cannot write a mesh of dimension " + std::to_string(mesh.dimension));
-  WriteFile file(path, longest_name(mesh, {nodal_vars, element_vars, global_vars}));
-  const auto block_ids = entity_ids(mesh.blocks);
-  if (piece) write_piece_header(file, mesh, *piece);
-  file.check(ex_put_init(file.id(), "Grout", mesh.dimension, mesh.num_nodes(), mesh.num_elements(),
-                         int64_t(mesh.blocks.size()), int64_t(mesh.node_sets.size()),
-                         int64_t(mesh.side_sets.size())),
+  if (outline.dimension != 2 && outline.dimension != 3)
+    fail(path, "cannot write a mesh of dimension " + std::to_string(outline.dimension));
+  WriteFile file(path, longest_name(outline, {nodal_vars, element_vars, global_vars}));
+  const auto block_ids = entity_ids(outline.blocks);
+  if (piece) write_piece_header(file, outline, *piece);
+  file.check(ex_put_init(file.id(), "Grout", outline.dimension, outline.num_nodes,
+                         outline.num_elements(), int64_t(outline.blocks.size()),
+                         int64_t(outline.node_sets.size()), int64_t(outline.side_sets.size())),
              "the header");
-  write_coordinates(file, mesh);
-  write_blocks(file, mesh, block_ids);
-  write_side_sets(file, mesh, entity_ids(mesh.side_sets));
-  write_node_sets(file, mesh, entity_ids(mesh.node_sets));
-  if (piece) write_piece_maps(file, mesh, *piece);
+  if (mesh) write_coordinates(file, *mesh);
+  write_coordinate_names(file);
+  write_blocks(file, outline, block_ids, mesh);
+  write_side_sets(file, outline, entity_ids(outline.side_sets), mesh);
+  write_node_sets(file, outline, entity_ids(outline.node_sets), mesh);
+  if (piece) write_piece_maps(file, outline, *piece);
 
   file.put_variables(EX_GLOBAL, global_vars, "global variable names");
   file.put_variables(EX_NODAL, nodal_vars, "nodal variable names");
   file.put_variables(EX_ELEM_BLOCK, element_vars, "element variable names");
-  if (!element_vars.empty() && !mesh.blocks.empty()) {
+  if (!element_vars.empty() && !outline.blocks.empty()) {
     // Every element variable exists on every block.
-    std::vector<int> truth(mesh.blocks.size() * element_vars.size(), 1);
-    file.check(ex_put_truth_table(file.id(), EX_ELEM_BLOCK, int(mesh.blocks.size()),
+    std::vector<int> truth(outline.blocks.size() * element_vars.size(), 1);
+    file.check(ex_put_truth_table(file.id(), EX_ELEM_BLOCK, int(outline.blocks.size()),
                                   int(element_vars.size()), truth.data()),
                "the element variable truth table");
   }
@@ -343,8 +379,37 @@ WriteFile create_mesh_file(const std::string& path, const Mesh& mesh,
 
 }  // namespace
 
+GlobalIndex MeshOutline::num_elements() const {
+  GlobalIndex n = 0;
+  for (GlobalIndex size : block_sizes) n += size;
+  return n;
+}
+
+MeshOutline mesh_outline(const Mesh& mesh) {
+  MeshOutline outline;
+  outline.file = mesh.file;
+  outline.dimension = mesh.dimension;
+  outline.num_nodes = mesh.num_nodes();
+  for (const ElementBlock& b : mesh.blocks) {
+    ElementBlock block;
+    block.name = b.name, block.id = b.id, block.topology = b.topology;
+    block.nodes_per_element = b.nodes_per_element, block.first_element = b.first_element;
+    outline.blocks.push_back(std::move(block));
+    outline.block_sizes.push_back(b.num_elements());
+  }
+  for (const SideSet& s : mesh.side_sets) {
+    outline.side_sets.push_back({s.name, s.id, {}, {}});
+    outline.side_set_sizes.push_back(GlobalIndex(s.elements.size()));
+  }
+  for (const NodeSet& s : mesh.node_sets) {
+    outline.node_sets.push_back({s.name, s.id, {}});
+    outline.node_set_sizes.push_back(GlobalIndex(s.nodes.size()));
+  }
+  return outline;
+}
+
 void write_exodus_mesh(const std::string& path, const Mesh& mesh) {
-  create_mesh_file(path, mesh, {}, {}, {}, {}, nullptr);
+  create_mesh_file(path, mesh_outline(mesh), &mesh, {}, {}, {}, {}, nullptr);
 }
 
 ExodusWriter::ExodusWriter(const std::string& path, const Mesh& mesh,
@@ -353,17 +418,72 @@ ExodusWriter::ExodusWriter(const std::string& path, const Mesh& mesh,
                            std::vector<std::string> global_vars, const ExodusProvenance& provenance,
                            const ExodusPiece* piece)
     : path_(path),
-      num_nodes_(mesh.num_nodes()),
-      num_elements_(mesh.num_elements()),
       num_nodal_(nodal_vars.size()),
       num_element_(element_vars.size()),
       num_global_(global_vars.size()) {
-  WriteFile file =
-      create_mesh_file(path, mesh, nodal_vars, element_vars, global_vars, provenance, piece);
-  const auto ids = entity_ids(mesh.blocks);
-  for (std::size_t b = 0; b < mesh.blocks.size(); ++b)
-    blocks_.push_back({ids[b], mesh.blocks[b].first_element, mesh.blocks[b].num_elements()});
+  const MeshOutline outline = mesh_outline(mesh);
+  WriteFile file = create_mesh_file(path, outline, &mesh, nodal_vars, element_vars, global_vars,
+                                    provenance, piece);
+  keep_outline(outline);
   exoid_ = file.release();
+}
+
+ExodusWriter::ExodusWriter(const std::string& path, const MeshOutline& outline,
+                           std::vector<std::string> nodal_vars,
+                           std::vector<std::string> element_vars,
+                           std::vector<std::string> global_vars, const ExodusProvenance& provenance)
+    : path_(path),
+      num_nodal_(nodal_vars.size()),
+      num_element_(element_vars.size()),
+      num_global_(global_vars.size()) {
+  WriteFile file = create_mesh_file(path, outline, nullptr, nodal_vars, element_vars, global_vars,
+                                    provenance, nullptr);
+  keep_outline(outline);
+  exoid_ = file.release();
+}
+
+void ExodusWriter::keep_outline(const MeshOutline& outline) {
+  num_nodes_ = outline.num_nodes;
+  num_elements_ = outline.num_elements();
+  const auto ids = entity_ids(outline.blocks);
+  for (std::size_t b = 0; b < outline.blocks.size(); ++b)
+    blocks_.push_back({ids[b], outline.blocks[b].first_element, outline.block_sizes[b],
+                       outline.blocks[b].nodes_per_element, outline.blocks[b].name});
+  const auto side_ids = entity_ids(outline.side_sets), node_ids = entity_ids(outline.node_sets);
+  for (std::size_t s = 0; s < outline.side_sets.size(); ++s)
+    side_sets_.push_back({side_ids[s], outline.side_sets[s].name, outline.side_set_sizes[s]});
+  for (std::size_t s = 0; s < outline.node_sets.size(); ++s)
+    node_sets_.push_back({node_ids[s], outline.node_sets[s].name, outline.node_set_sizes[s]});
+}
+
+void ExodusWriter::put_coordinates(int component, const std::vector<double>& values) {
+  if (GlobalIndex(values.size()) != num_nodes_ || component < 0 || component > 2)
+    throw std::invalid_argument(path_ + ": put_coordinates: component or size");
+  if (values.empty()) return;
+  const double* xyz[3] = {nullptr, nullptr, nullptr};  // a null component is left alone
+  xyz[component] = values.data();
+  check_mesh_array(ex_put_coord(exoid_, xyz[0], xyz[1], xyz[2]), path_, "coordinates");
+}
+
+void ExodusWriter::put_connectivity(std::size_t b, const std::vector<GlobalIndex>& nodes) {
+  if (b >= blocks_.size() ||
+      GlobalIndex(nodes.size()) != blocks_[b].num_elements * blocks_[b].nodes_per_element)
+    throw std::invalid_argument(path_ + ": put_connectivity: block or size");
+  write_connectivity(exoid_, path_, blocks_[b].id, blocks_[b].name, nodes);
+}
+
+void ExodusWriter::put_side_set(std::size_t s, const std::vector<GlobalIndex>& elements,
+                                const std::vector<int>& sides) {
+  if (s >= side_sets_.size() || GlobalIndex(elements.size()) != side_sets_[s].size ||
+      sides.size() != elements.size())
+    throw std::invalid_argument(path_ + ": put_side_set: set or size");
+  write_side_set(exoid_, path_, side_sets_[s].id, side_sets_[s].name, elements, sides);
+}
+
+void ExodusWriter::put_node_set(std::size_t s, const std::vector<GlobalIndex>& nodes) {
+  if (s >= node_sets_.size() || GlobalIndex(nodes.size()) != node_sets_[s].size)
+    throw std::invalid_argument(path_ + ": put_node_set: set or size");
+  write_node_set(exoid_, path_, node_sets_[s].id, node_sets_[s].name, nodes);
 }
 
 ExodusWriter::~ExodusWriter() {
@@ -376,6 +496,8 @@ ExodusWriter::ExodusWriter(ExodusWriter&& other) noexcept
       num_nodes_(other.num_nodes_),
       num_elements_(other.num_elements_),
       blocks_(std::move(other.blocks_)),
+      side_sets_(std::move(other.side_sets_)),
+      node_sets_(std::move(other.node_sets_)),
       num_nodal_(other.num_nodal_),
       num_element_(other.num_element_),
       num_global_(other.num_global_),
@@ -390,6 +512,8 @@ ExodusWriter& ExodusWriter::operator=(ExodusWriter&& other) noexcept {
     num_nodes_ = other.num_nodes_;
     num_elements_ = other.num_elements_;
     blocks_ = std::move(other.blocks_);
+    side_sets_ = std::move(other.side_sets_);
+    node_sets_ = std::move(other.node_sets_);
     num_nodal_ = other.num_nodal_;
     num_element_ = other.num_element_;
     num_global_ = other.num_global_;

@@ -190,4 +190,26 @@ std::string clean_yaml_message(const std::string& what, const std::string& path)
 /// mesh dimension matches the model. Throws InputError naming the entity and the file.
 void check_input_against_mesh(const Input& input, const Mesh& mesh);
 
+/// \brief What check_input_against_mesh needs of one rank's part of a distributed mesh
+/// (parallel/distributed_mesh.hpp), whose `local` Mesh holds every block and set, with the
+/// entries of its local entities: their global (file) numbers, which elements this rank
+/// owns, the sets' sizes in the file, and the largest |x| of the whole mesh.
+struct MeshPartNumbers {
+  const std::vector<GlobalIndex>& node_gid;     ///< local node -> 0-based file node
+  const std::vector<GlobalIndex>& element_gid;  ///< local element -> 0-based file element
+  const std::vector<int>& element_owner;        ///< owning rank of each local element
+  int rank = 0;
+  const std::vector<GlobalIndex>& side_set_size;  ///< entries in the file, per side set
+  const std::vector<GlobalIndex>& node_set_size;  ///< entries in the file, per node set
+  double x_max = 0.0;                             ///< max |x| over all nodes (axisymmetric)
+};
+
+/// \brief The same checks on this rank's part `local` of a distributed mesh (the mesh checks
+/// of check_mesh are the reader's): a set is empty when the file's set is; the boundary-face,
+/// self-contact and axisymmetric tests run on the owned elements (an element across a face of
+/// an owned element shares its nodes, so it is local); elements and nodes are named by their
+/// global numbers, as on the replicated mesh. Every rank must call it and agree on the
+/// outcome (agree_on_errors): a test on owned entities fails on one rank only.
+void check_input_against_mesh(const Input& input, const Mesh& local, const MeshPartNumbers& part);
+
 }  // namespace grout

@@ -27,8 +27,21 @@ std::string names_of(const std::vector<Entity>& entities) {
 
 class MeshCheck {
  public:
-  MeshCheck(const Input& input, const Mesh& mesh)
-      : input_(input), mesh_(mesh), mesh_name_("mesh '" + mesh.file + "'") {}
+  /// `part`: the numbers of a distributed mesh's part (nullptr: `mesh` is the whole mesh).
+  MeshCheck(const Input& input, const Mesh& mesh, const MeshPartNumbers* part)
+      : input_(input), mesh_(mesh), part_(part), mesh_name_("mesh '" + mesh.file + "'") {}
+
+  /// 1-based file numbers of a (local) element and node, as messages give them.
+  GlobalIndex element_number(GlobalIndex e) const {
+    return (part_ ? part_->element_gid[std::size_t(e)] : e) + 1;
+  }
+  GlobalIndex node_number(GlobalIndex n) const {
+    return (part_ ? part_->node_gid[std::size_t(n)] : n) + 1;
+  }
+  /// True for the elements whose set entries this rank checks: all, or its owned ones.
+  bool checks_element(GlobalIndex e) const {
+    return !part_ || part_->element_owner[std::size_t(e)] == part_->rank;
+  }
 
   [[noreturn]] void fail(const std::string& key_path, const std::string& message) const {
     throw InputError(input_.file + ": " + key_path + ": " + message);
@@ -50,7 +63,9 @@ class MeshCheck {
       fail(key_path,
            "no side set '" + name + "' in " + mesh_name_ + " (" + names_of(mesh_.side_sets) + ")");
     }
-    if (set->elements.empty())
+    const GlobalIndex size = part_ ? part_->side_set_size[std::size_t(set - mesh_.side_sets.data())]
+                                   : GlobalIndex(set->elements.size());
+    if (size == 0)
       fail(key_path, "side set '" + name + "' in " + mesh_name_ + " is empty (it has no faces)");
     face_sets_.push_back({key_path, set});
   }
@@ -61,7 +76,9 @@ class MeshCheck {
       fail(key_path,
            "no node set '" + name + "' in " + mesh_name_ + " (" + names_of(mesh_.node_sets) + ")");
     }
-    if (set->nodes.empty())
+    const GlobalIndex size = part_ ? part_->node_set_size[std::size_t(set - mesh_.node_sets.data())]
+                                   : GlobalIndex(set->nodes.size());
+    if (size == 0)
       fail(key_path, "node set '" + name + "' in " + mesh_name_ + " is empty (it has no nodes)");
   }
   /// Every face of the side sets passed to side_set() is a face of one element only: a face
@@ -73,6 +90,7 @@ class MeshCheck {
  private:
   const Input& input_;
   const Mesh& mesh_;
+  const MeshPartNumbers* part_;
   std::string mesh_name_;
   std::vector<std::pair<std::string, const SideSet*>> face_sets_;  // (key path, set)
 };
@@ -114,9 +132,10 @@ void MeshCheck::boundary_faces() const {
   FaceKey key;
   for (const auto& [key_path, set] : face_sets_) {
     for (std::size_t i = 0; i < set->elements.size(); ++i) {
+      if (!checks_element(set->elements[i])) continue;
       if (!face_key(mesh_, set->elements[i], set->sides[i], key)) {
         fail(key_path, "side set '" + set->name + "' has side " + std::to_string(set->sides[i]) +
-                           " of element " + std::to_string(set->elements[i] + 1) +
+                           " of element " + std::to_string(element_number(set->elements[i])) +
                            ", which is not a face of an element of " + mesh_name_);
       }
       count.emplace(key, Count());
@@ -137,14 +156,15 @@ void MeshCheck::boundary_faces() const {
   }
   for (const auto& [key_path, set] : face_sets_) {
     for (std::size_t i = 0; i < set->elements.size(); ++i) {
+      if (!checks_element(set->elements[i])) continue;
       face_key(mesh_, set->elements[i], set->sides[i], key);
       const Count& c = count.at(key);
       if (c.elements < 2) continue;
       const GlobalIndex other = c.first == set->elements[i] ? c.second : c.first;
       fail(key_path, "side set '" + set->name + "' in " + mesh_name_ + " holds side " +
                          std::to_string(set->sides[i]) + " of element " +
-                         std::to_string(set->elements[i] + 1) + ", an interior face (element " +
-                         std::to_string(other + 1) +
+                         std::to_string(element_number(set->elements[i])) +
+                         ", an interior face (element " + std::to_string(element_number(other)) +
                          " has it too): a load or contact side set must lie on the boundary");
     }
   }
@@ -171,10 +191,8 @@ void check_no_reverse_pairs(const Input& input, const Mesh& mesh, const MeshChec
 /// element node may lie at x < 0, and a node on the axis (x = 0) must have u_x held at 0 (the
 /// hoop strain u_r/r is finite there only if u_r = 0; the 2 pi r weights vanish on the axis).
 /// A node counts as on the axis when |x| <= 1e-10 of the mesh's extent in x.
-void check_axisymmetric(const Input& input, const Mesh& mesh, const MeshCheck& check) {
-  double x_max = 0.0;
-  for (GlobalIndex n = 0; n < mesh.num_nodes(); ++n)
-    x_max = std::max(x_max, std::abs(mesh.coordinates[n * 2]));
+void check_axisymmetric(const Input& input, const Mesh& mesh, const MeshCheck& check,
+                        double x_max) {
   const double tol = 1e-10 * x_max;
   std::vector<char> held(mesh.num_nodes(), 0);  // u_x = 0 prescribed at t = 0 and t = end
   for (const DirichletInput& d : input.dirichlet) {
@@ -187,11 +205,12 @@ void check_axisymmetric(const Input& input, const Mesh& mesh, const MeshCheck& c
   }
   for (const ElementBlock& b : mesh.blocks) {
     for (GlobalIndex e = 0; e < b.num_elements(); ++e) {
+      if (!check.checks_element(b.first_element + e)) continue;
       for (int a = 0; a < b.nodes_per_element; ++a) {
         const GlobalIndex n = b.connectivity[e * b.nodes_per_element + a];
         const double r = mesh.coordinates[n * 2];
-        const std::string node = "node " + std::to_string(n + 1) + " of element block '" + b.name +
-                                 "' in " + check.mesh_name();
+        const std::string node = "node " + std::to_string(check.node_number(n)) +
+                                 " of element block '" + b.name + "' in " + check.mesh_name();
         if (r < -tol) {
           check.fail("grout/model/plane", node + " has x = " + input_schema::format_number(r) +
                                               " < 0: an axisymmetric mesh lies in x = r >= 0");
@@ -219,12 +238,13 @@ void check_self_sets_disjoint(const Mesh& mesh, const ContactInput& c, const Mes
   for (const std::string& name : contact_side_sets(c, false)) {
     const SideSet& set = *mesh.find_side_set(name);
     for (std::size_t i = 0; i < set.elements.size(); ++i) {
+      if (!check.checks_element(set.elements[i])) continue;
       const auto [it, fresh] = set_of.emplace(std::make_pair(set.elements[i], set.sides[i]), name);
       if (!fresh && it->second != name) {
         check.fail("grout/contact/" + c.name + "/self",
                    "side sets '" + it->second + "' and '" + name + "' both hold side " +
                        std::to_string(set.sides[i]) + " of element " +
-                       std::to_string(set.elements[i] + 1) +
+                       std::to_string(check.element_number(set.elements[i])) +
                        " (the self-contact surface is their union: a face counts once)");
       }
     }
@@ -239,9 +259,10 @@ const MaterialInput* find_material(const Input& input, const ElementBlock& block
   return nullptr;
 }
 
-void check_input_against_mesh(const Input& input, const Mesh& mesh) {
-  check_mesh(mesh);
-  MeshCheck check(input, mesh);
+namespace {
+
+void check_input(const Input& input, const Mesh& mesh, const MeshPartNumbers* part) {
+  MeshCheck check(input, mesh, part);
   const int dim = input.model.dimension;
   if (mesh.dimension != dim) {
     check.fail("grout/model/dimension", "the model is " + std::to_string(dim) + "D but " +
@@ -309,8 +330,23 @@ void check_input_against_mesh(const Input& input, const Mesh& mesh) {
   }
   check.boundary_faces();
   check_no_reverse_pairs(input, mesh, check);
-  if (input.model.plane == PlaneKind::axisymmetric && mesh.dimension == 2)
-    check_axisymmetric(input, mesh, check);
+  if (input.model.plane == PlaneKind::axisymmetric && mesh.dimension == 2) {
+    double x_max = 0.0;
+    for (GlobalIndex n = 0; n < mesh.num_nodes(); ++n)
+      x_max = std::max(x_max, std::abs(mesh.coordinates[n * 2]));
+    check_axisymmetric(input, mesh, check, part ? part->x_max : x_max);
+  }
+}
+
+}  // namespace
+
+void check_input_against_mesh(const Input& input, const Mesh& mesh) {
+  check_mesh(mesh);
+  check_input(input, mesh, nullptr);
+}
+
+void check_input_against_mesh(const Input& input, const Mesh& local, const MeshPartNumbers& part) {
+  check_input(input, local, &part);
 }
 
 }  // namespace grout

@@ -20,7 +20,8 @@ namespace grout {
 
 MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, const Input& input)
     : solid_(solid), mesh_(mesh), input_(input), dim_(mesh.dimension) {
-  num_u_ = GO(mesh.num_nodes()) * dim_;
+  // From the solid, not the mesh: `mesh` may be one rank's part of a distributed mesh.
+  num_u_ = GO(solid.num_global_nodes()) * dim_;
   const auto& owned_u = *solid.owned_map();
   const auto comm = solid.comm();
   raw_comm_ = raw_mpi_comm(*comm);
@@ -73,8 +74,10 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
   reaction_ = solid.create_vector();
   K_solid_ = solid.create_matrix();
   prescribed_.assign(num_u_, std::numeric_limits<double>::quiet_NaN());
-  rotation_limit_ = std::make_unique<FreeRotationLimit>(mesh, input, map_);
-  if (rotation_limit_->num_bodies() == 0) rotation_limit_.reset();
+  // Only a contact pair's slave body can turn freely (its bodies read the whole mesh).
+  if (!input.contact.empty())
+    rotation_limit_ = std::make_unique<FreeRotationLimit>(mesh, input, map_);
+  if (rotation_limit_ && rotation_limit_->num_bodies() == 0) rotation_limit_.reset();
 }
 
 void MechanicsProblem::limit_step(const Vector& /*x*/, Vector& step) {

@@ -67,6 +67,8 @@ struct ContactStepEnergy {
 
 class MechanicsProblem : public NonlinearProblem {
  public:
+  /// `mesh`: the replicated mesh, or this rank's part of the distributed mesh (the solid's
+  /// `part.local`) when the input has no contact (the interfaces read the whole mesh).
   MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, const Input& input);
   ~MechanicsProblem() override;
 

@@ -3,9 +3,11 @@
 
 #include "parallel/element_partition.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_ParameterList.hpp>
 #include <Zoltan2_BasicVectorAdapter.hpp>
 #include <Zoltan2_PartitioningProblem.hpp>
+#include <algorithm>
 
 namespace grout {
 
@@ -16,6 +18,12 @@ std::vector<int> partition_elements_rcb(const Comm& comm, int dimension,
                                         int num_parts) {
   std::vector<int> part(ids.size(), 0);
   if (num_parts <= 1) return part;
+  // Zoltan's RCB fails ("Zoltan LB_Partition") on fewer elements than parts: each element then
+  // stays on the rank whose slice holds it.
+  long long local_count = (long long)ids.size(), global_count = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, local_count, Teuchos::outArg(global_count));
+  if (global_count < num_parts)
+    return std::vector<int>(ids.size(), std::min(comm.getRank(), num_parts - 1));
   using Types = Zoltan2::BasicUserTypes<double, int, long long>;
   using Adapter = Zoltan2::BasicVectorAdapter<Types>;
   // One weight per element, or two (the element's weight and whether it lies on the contact

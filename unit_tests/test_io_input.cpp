@@ -641,6 +641,56 @@ TEST(InputMeshCheck, SetsHoldWhatTheirRoleNeeds) {
                      "not a face of an element of mesh 'mesh.exo'"});
 }
 
+// One rank's part of a distributed mesh (check_input_against_mesh with MeshPartNumbers): the
+// two-block mesh as a part of a larger file, file nodes 11-18 and elements 21-22, this rank (0)
+// owning the die (element 21) and holding the block as a ghost. A set is empty when the file's
+// is, whatever the part holds; messages give the file's numbers; a ghost's faces are its
+// owner's to check.
+TEST(InputMeshCheck, DistributedPartChecksOwnedEntitiesInFileNumbers) {
+  const std::vector<GlobalIndex> node_gid = {10, 11, 12, 13, 14, 15, 16, 17},
+                                 element_gid = {20, 21};
+  const std::vector<int> owner = {0, 1};
+  std::vector<GlobalIndex> side_sizes = {1, 1, 1}, node_sizes = {2, 4};
+  const MeshPartNumbers part{node_gid, element_gid, owner, 0, side_sizes, node_sizes, 1.0};
+  const std::string no_contact = replaced(
+      on_mesh,
+      "  contact:\n    interface: {slave: die_bottom, master: block_top, type: frictionless}\n",
+      "");
+  const auto check = [&](const std::string& name, const std::string& text, const Mesh& mesh) {
+    const Input input = read_input(write_file(name + ".yaml", text));
+    check_input_against_mesh(input, mesh, part);
+  };
+  // Sets with no entry on this rank but entries in the file: no error (the replicated check
+  // of the same local mesh reports them empty).
+  Mesh part_mesh = two_block_mesh();
+  part_mesh.side_sets[2].elements.clear(), part_mesh.side_sets[2].sides.clear();
+  part_mesh.node_sets[1].nodes.clear();
+  EXPECT_NO_THROW(check("part_sets", no_contact, part_mesh));
+  // Empty in the file: the replicated message.
+  side_sizes[2] = 0;
+  expect_input_error([&] { check("file_empty_side_set", no_contact, part_mesh); },
+                     {"file_empty_side_set.yaml: grout/loads/top/side_set: side set 'top' in mesh "
+                      "'mesh.exo' is empty (it has no faces)"});
+  side_sizes[2] = 1, node_sizes[1] = 0;
+  expect_input_error([&] { check("file_empty_node_set", no_contact, part_mesh); },
+                     {"file_empty_node_set.yaml: grout/dirichlet/left_x/node_set: node set 'left' "
+                      "in mesh 'mesh.exo' is empty (it has no nodes)"});
+  node_sizes[1] = 4;
+  // An interior face of the owned die, in file numbers; the same face through the ghost block
+  // (block_top) is not this rank's to report.
+  Mesh glued = two_block_mesh();
+  glued.blocks[0].connectivity = {3, 2, 6, 7};
+  expect_input_error(
+      [&] {
+        check("part_interior", replaced(no_contact, "side_set: top", "side_set: die_bottom"),
+              glued);
+      },
+      {"part_interior.yaml: grout/loads/top/side_set: side set 'die_bottom' in mesh 'mesh.exo' "
+       "holds side 1 of element 21, an interior face (element 22 has it too)"});
+  EXPECT_NO_THROW(check("part_ghost_interior",
+                        replaced(no_contact, "side_set: top", "side_set: block_top"), glued));
+}
+
 TEST(InputMeshCheck, OneMaterialPerBlock) {
   const Mesh mesh = two_block_mesh();
   const std::string one = replaced(on_mesh,
