@@ -125,6 +125,14 @@ void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ran
     // with the dropped entries lumped onto the diagonal, has a zero diagonal in a condensed
     // gap row (D_jj − Σ_l M_jl = 0).
     set_default("sa: use filtered matrix", false);
+    // Jacobi smoothing of the prolongator, P = (I − ω D⁻¹A) P_tent with ω = 4/3 / λ_max(D⁻¹A),
+    // takes D = the absolute row sums Σ_j |A_ij| instead of A_ii: Gershgorin bounds
+    // λ_max(D⁻¹A) by 1 whatever the rows. The condensed system has rows whose diagonal is
+    // ~1e-6 of their row sum: the slot of a prescribed slave dof (a node on a symmetry plane),
+    // which holds a multiplier row (nonlinear/condensed_solve.hpp, kind C). With D = A_ii such a
+    // row spreads ω/A_ii times its large entries into P, and GMRES stopped on a loss of accuracy
+    // even with an exact coarse solve (inputs/sphere_sphere/README.md, "The iterative path").
+    set_default("sa: use rowsumabs diagonal scaling", true);
   }
   if (!node_coordinates.is_null() && !muelu.sublist("user data").isParameter("Coordinates"))
     muelu.sublist("user data").set("Coordinates", node_coordinates);

@@ -36,7 +36,10 @@
 //   docs/performance.md, "Iterative solver"). The contact coupling itself stays in every
 //   coarse operator (Galerkin products with the whole matrix), and the prolongator is
 //   smoothed with the whole matrix (`sa: use filtered matrix: false`: lumping the dropped
-//   entries would leave a condensed gap row with the diagonal D_jj − Σ_l M_jl = 0);
+//   entries would leave a condensed gap row with the diagonal D_jj − Σ_l M_jl = 0), and the
+//   Jacobi step of that smoothing divides by the absolute row sums Σ_j |A_ij|, not by A_ii
+//   (`sa: use rowsumabs diagonal scaling`): a condensed row in the slot of a prescribed slave
+//   dof (kind C of nonlinear/condensed_solve.hpp) can have a diagonal ~1e-6 of its row sum;
 // Every default is only set when the user's `MueLu` sublist does not set that key.
 
 #include <Teuchos_ParameterList.hpp>
