@@ -5,10 +5,12 @@
 namespace grout {
 
 struct StepSizeOptions {
-  /// fixed: `steps` equal increments; a cut step doubles back (up to the nominal size) after
-  /// steps that converge in fewer than 5 Newton iterations.
-  /// adaptive: the nominal size is only the first step; every easy step (at most
-  /// easy_iterations Newton iterations) doubles the size, up to max_step_size.
+  /// A step is easy when it converges in at most easy_iterations Newton iterations.
+  /// fixed: `steps` equal increments; after a cut-back every easy step doubles the size again,
+  /// up to the nominal end / steps (a finite-strain contact step takes 5-6 iterations: with
+  /// "fewer than 5" a cut step of the crossed tubes (inputs/self_contact) stayed cut).
+  /// adaptive: the nominal size is only the first step; every easy step doubles the size, up
+  /// to max_step_size.
   bool adaptive = false;
   int easy_iterations = 6;
   double max_step_size = 0.0;  ///< adaptive only; 0 = no bound below the end time

@@ -116,11 +116,11 @@ class StepTimes {
   }
   /// The step-size policy after a converged step of `newton_iterations` (step_size.hpp).
   void after_success(int newton_iterations, const StepSizeOptions& options) {
-    if (!options.adaptive) {
-      if (newton_iterations < 5) grow();
-    } else if (newton_iterations <= options.easy_iterations) {
+    if (newton_iterations > options.easy_iterations) return;
+    if (options.adaptive)
       grow_to(options.max_step_size);
-    }
+    else
+      grow();
   }
 
  private:

@@ -14,9 +14,9 @@ TEST(StepSize, FixedGrowsBackToNominalAfterEasySteps) {
   times.halve();
   times.halve();
   EXPECT_DOUBLE_EQ(times.step_size(), 0.025);
-  times.after_success(5, fixed);  // not easy: kept
+  times.after_success(7, fixed);  // not easy: kept
   EXPECT_DOUBLE_EQ(times.step_size(), 0.025);
-  times.after_success(4, fixed);
+  times.after_success(6, fixed);  // a finite-strain contact step's count is easy
   EXPECT_DOUBLE_EQ(times.step_size(), 0.05);
   times.after_success(2, fixed);
   times.after_success(2, fixed);  // never above nominal

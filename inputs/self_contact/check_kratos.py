@@ -70,6 +70,12 @@ def penetration(x, nodes_faces, target_faces, depth):
     """Largest penetration (>= 0) of a node of `nodes_faces` behind a facing face of
     `target_faces` (x: (n, 3) deformed coordinates); nodes further than `depth` behind are
     not counted (the other side of a wall)."""
+    return deepest_node(x, nodes_faces, target_faces, depth)[0]
+
+
+def deepest_node(x, nodes_faces, target_faces, depth):
+    """penetration()'s value, the node it is at and the face of `target_faces` it lies
+    behind (None, None where nothing penetrates)."""
     tri, owner = triangles(target_faces)
     a, b, c = x[tri[:, 0]], x[tri[:, 1]], x[tri[:, 2]]
     n_tri = np.cross(b - a, c - a)
@@ -85,7 +91,7 @@ def penetration(x, nodes_faces, target_faces, depth):
         for p in row:
             node_normal[p] = node_normal.get(p, 0.0) + face_normal[f]
             near.setdefault(p, set()).update(int(q) for q in row)
-    worst = 0.0
+    worst, at, face = 0.0, None, None
     for p, n_p in node_normal.items():
         n_p = n_p / np.linalg.norm(n_p)
         dist = np.einsum("ij,ij->i", x[p] - a, n_tri)
@@ -106,9 +112,10 @@ def penetration(x, nodes_faces, target_faces, depth):
         den = d00 * d11 - d01 * d01
         s, t = (d11 * d20 - d01 * d21) / den, (d00 * d21 - d01 * d20) / den
         inside = (s >= 0.0) & (t >= 0.0) & (s + t <= 1.0)
-        if inside.any():
-            worst = max(worst, float(-dist[idx][inside].min()))
-    return worst
+        if inside.any() and float(-dist[idx][inside].min()) > worst:
+            j = int(np.argmin(np.where(inside, dist[idx], np.inf)))
+            worst, at, face = float(-dist[idx][j]), int(p), int(owner[idx[j]])
+    return worst, at, face
 
 
 def rows_of(path):
