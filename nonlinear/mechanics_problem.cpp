@@ -3,7 +3,9 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Teuchos_TimeMonitor.hpp>
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 
@@ -93,6 +95,7 @@ MechanicsProblem::~MechanicsProblem() = default;
 
 void MechanicsProblem::begin_step(double t, Vector& x) {
   phase_ = NewtonPhase::step_start;
+  iterate_ = 0;
   for (auto& c : interfaces_) c->begin_step();
   // The load expressions are evaluated on each rank's own faces: a value that is not finite
   // on one rank stops every rank.
@@ -137,7 +140,7 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
   }
   terms_.clear();
   x_last_->assign(x);
-  double contact_sums[3] = {0.0, 0.0, 0.0};  // active, changes, Σ floor²
+  double contact_sums[4] = {0.0, 0.0, 0.0, 0.0};  // active, changes, Σ floor², newly fixed
   if (!interfaces_.empty()) {
     Teuchos::TimeMonitor timer(
         *Teuchos::TimeMonitor::getNewTimer("grout: contact (search, integration, assembly)"));
@@ -165,8 +168,11 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
     ContactRowSums sums;
     for (int i = 0; i < n; ++i) {
       const ContactRowSums s = interfaces_[i]->write_rows(
-          phase_, {counts_all[2 * i], counts_all[2 * i + 1]}, prescribed_, terms_, F);
+          phase_, iterate_, {counts_all[2 * i], counts_all[2 * i + 1]}, prescribed_, terms_, F);
       sums.active += s.active, sums.changes += s.changes, sums.floor2 += s.floor2;
+      sums.newly_fixed += s.newly_fixed;
+      if (s.fixed.violation > sums.fixed.violation) sums.fixed = s.fixed;
+      sums.lambda_n_max = std::max(sums.lambda_n_max, s.lambda_n_max);
     }
     terms_.sum_forces_to_owners(*map_, raw_comm_, F);
     MultiplierRows rows;  // ascending by GID
@@ -178,8 +184,9 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
     rows_.gids.clear(), rows_.kinds.clear();
     for (std::size_t k : order)
       rows_.gids.push_back(rows.gids[k]), rows_.kinds.push_back(rows.kinds[k]);
-    const double local[3] = {sums.active, sums.changes, sums.floor2};
-    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 3, local, contact_sums);
+    const double local[4] = {sums.active, sums.changes, sums.floor2, sums.newly_fixed};
+    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 4, local, contact_sums);
+    if (contact_sums[3] > 0.0) report_fixed_nodes(int(contact_sums[3]), sums);  // on every rank
   }
   active_size_ = int(contact_sums[0]);
   active_changes_ = int(contact_sums[1]);
@@ -200,6 +207,32 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
     }
   }
   return std::isfinite(F.norm2());
+}
+
+// The cycle rule of the active-set policy (active_set_cycles.hpp) fixed `count` nodes at this
+// evaluation: said on rank 0, with the one whose fixed state violates the contact conditions
+// most (collective).
+void MechanicsProblem::report_fixed_nodes(int count, const ContactRowSums& local) const {
+  const auto& comm = *solid_.comm();
+  const double mine[2] = {local.fixed.violation, local.lambda_n_max};
+  double most[2] = {0.0, 0.0};
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 2, mine, most);
+  // The node of the largest violation (the lowest id among equals) and its state.
+  const long long none = std::numeric_limits<long long>::max();
+  const long long key = local.fixed.violation == most[0] && local.fixed.node >= 0
+                            ? 2 * (long long)local.fixed.node + (local.fixed.closed ? 1 : 0)
+                            : none;
+  long long first = none;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, 1, &key, &first);
+  if (comm.getRank() != 0) return;
+  const bool closed = first % 2 != 0;
+  std::printf(
+      "  contact: %d slave node(s) cycling between open and closed, fixed for the rest of "
+      "the step; node %lld fixed %s, where its contact condition is off by %s = %.3g "
+      "(%.3g of the largest lambda_n, %.3g)\n",
+      count, first / 2 + 1, closed ? "closed" : "open", closed ? "|lambda_n|" : "c |g|", most[0],
+      most[1] > 0.0 ? most[0] / most[1] : 0.0, most[1]);
+  std::fflush(stdout);
 }
 
 bool MechanicsProblem::jacobian(const Vector&, Teuchos::RCP<Matrix>& J) {
