@@ -69,11 +69,10 @@ class ActiveSetPolicy {
     return record_node_status(status_history_[q], iterate, closed, s);
   }
   bool fixed(int q) const { return status_history_[q].fixed >= 0; }
-  /// |λ_n − ĉ g| of the fixed state of node q where the law left it (fixed_status ≥ 0).
-  double fixed_violation(int q) const {
-    const NodeStatusHistory& h = status_history_[q];
-    return h.fixed < 0 ? 0.0 : h.violation[int(h.fixed)];
-  }
+  /// |λ_n − ĉ g| where the law left state `closed` (1) or open (0) in this step (+∞: never).
+  double violation(int q, bool closed) const { return status_history_[q].violation[closed]; }
+  /// The status fixed for node q (0 open, 1 closed; −1: none).
+  int fixed_state(int q) const { return status_history_[q].fixed; }
 
  private:
   std::vector<double> proximity_;

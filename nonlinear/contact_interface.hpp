@@ -42,8 +42,9 @@ struct ContactRowSums {
   /// Of those, the one whose fixed state violates the contact conditions most (max).
   struct FixedNode {
     double violation = -1.0;  ///< |λ_n − ĉ g| where the law left its fixed state
+    double other = 0.0;       ///< ... and where it left the other state
     GlobalIndex node = -1;
-    bool closed = false;
+    bool closed = false;  ///< fixed closed
   } fixed;
   double lambda_n_max = 0.0;  ///< the largest λ_n (max)
 };

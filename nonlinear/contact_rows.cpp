@@ -152,9 +152,10 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, int iterate,
   for (int q = 0; q < n_owned; ++q) {
     if (newly_fixed_[q]) {
       sums.newly_fixed += 1.0;
-      if (policy_.fixed_violation(q) >= sums.fixed.violation)
-        sums.fixed = {policy_.fixed_violation(q), surface_.slave_nodes[owned_[q]],
-                      active_[q] != node_open};
+      const bool closed = policy_.fixed_state(q) == 1;
+      if (policy_.violation(q, closed) >= sums.fixed.violation)
+        sums.fixed = {policy_.violation(q, closed), policy_.violation(q, !closed),
+                      surface_.slave_nodes[owned_[q]], closed};
     }
     sums.lambda_n_max = std::max(sums.lambda_n_max, pressure_[q]);
     closing_[q] = active_[q] && !committed_active_[q];

@@ -210,28 +210,31 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
 }
 
 // The cycle rule of the active-set policy (active_set_cycles.hpp) fixed `count` nodes at this
-// evaluation: said on rank 0, with the one whose fixed state violates the contact conditions
-// most (collective).
+// evaluation: said on rank 0, with the violations of both states of the node whose fixed state
+// violated the contact conditions most in the cycle (collective).
 void MechanicsProblem::report_fixed_nodes(int count, const ContactRowSums& local) const {
   const auto& comm = *solid_.comm();
   const double mine[2] = {local.fixed.violation, local.lambda_n_max};
   double most[2] = {0.0, 0.0};
   Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 2, mine, most);
-  // The node of the largest violation (the lowest id among equals) and its state.
+  // That node (the lowest id among equals), its state and its other state's violation.
   const long long none = std::numeric_limits<long long>::max();
-  const long long key = local.fixed.violation == most[0] && local.fixed.node >= 0
-                            ? 2 * (long long)local.fixed.node + (local.fixed.closed ? 1 : 0)
-                            : none;
+  const bool mine_most = local.fixed.violation == most[0] && local.fixed.node >= 0;
+  const long long key =
+      mine_most ? 2 * (long long)local.fixed.node + (local.fixed.closed ? 1 : 0) : none;
   long long first = none;
   Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, 1, &key, &first);
+  const double other_here = key == first ? local.fixed.other : -1.0;
+  double other = 0.0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 1, &other_here, &other);
   if (comm.getRank() != 0) return;
   const bool closed = first % 2 != 0;
+  const double open_off = closed ? other : most[0], closed_off = closed ? most[0] : other;
   std::printf(
       "  contact: %d slave node(s) cycling between open and closed, fixed for the rest of "
-      "the step; node %lld fixed %s, where its contact condition is off by %s = %.3g "
-      "(%.3g of the largest lambda_n, %.3g)\n",
-      count, first / 2 + 1, closed ? "closed" : "open", closed ? "|lambda_n|" : "c |g|", most[0],
-      most[1] > 0.0 ? most[0] / most[1] : 0.0, most[1]);
+      "the step; node %lld fixed %s: in the cycle, open was off by c |g| = %.3g, closed "
+      "by |lambda_n| = %.3g (the largest lambda_n: %.3g)\n",
+      count, first / 2 + 1, closed ? "closed" : "open", open_off, closed_off, most[1]);
   std::fflush(stdout);
 }
 
