@@ -13,27 +13,30 @@
 // conditions exactly at its own solution, and Newton never sees an unchanged active set
 // (inputs/start_family/README.md: one 3D node, 52 ↔ 53 active nodes for 25 iterations).
 //
-// The rule here: a node whose status has changed `max_status_changes` times between
-// consecutive iterates of a step (it came back to a state it had left, twice: A B A B A) is
-// fixed, for the rest of the step, in the state whose own solution violated the contact
-// conditions less. The violation of a state is |s_j| at the first evaluation after an iterate
-// solved in it, where the law left it: leaving "closed" (g_j ≈ 0), |s_j| ≈ |λ_n|, the tension
-// it carried; leaving "open" (λ_j = 0), |s_j| = ĉ |g_j|, the penetration times ĉ; both are
-// pressures, the NCP residual |λ_n − max(0, s_j)| of that state. The fixed node's row is
-// then smooth (ĉ g_j = 0, or λ_j = 0), Newton converges on it as on any other node, and the
-// converged state satisfies every other node's contact conditions to the Newton tolerance and
-// the fixed node's to within what its state shows there (the driver prints both violations
-// of the cycle when it fixes the node; docs/design.md §2). Three changes are not enough: a
-// node can close in the first update's overshoot, open, and close for good (two start-family
-// variants, inputs/start_family/README.md). A step whose nodes change at most three times is
-// untouched, bit for bit.
+// The rule here: a node is fixed, for the rest of the step, in the state whose own solution
+// violated the contact conditions less, once its statuses have gone round a cycle of the
+// Newton map: it changed at least `max_status_changes` times between consecutive iterates of
+// the step (A B A B A), and it left each state the last two times by the same violation to
+// `cycle_tolerance` (relative): the iterates repeat themselves, and so would the next ones. The
+// violation of a state is |s_j| at the first evaluation after an iterate solved in it, where
+// the law left it: leaving "closed" (g_j ≈ 0), |s_j| ≈ |λ_n|, the tension it carried; leaving
+// "open" (λ_j = 0), |s_j| = ĉ |g_j|, the penetration times ĉ; both are pressures, the NCP
+// residual |λ_n − max(0, s_j)| of that state. The fixed node's row is then smooth (ĉ g_j = 0,
+// or λ_j = 0), Newton converges on it as on any other node, and the converged state satisfies
+// every other node's contact conditions to the Newton tolerance and the fixed node's to within
+// what its state shows there (the driver prints both violations when it fixes the node;
+// docs/design.md §2). A node that toggles while the iterates still move (a sliding contact
+// edge, the first iterates after a start) leaves its states by other amounts each time and is
+// never fixed: such steps are untouched, bit for bit (inputs/start_family/README.md).
 
 #include <limits>
 
 namespace grout {
 
-/// Status changes of a node within a step after which it is fixed.
+/// Status changes of a node within a step before it can be fixed.
 constexpr int max_status_changes = 4;
+/// Relative difference below which two violations of one state are the same.
+constexpr double cycle_tolerance = 1e-6;
 
 /// One slave node's statuses over the Newton iterates of a step (plain data; reset per step).
 struct NodeStatusHistory {
@@ -41,19 +44,21 @@ struct NodeStatusHistory {
   signed char closed = 0;   ///< status at the latest evaluation (1 closed, 0 open)
   signed char before = -1;  ///< status at the last evaluation of the previous iterate (−1: none)
   int changes = 0;          ///< changes between consecutive iterates, up to `before`
-  /// |s_j| where the law left each state (index 0 open, 1 closed); +∞: never left.
-  double violation[2] = {std::numeric_limits<double>::infinity(),
-                         std::numeric_limits<double>::infinity()};
+  double pending = 0.0;     ///< |s_j| of the latest evaluation, if it left `before`
+  /// Per state (0 open, 1 closed): |s_j| the last two times the law left it (+∞: not yet).
+  double left[2][2] = {
+      {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()},
+      {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}};
+  double violation[2] = {0.0, 0.0};  ///< once fixed: the violations of open and closed
   signed char fixed = -1;  ///< −1: free; 0 or 1: the status fixed for the rest of the step
 };
 
 /// Records node's status `closed` (the law's, with the start rules applied) and s = λ_n − ĉ g at
 /// an evaluation of Newton iterate `iterate` (line-search trials and repeated evaluations of an
 /// iterate replace its status; the last one counts). \return the fixed status (0 open, 1 closed)
-/// once the changes between consecutive iterates, this evaluation's included, reach
-/// `max_changes` (the state of the smaller violation; a tie keeps it closed), else −1.
-/// \pre max_changes ≥ 2 (both states then have a violation).
+/// once the node cycles (the rule above), the state of the smaller violation (a tie keeps it
+/// closed); else −1. \pre max_changes ≥ 4 (each state left twice).
 int record_node_status(NodeStatusHistory& node, int iterate, bool closed, double s,
-                       int max_changes = max_status_changes);
+                       int max_changes = max_status_changes, double tolerance = cycle_tolerance);
 
 }  // namespace grout

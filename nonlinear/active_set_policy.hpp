@@ -13,10 +13,11 @@
 // - closure hold-back (after the first update: first_update_closures.hpp): while the active
 //   set is far from settled, a node that closes late in the update stays open for one
 //   iterate, at most once per step.
-// And one rule against a cycling active set (active_set_cycles.hpp): a node whose status has
-// changed max_status_changes times in a step is fixed for the rest of the step in the state
-// that its own solution violated less. Each node is decided by the rank that owns it, from its
-// own history, so the decisions need no communication and do not depend on the rank count.
+// And one rule against a cycling active set (active_set_cycles.hpp): a node whose statuses go
+// round a cycle of the Newton map (at least max_status_changes changes in a step, each state
+// left the last two times by the same violation) is fixed for the rest of the step in the
+// state that its own solution violated less. Each node is decided by the rank that owns it, from
+// its own history, so the decisions need no communication and do not depend on the rank count.
 
 #include <vector>
 
@@ -69,7 +70,7 @@ class ActiveSetPolicy {
     return record_node_status(status_history_[q], iterate, closed, s);
   }
   bool fixed(int q) const { return status_history_[q].fixed >= 0; }
-  /// |λ_n − ĉ g| where the law left state `closed` (1) or open (0) in this step (+∞: never).
+  /// Once fixed: |λ_n − ĉ g| where the law left state `closed` (1) or open (0) in the cycle.
   double violation(int q, bool closed) const { return status_history_[q].violation[closed]; }
   /// The status fixed for node q (0 open, 1 closed; −1: none).
   int fixed_state(int q) const { return status_history_[q].fixed; }
