@@ -7,10 +7,12 @@ namespace grout {
 ActiveSetPolicy::ActiveSetPolicy(std::vector<double> proximity, double max_closure_fraction)
     : proximity_(std::move(proximity)),
       max_closure_fraction_(max_closure_fraction),
-      held_in_step_(proximity_.size(), 0) {}
+      held_in_step_(proximity_.size(), 0),
+      status_history_(proximity_.size()) {}
 
 void ActiveSetPolicy::begin_step() {
   std::fill(held_in_step_.begin(), held_in_step_.end(), 0);
+  std::fill(status_history_.begin(), status_history_.end(), NodeStatusHistory());
 }
 
 std::vector<char> ActiveSetPolicy::held_back(const std::vector<ClosureCandidate>& nodes,

@@ -13,9 +13,15 @@
 // - closure hold-back (after the first update: first_update_closures.hpp): while the active
 //   set is far from settled, a node that closes late in the update stays open for one
 //   iterate, at most once per step.
+// And one rule against a cycling active set (active_set_cycles.hpp): a node whose statuses go
+// round a cycle of the Newton map (at least max_status_changes changes in a step, each state
+// left the last two times by the same violation) is fixed for the rest of the step in the
+// state that its own solution violated less. Each node is decided by the rank that owns it, from
+// its own history, so the decisions need no communication and do not depend on the rank count.
 
 #include <vector>
 
+#include "nonlinear/active_set_cycles.hpp"
 #include "nonlinear/first_update_closures.hpp"
 
 namespace grout {
@@ -42,7 +48,7 @@ class ActiveSetPolicy {
   /// max_closure_fraction: the contact input's start_closure (≥ 1: no hold-back).
   ActiveSetPolicy(std::vector<double> proximity, double max_closure_fraction);
 
-  /// A new step: every node may be held back once again.
+  /// A new step: every node may be held back once again, and no node's status is fixed.
   void begin_step();
   /// Proximity rule: node q counts as active at this iterate although λ_n − ĉ g < 0.
   bool near(int q, double lambda_n, double gap, NewtonPhase phase) const {
@@ -57,11 +63,23 @@ class ActiveSetPolicy {
   /// each node at most once per step; none when !holds_back(phase)). Records the nodes held.
   std::vector<char> held_back(const std::vector<ClosureCandidate>& nodes,
                               const ClosureCounts& global, NewtonPhase phase);
+  /// Cycle rule: records owned node q's status at Newton iterate `iterate` (closed: the law's
+  /// decision with the start rules applied; s = λ_n − ĉ g). \return the status fixed for the
+  /// rest of the step (0 open, 1 closed), or −1: the law decides (record_node_status).
+  int fixed_status(int q, int iterate, bool closed, double s) {
+    return record_node_status(status_history_[q], iterate, closed, s);
+  }
+  bool fixed(int q) const { return status_history_[q].fixed >= 0; }
+  /// Once fixed: |λ_n − ĉ g| where the law left state `closed` (1) or open (0) in the cycle.
+  double violation(int q, bool closed) const { return status_history_[q].violation[closed]; }
+  /// The status fixed for node q (0 open, 1 closed; −1: none).
+  int fixed_state(int q) const { return status_history_[q].fixed; }
 
  private:
   std::vector<double> proximity_;
   double max_closure_fraction_ = 1.0;
-  std::vector<char> held_in_step_;  ///< held back once in this step already
+  std::vector<char> held_in_step_;                 ///< held back once in this step already
+  std::vector<NodeStatusHistory> status_history_;  ///< per owned node, of this step
 };
 
 }  // namespace grout

@@ -88,6 +88,7 @@ ContactInterface::ContactInterface(const Mesh& mesh, const Input& input, const C
   iterate_gap_.assign(n_owned, 0.0);
   gap_known_.assign(n_owned, 0);
   held_back_.assign(n_owned, 0);
+  newly_fixed_.assign(n_owned, 0);
   lambda_.assign(n_owned, {0.0, 0.0, 0.0});
   active_.assign(n_owned, 0);
   previous_active_.assign(n_owned, 0);

@@ -35,9 +35,18 @@ namespace grout {
 
 /// Counts and round-off of one evaluation (summed over interfaces and ranks by the caller).
 struct ContactRowSums {
-  double active = 0.0;   ///< nodes not open
-  double changes = 0.0;  ///< nodes whose status changed, plus held-back nodes
-  double floor2 = 0.0;   ///< Σ of the squared round-off of the multiplier rows
+  double active = 0.0;       ///< nodes not open
+  double changes = 0.0;      ///< nodes whose status changed, plus held-back nodes
+  double floor2 = 0.0;       ///< Σ of the squared round-off of the multiplier rows
+  double newly_fixed = 0.0;  ///< nodes whose status the cycle rule fixed at this evaluation
+  /// Of those, the one whose fixed state violates the contact conditions most (max).
+  struct FixedNode {
+    double violation = -1.0;  ///< |λ_n − ĉ g| where the law left its fixed state
+    double other = 0.0;       ///< ... and where it left the other state
+    GlobalIndex node = -1;
+    bool closed = false;  ///< fixed closed
+  } fixed;
+  double lambda_n_max = 0.0;  ///< the largest λ_n (max)
 };
 
 class ContactInterface {
@@ -85,7 +94,7 @@ class ContactInterface {
   /// `terms`, multiplier rows added to F (owned rows of F's map). `global` are the summed
   /// closure counts (ignored unless holds_back(phase)); `prescribed` the prescribed value of
   /// every global displacement dof (NaN where free).
-  ContactRowSums write_rows(NewtonPhase phase, const ClosureCounts& global,
+  ContactRowSums write_rows(NewtonPhase phase, int iterate, const ClosureCounts& global,
                             const std::vector<double>& prescribed, ContactTerms& terms, Vector& F);
 
   /// Accept the last evaluation as the converged state (slip history, committed active set).
@@ -120,7 +129,7 @@ class ContactInterface {
   void build_stencil(const ContactMortar& m);
   LambdaRow declared_kind(const ContactLawResult& law, int r) const;
   // The pieces of write_rows per owned slave node q (contact_rows.cpp).
-  void law_inputs(int q, NewtonPhase phase, const std::vector<double>& prescribed,
+  void law_inputs(int q, NewtonPhase phase, int iterate, const std::vector<double>& prescribed,
                   ContactLawNode& in, double* slip, SparseGradient* dslip);
   void add_contact_forces(int q, ContactTerms& terms) const;
   void record_node(int q, const ContactLawNode& in, const ContactLawResult& r, const double* slip);
@@ -185,6 +194,7 @@ class ContactInterface {
   std::vector<double> iterate_gap_;  ///< g_j at the last evaluation (if gap_known_)
   std::vector<char> gap_known_;      ///< node j had a master at the last evaluation
   std::vector<char> held_back_;      ///< held open at this iterate (policy)
+  std::vector<char> newly_fixed_;    ///< status fixed by the cycle rule at this evaluation
   std::vector<std::array<double, 3>> lambda_;
   std::vector<char> active_, previous_active_;
   std::vector<char> committed_active_;  ///< active at the last converged state (commit_step)

@@ -80,7 +80,8 @@ ClosureCounts ContactInterface::prepare_active_set(const Vector& x, NewtonPhase 
   return count_closures(candidates_);
 }
 
-ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCounts& global,
+ContactRowSums ContactInterface::write_rows(NewtonPhase phase, int iterate,
+                                            const ClosureCounts& global,
                                             const std::vector<double>& prescribed,
                                             ContactTerms& terms, Vector& F) {
   const int dim = dim_;
@@ -118,7 +119,7 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
   std::vector<double> slip_value(n_owned * 2, 0.0);
   std::vector<std::array<SparseGradient, 2>> dslip(coulomb ? n_owned : 0);
   for (int q = 0; q < n_owned; ++q)
-    law_inputs(q, phase, prescribed, nodes_host(q), &slip_value[2 * q],
+    law_inputs(q, phase, iterate, prescribed, nodes_host(q), &slip_value[2 * q],
                coulomb ? dslip[q].data() : nullptr);
   Kokkos::deep_copy(law_nodes_, nodes_host);
   evaluate_contact_law(LawSpace(), law, Kokkos::View<const ContactLawNode*, LawMemory>(law_nodes_),
@@ -149,6 +150,14 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, const ClosureCoun
     if (law.kind == frictionless_law && r.status != node_open) add_tangential_hold(q, terms);
   }
   for (int q = 0; q < n_owned; ++q) {
+    if (newly_fixed_[q]) {
+      sums.newly_fixed += 1.0;
+      const bool closed = policy_.fixed_state(q) == 1;
+      if (policy_.violation(q, closed) >= sums.fixed.violation)
+        sums.fixed = {policy_.violation(q, closed), policy_.violation(q, !closed),
+                      surface_.slave_nodes[owned_[q]], closed};
+    }
+    sums.lambda_n_max = std::max(sums.lambda_n_max, pressure_[q]);
     closing_[q] = active_[q] && !committed_active_[q];
     sums.active += active_[q] != 0;
     // A held-back node is a pending change: the iterate cannot be the converged one.
@@ -174,8 +183,9 @@ ContactInterface::SlaveRow ContactInterface::slave_row(int q) const {
 // or the gap as prepare_active_set measured it at these positions and, with Coulomb, the
 // weighted slip ū_k (objective on the current geometry, assembly/weighted_slip.hpp) and its
 // gradient.
-void ContactInterface::law_inputs(int q, NewtonPhase phase, const std::vector<double>& prescribed,
-                                  ContactLawNode& in, double* slip, SparseGradient* dslip) {
+void ContactInterface::law_inputs(int q, NewtonPhase phase, int iterate,
+                                  const std::vector<double>& prescribed, ContactLawNode& in,
+                                  double* slip, SparseGradient* dslip) {
   const SlaveRow sr = slave_row(q);
   const double D = sr.D.value;
   const int dim = dim_;
@@ -186,7 +196,22 @@ void ContactInterface::law_inputs(int q, NewtonPhase phase, const std::vector<do
     for (int k = 0; k < dim - 1; ++k) in.t[k][a] = sr.frame.t[k][a];
   }
   in.paired = D > D_tol_;
-  if (!in.paired) return;
+  double lambda_n = 0.0;
+  for (int a = 0; a < dim; ++a) lambda_n += sr.frame.n[a] * lambda_[q][a];
+  // The cycle rule (active_set_cycles.hpp) on the status the law gives the node with the start
+  // rules applied: a node without a master is open, its row λ_j = 0 off by |λ_n|.
+  const auto cycle_rule = [&](bool closed, double s) {
+    const bool was_fixed = policy_.fixed(q);
+    const int fixed = policy_.fixed_status(q, iterate, closed, s);
+    newly_fixed_[q] = fixed >= 0 && !was_fixed;
+    return fixed;
+  };
+  newly_fixed_[q] = 0;
+  const bool tied = input_.type == ContactKind::tied;
+  if (!in.paired) {
+    if (!tied) cycle_rule(false, lambda_n);
+    return;
+  }
   in.held_back = held_back_[q];
   for (int a = 0; a < dim; ++a) {  // held components: prescribed slave dof, free masters' share
     in.prescribed[a] = !std::isnan(prescribed[sr.node * dim + a]);
@@ -195,7 +220,7 @@ void ContactInterface::law_inputs(int q, NewtonPhase phase, const std::vector<do
       if (std::isnan(prescribed[t->node * dim + a])) free_sum += std::abs(t->M->value);
     in.free_share[a] = free_sum / D;
   }
-  if (input_.type == ContactKind::tied) {
+  if (tied) {
     double v[3];
     mortar_row_weighted_vector(
         dim, D, u_[slave_pos_[q]].data(), int(sr.end - sr.begin),
@@ -204,10 +229,12 @@ void ContactInterface::law_inputs(int q, NewtonPhase phase, const std::vector<do
     for (int a = 0; a < dim; ++a) in.tied[a] = v[a] / D;
     return;
   }
-  double lambda_n = 0.0;
-  for (int a = 0; a < dim; ++a) lambda_n += sr.frame.n[a] * lambda_[q][a];
   in.gap = candidates_[q].gap;
   in.near = policy_.near(q, lambda_n, in.gap, phase);
+  const double s = lambda_n - c_hat_ * in.gap;
+  const int fixed = cycle_rule(!in.held_back && (s >= -active_tolerance_ || in.near), s);
+  if (fixed == 1) in.near = 1, in.held_back = 0;  // closed although s < −tol
+  if (fixed == 0) in.held_back = 1;               // open although s ≥ −tol
   if (dslip) {
     // Positions by global node (the weighted slip's interface).
     const auto position = [&](GlobalIndex n, int d) { return positions_[position_of(n)][d]; };

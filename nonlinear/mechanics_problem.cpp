@@ -3,7 +3,9 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Teuchos_TimeMonitor.hpp>
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 
@@ -96,6 +98,7 @@ MechanicsProblem::~MechanicsProblem() = default;
 
 void MechanicsProblem::begin_step(double t, Vector& x) {
   phase_ = NewtonPhase::step_start;
+  iterate_ = 0;
   for (auto& c : interfaces_) c->begin_step();
   // The load expressions are evaluated on each rank's own faces: a value that is not finite
   // on one rank stops every rank.
@@ -140,7 +143,7 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
   }
   terms_.clear();
   x_last_->assign(x);
-  double contact_sums[3] = {0.0, 0.0, 0.0};  // active, changes, Σ floor²
+  double contact_sums[4] = {0.0, 0.0, 0.0, 0.0};  // active, changes, Σ floor², newly fixed
   if (!interfaces_.empty()) {
     Teuchos::TimeMonitor timer(
         *Teuchos::TimeMonitor::getNewTimer("grout: contact (search, integration, assembly)"));
@@ -168,8 +171,11 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
     ContactRowSums sums;
     for (int i = 0; i < n; ++i) {
       const ContactRowSums s = interfaces_[i]->write_rows(
-          phase_, {counts_all[2 * i], counts_all[2 * i + 1]}, prescribed_, terms_, F);
+          phase_, iterate_, {counts_all[2 * i], counts_all[2 * i + 1]}, prescribed_, terms_, F);
       sums.active += s.active, sums.changes += s.changes, sums.floor2 += s.floor2;
+      sums.newly_fixed += s.newly_fixed;
+      if (s.fixed.violation > sums.fixed.violation) sums.fixed = s.fixed;
+      sums.lambda_n_max = std::max(sums.lambda_n_max, s.lambda_n_max);
     }
     terms_.sum_forces_to_owners(*map_, raw_comm_, F);
     MultiplierRows rows;  // ascending by GID
@@ -181,8 +187,9 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
     rows_.gids.clear(), rows_.kinds.clear();
     for (std::size_t k : order)
       rows_.gids.push_back(rows.gids[k]), rows_.kinds.push_back(rows.kinds[k]);
-    const double local[3] = {sums.active, sums.changes, sums.floor2};
-    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 3, local, contact_sums);
+    const double local[4] = {sums.active, sums.changes, sums.floor2, sums.newly_fixed};
+    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 4, local, contact_sums);
+    if (contact_sums[3] > 0.0) report_fixed_nodes(int(contact_sums[3]), sums);  // on every rank
   }
   active_size_ = int(contact_sums[0]);
   active_changes_ = int(contact_sums[1]);
@@ -203,6 +210,35 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
     }
   }
   return std::isfinite(F.norm2());
+}
+
+// The cycle rule of the active-set policy (active_set_cycles.hpp) fixed `count` nodes at this
+// evaluation: said on rank 0, with the violations of both states of the node whose fixed state
+// violated the contact conditions most in the cycle (collective).
+void MechanicsProblem::report_fixed_nodes(int count, const ContactRowSums& local) const {
+  const auto& comm = *solid_.comm();
+  const double mine[2] = {local.fixed.violation, local.lambda_n_max};
+  double most[2] = {0.0, 0.0};
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 2, mine, most);
+  // That node (the lowest id among equals), its state and its other state's violation.
+  const long long none = std::numeric_limits<long long>::max();
+  const bool mine_most = local.fixed.violation == most[0] && local.fixed.node >= 0;
+  const long long key =
+      mine_most ? 2 * (long long)local.fixed.node + (local.fixed.closed ? 1 : 0) : none;
+  long long first = none;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, 1, &key, &first);
+  const double other_here = key == first ? local.fixed.other : -1.0;
+  double other = 0.0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 1, &other_here, &other);
+  if (comm.getRank() != 0) return;
+  const bool closed = first % 2 != 0;
+  const double open_off = closed ? other : most[0], closed_off = closed ? most[0] : other;
+  std::printf(
+      "  contact: %d slave node(s) cycling between open and closed, fixed for the rest of "
+      "the step; node %lld fixed %s: in the cycle, open was off by c |g| = %.3g, closed "
+      "by |lambda_n| = %.3g (the largest lambda_n: %.3g)\n",
+      count, first / 2 + 1, closed ? "closed" : "open", open_off, closed_off, most[1]);
+  std::fflush(stdout);
 }
 
 bool MechanicsProblem::jacobian(const Vector&, Teuchos::RCP<Matrix>& J) {

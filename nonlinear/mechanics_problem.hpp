@@ -86,7 +86,10 @@ class MechanicsProblem : public NonlinearProblem {
   /// The Newton iterate of the step that the next residual() evaluates (0: the initial guess,
   /// k: after k updates, line-search trials included): the active-set start rules depend on
   /// it (ActiveSetPolicy). begin_step() resets it to 0.
-  void set_newton_iterate(int k) override { phase_ = newton_phase(k); }
+  void set_newton_iterate(int k) override {
+    iterate_ = k;
+    phase_ = newton_phase(k);
+  }
   /// The owned multiplier rows' kinds at the last residual() (every interface's), or nullptr
   /// without contact.
   const MultiplierRows* multiplier_rows() const override {
@@ -135,6 +138,8 @@ class MechanicsProblem : public NonlinearProblem {
   std::vector<GlobalIndex> slave_nodes() const;
 
  private:
+  void report_fixed_nodes(int count, const ContactRowSums& local) const;
+
   const SolidProblem& solid_;
   const Mesh& mesh_;
   const Input& input_;
@@ -161,6 +166,7 @@ class MechanicsProblem : public NonlinearProblem {
   int active_size_ = 0, active_changes_ = 0;
   double residual_floor_ = 0.0;
   NewtonPhase phase_ = NewtonPhase::step_start;  ///< of the next residual evaluation
+  int iterate_ = 0;                              ///< the Newton iterate of phase_
 };
 
 }  // namespace grout

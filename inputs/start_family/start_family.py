@@ -418,6 +418,8 @@ def main():
     ap.add_argument("--only", nargs="*", help="run only these variant names")
     ap.add_argument("--timeout", type=float, default=120.0, help="per run, seconds")
     ap.add_argument("--keep", action="store_true", help="keep the passing variants' folders")
+    ap.add_argument("--n-a", type=int, help="3D: elements across the Hertz contact radius a, "
+                    "for every 3D variant (default: the variant's, a/10 at nu = 0.4)")
     ap.add_argument("--list", action="store_true", help="list the variants and stop")
     a = ap.parse_args()
     variants = [variant(n, **kw) for n, kw in CI + CI_3D]
@@ -428,6 +430,8 @@ def main():
         variants = [v for v in variants if str(v.get("dim", 2)) == a.dims]
     if a.only:
         variants = [v for v in variants if v["name"] in a.only]
+    if a.n_a:
+        variants = [dict(v, n_a=a.n_a) if v.get("dim", 2) == 3 else v for v in variants]
     if a.list:
         for v in variants:
             print("%-26s %s" % (v["name"], describe(v)))
