@@ -183,6 +183,10 @@ void run(const std::string& input_path, const std::string& output_dir, bool time
           held.c_str());
   }
   MechanicsProblem problem(solid, mesh, input);
+  if (timers) {  // collective
+    const std::string held = problem.describe_contact_holdings();
+    if (root && !held.empty()) std::printf("%s", held.c_str());
+  }
   const NewtonOptions& newton = input.solver.newton;
   // The replicated mesh's layout also has every node's coordinates and body (iterative path).
   const SystemLayout layout =

@@ -230,6 +230,19 @@ void ContactInterface::ghost_master_faces(const Vector* u_base, const Vector* u_
   }
 }
 
+ContactInterface::Holdings ContactInterface::holdings() const {
+  Holdings h;
+  h.slave_faces = (long long)surface_.slave.size();
+  h.evaluated_slave_faces =
+      surface_.integrate.empty()
+          ? h.slave_faces
+          : (long long)std::count(surface_.integrate.begin(), surface_.integrate.end(), char(1));
+  h.owned_master_faces = (long long)owned_master_.size();
+  h.searched_master_faces = (long long)surface_.master.size();
+  h.surface_nodes = (long long)surface_.nodes.size();
+  return h;
+}
+
 void ContactInterface::update_geometry(const Vector& u_base, const Vector& u_old_base) {
   const int dim = dim_;
   ghost_master_faces(&u_base, &u_old_base);

@@ -104,6 +104,16 @@ class ContactInterface {
   /// (λ GID, slave displacement GID) of the owned multipliers.
   void append_pairing(std::vector<long long>& pairs) const;
 
+  /// What this rank holds of the interface after the last search (`grout --timers`): its
+  /// slave faces (those with an owned node, which it evaluates, and their neighbours for the
+  /// nodal normals), the master faces it owns and sends to the ranks whose search region
+  /// they overlap, the master faces it received (its own included), and the surface's nodes.
+  struct Holdings {
+    long long slave_faces = 0, evaluated_slave_faces = 0, owned_master_faces = 0,
+              searched_master_faces = 0, surface_nodes = 0;
+  };
+  Holdings holdings() const;
+
   /// Per owned slave node: results of the last evaluation.
   struct NodeResult {
     GlobalIndex node;

@@ -134,6 +134,9 @@ class MechanicsProblem : public NonlinearProblem {
   /// (λ dof, slave displacement dof) pairs of every interface, all ranks' pairs in λ order,
   /// for the condensed solve (SystemLayout::pairing, system_layout.hpp). Collective.
   std::vector<std::pair<GO, GO>> multiplier_pairing() const;
+  /// Collective: on rank 0 one line per interface and rank, what the rank holds of it
+  /// (ContactInterface::Holdings); empty on the other ranks and without contact.
+  std::string describe_contact_holdings() const;
   /// Slave nodes of every interface (global node indices, each interface's sorted).
   std::vector<GlobalIndex> slave_nodes() const;
 
