@@ -4,8 +4,6 @@
 
 #include "nonlinear/newton.hpp"
 
-#include <NOX_LineSearch_Generic.H>
-#include <NOX_LineSearch_UserDefinedFactory.H>
 #include <NOX_Solver_Factory.H>
 #include <NOX_Solver_Generic.H>
 #include <NOX_Solver_LineSearchBased.H>
@@ -98,38 +96,6 @@ class ResidualAtRoundOff : public NOX::StatusTest::Generic {
   double norm_f_ = 0.0, norm_f0_ = std::numeric_limits<double>::quiet_NaN(), threshold_ = 0.0;
 };
 
-/// NOX's "Full Step", shortened only where the residual cannot be evaluated: the iterate is
-/// x + s d for the first s = 1, 1/2, …, 2^-max_halvings whose residual is finite (the
-/// problem evaluates it: no inverted element). No decrease of ‖F‖ is asked for: the
-/// semi-smooth Newton step that changes the active set need not lower it, and a merit test
-/// stalls there. After a large active-set change the full update of a finite-strain solid
-/// can fold an element (det F ≤ 0); a shorter step keeps the new active set's direction.
-/// Where the full step evaluates, this is NOX's full step exactly (the same x = x₀ + 1·d);
-/// where no s evaluates, the last one is left to the finite-value test (the step fails).
-class EvaluableFullStep : public NOX::LineSearch::Generic {
- public:
-  static constexpr int max_halvings = 5;
-  bool compute(NOX::Abstract::Group& grp, double& step, const NOX::Abstract::Vector& dir,
-               const NOX::Solver::Generic& solver) override {
-    const NOX::Abstract::Group& old = solver.getPreviousSolutionGroup();
-    step = 1.0;
-    for (int halvings = 0;; ++halvings, step *= 0.5) {
-      grp.computeX(old, dir, step);
-      if (halvings == max_halvings) return true;
-      grp.computeF();  // collective; a failed evaluation is agreed over the ranks
-      if (std::isfinite(grp.getNormF())) return true;
-    }
-  }
-};
-
-class EvaluableFullStepFactory : public NOX::LineSearch::UserDefinedFactory {
- public:
-  Teuchos::RCP<NOX::LineSearch::Generic> buildLineSearch(const Teuchos::RCP<NOX::GlobalData>&,
-                                                         Teuchos::ParameterList&) const override {
-    return Teuchos::rcp(new EvaluableFullStep);
-  }
-};
-
 /// Records the report's histories after every iteration and prints the log line on
 /// rank 0. Norms are collective: computed on all ranks, printed on one.
 class IterationLog : public NOX::Observer {
@@ -206,15 +172,7 @@ Teuchos::RCP<Teuchos::ParameterList> nox_parameters(const NewtonOptions& options
                                                     const Teuchos::RCP<NOX::Observer>& observer) {
   auto params = Teuchos::rcp(new Teuchos::ParameterList("NOX"));
   params->set("Nonlinear Solver", "Line Search Based");
-  auto& line_search = params->sublist("Line Search");
-  if (options.line_search == "Full Step" && !options.nox.isSublist("Line Search")) {
-    line_search.set("Method", "User Defined");  // the full step, shortened where F fails
-    line_search.set(
-        "User Defined Line Search Factory",
-        Teuchos::RCP<NOX::LineSearch::UserDefinedFactory>(new EvaluableFullStepFactory));
-  } else {
-    line_search.set("Method", options.line_search);
-  }
+  params->sublist("Line Search").set("Method", options.line_search);
   auto& direction = params->sublist("Direction");
   direction.set("Method", "Newton");
   // A failed linear solve must stop Newton, not be "rescued" with a stale direction.

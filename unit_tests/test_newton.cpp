@@ -130,31 +130,6 @@ class AtanProblem : public NonlinearProblem {
   Teuchos::RCP<const Map> map_;
 };
 
-/// F(x)ᵢ = ln xᵢ, root 1, not evaluable where some xᵢ ≤ 0 (an inverted element's det F ≤ 0):
-/// from x = 3 the full Newton step, x − x ln x = −0.296, leaves the domain.
-class LogProblem : public NonlinearProblem {
- public:
-  LogProblem() : map_(Teuchos::rcp(new Map(6, 0, Tpetra::getDefaultComm()))) {}
-  Teuchos::RCP<const Map> map() const override { return map_; }
-  bool residual(const Vector& x, Vector& F) override {
-    auto f = F.getLocalViewHost(Tpetra::Access::OverwriteAll);
-    const auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
-    bool ok = true;
-    for (LO i = 0; i < LO(f.extent(0)); ++i) {
-      ok = ok && xv(i, 0) > 0.0;
-      f(i, 0) = xv(i, 0) > 0.0 ? std::log(xv(i, 0)) : 0.0;
-    }
-    return ok;
-  }
-  bool jacobian(const Vector& x, Teuchos::RCP<Matrix>& J) override {
-    J = diagonal_matrix(x, [](double v) { return 1.0 / v; });
-    return true;
-  }
-
- private:
-  Teuchos::RCP<const Map> map_;
-};
-
 /// F(x)ᵢ = xᵢ − 1 + ε sgn(xᵢ − 1) (sgn(0) = 1), J = I: no root, |Fᵢ| ≥ ε everywhere, and
 /// Newton from x < 1 oscillates between 1 ± ε with |Fᵢ| = 2ε — a residual stuck at a floor,
 /// whose estimate residual_floor() = ε_est √n the problem reports.
@@ -320,33 +295,6 @@ TEST(Newton, BacktrackingRescuesAnOvershootingFullStep) {
     EXPECT_TRUE(report.converged) << method << ": " << report.reason;
     EXPECT_LT(x.normInf(), 1e-9) << method;
   }
-}
-
-// The default full step is shortened (halved) only until the residual can be evaluated, with
-// no decrease asked for: from x = 3 the full step leaves ln's domain, the half step
-// 3 − 1.648 = 1.352 is taken, and Newton converges from there with full steps. Before, the
-// step failed ("residual evaluation failed") and only a cut-back of the load step could help.
-TEST(Newton, FullStepIsShortenedWhereTheResidualCannotBeEvaluated) {
-  LogProblem problem;
-  Vector x(problem.map());
-  x.putScalar(3.0);
-  const NewtonReport report = solve(problem, x, quiet_options());
-  ASSERT_TRUE(report.converged) << report.reason;
-  Vector root(problem.map());
-  root.putScalar(1.0);
-  EXPECT_LT(distance(x, root), 1e-10);
-  const auto& length = report.step_length_history;
-  ASSERT_GE(length.size(), 3u);
-  EXPECT_EQ(length[1], 0.5);  // the first update, halved once
-  for (std::size_t k = 2; k < length.size(); ++k) EXPECT_EQ(length[k], 1.0) << "update " << k;
-
-  // Evaluable everywhere: NOX's full step exactly (every update of length 1).
-  CubicProblem cubic;
-  Vector y(cubic.map());
-  const NewtonReport plain = solve(cubic, y, quiet_options());
-  ASSERT_TRUE(plain.converged) << plain.reason;
-  for (std::size_t k = 1; k < plain.step_length_history.size(); ++k)
-    EXPECT_EQ(plain.step_length_history[k], 1.0);
 }
 
 // march_steps (load_stepping.hpp): from x = 2 the full step overshoots atan's root (the
