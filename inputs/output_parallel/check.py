@@ -8,9 +8,13 @@ tools/grout_results.py, on 1, 2 and 3 ranks, 2D and 3D:
 - the Nemesis I data: global counts, block and set sizes of the whole mesh; the border nodes
   are exactly the nodes that another file holds, and each nodal communication map lists the
   nodes shared with that neighbour (the neighbour's map lists the same global nodes);
-- the set read as one mesh equals the single file of the same run bit for bit (times,
+- the set read as one mesh equals the single file of the same input bit for bit (times,
   coordinates, connectivity, every nodal, element and global variable at every step): the
-  two layouts write the same numbers;
+  two layouts write the same numbers. The two are separate runs: where the solve itself is
+  not repeatable bit for bit, distributed MUMPS in 3D on 2 or 3 ranks (its rounding follows
+  the order in which its fronts finish, docs/performance.md), the values agree to
+  SOLVE_REPEAT = 1e-12 of each variable's largest value instead (a misplaced node or element
+  in either layout differs at O(1));
 - the single file of 2 and 3 ranks has the time steps and names of the 1-rank file, and its
   values agree to 1e-8 relative (the solve's round-off on another partition; normal_gap,
   round-off itself where the contact is closed, relative to the displacement).
@@ -26,6 +30,7 @@ from grout_results import Results, relative_difference
 CASES = ["contact_2d", "contact_3d"]
 RANKS = [1, 2, 3]
 ROUND_OFF = 1e-8  # 1 rank against 2 and 3 (the inputs' 1-rank/2-rank agreement is 1e-10)
+SOLVE_REPEAT = 1e-12  # two runs of one 3D input on several ranks (distributed MUMPS)
 failures = []
 
 
@@ -35,8 +40,16 @@ def check(ok, message):
         failures.append(message)
 
 
-def same_values(a, b, what):
-    """Every step of every variable, coordinates and connectivity: bitwise equal."""
+def same_values(a, b, what, tolerance=0.0):
+    """Every step of every variable, coordinates and connectivity: bitwise equal (variables:
+    within `tolerance` relative to each one's largest value when it is > 0)."""
+    def agree(x, y):
+        if tolerance == 0.0:
+            return np.array_equal(x, y)
+        return np.shape(x) == np.shape(y) and relative_difference(
+            np.atleast_1d(np.asarray(x, dtype=float)),
+            np.atleast_1d(np.asarray(y, dtype=float))) <= tolerance
+
     check(np.array_equal(a.times(), b.times()), "%s: same times" % what)
     check(a.nodal_names == b.nodal_names and a.element_names == b.element_names and
           a.global_names == b.global_names, "%s: same variable names" % what)
@@ -45,11 +58,11 @@ def same_values(a, b, what):
               for k in range(1, a.num_blocks + 1)), "%s: same connectivity" % what)
     equal = True
     for step in range(len(a.times())):
-        equal &= all(np.array_equal(a.nodal(n, step), b.nodal(n, step)) for n in a.nodal_names)
-        equal &= all(np.array_equal(a.element(n, step), b.element(n, step))
-                     for n in a.element_names)
-        equal &= all(a.global_var(n, step) == b.global_var(n, step) for n in a.global_names)
-    check(equal, "%s: every nodal, element and global value equal at every step" % what)
+        equal &= all(agree(a.nodal(n, step), b.nodal(n, step)) for n in a.nodal_names)
+        equal &= all(agree(a.element(n, step), b.element(n, step)) for n in a.element_names)
+        equal &= all(agree(a.global_var(n, step), b.global_var(n, step)) for n in a.global_names)
+    check(equal, "%s: every nodal, element and global value equal at every step%s" %
+          (what, " (to %g)" % tolerance if tolerance else ""))
 
 
 def check_pieces(per, single, ranks, what):
@@ -125,7 +138,8 @@ def main():
             single = Results("np%d/%s.e" % (ranks, case))
             per = Results("np%d/%s_per_rank.e" % (ranks, case))
             check_pieces(per, single, ranks, what + " per_rank")
-            same_values(per, single, what + ": per_rank set against the single file")
+            repeat = SOLVE_REPEAT if case.endswith("_3d") and ranks > 1 else 0.0
+            same_values(per, single, what + ": per_rank set against the single file", repeat)
             if ranks == 1:
                 continue
             check(np.array_equal(single.times(), reference.times()) and
