@@ -90,11 +90,12 @@ class ContactInterface {
   bool holds_back(NewtonPhase phase) const {
     return input_.type != ContactKind::tied && policy_.holds_back(phase);
   }
-  /// Stage 4 (local): the rows of the owned slave nodes: force terms and Jacobian entries in
-  /// `terms`, multiplier rows added to F (owned rows of F's map). `global` are the summed
-  /// closure counts (ignored unless holds_back(phase)); `prescribed` the prescribed value of
-  /// every global displacement dof (NaN where free).
-  ContactRowSums write_rows(NewtonPhase phase, int iterate, const ClosureCounts& global,
+  /// Stage 4 (local), at Newton iterate `iterate` of the step (its phase: newton_phase): the
+  /// rows of the owned slave nodes: force terms and Jacobian entries in `terms`, multiplier
+  /// rows added to F (owned rows of F's map). `global` are the summed closure counts (ignored
+  /// unless holds_back(phase)); `prescribed` the prescribed value of every global
+  /// displacement dof (NaN where free).
+  ContactRowSums write_rows(int iterate, const ClosureCounts& global,
                             const std::vector<double>& prescribed, ContactTerms& terms, Vector& F);
 
   /// Accept the last evaluation as the converged state (slip history, committed active set).
@@ -139,8 +140,8 @@ class ContactInterface {
   void build_stencil(const ContactMortar& m);
   LambdaRow declared_kind(const ContactLawResult& law, int r) const;
   // The pieces of write_rows per owned slave node q (contact_rows.cpp).
-  void law_inputs(int q, NewtonPhase phase, int iterate, const std::vector<double>& prescribed,
-                  ContactLawNode& in, double* slip, SparseGradient* dslip);
+  void law_inputs(int q, int iterate, const std::vector<double>& prescribed, ContactLawNode& in,
+                  double* slip, SparseGradient* dslip);
   void add_contact_forces(int q, ContactTerms& terms) const;
   void record_node(int q, const ContactLawNode& in, const ContactLawResult& r, const double* slip);
   SparseGradient gap_gradient(int q) const;

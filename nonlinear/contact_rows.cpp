@@ -80,8 +80,7 @@ ClosureCounts ContactInterface::prepare_active_set(const Vector& x, NewtonPhase 
   return count_closures(candidates_);
 }
 
-ContactRowSums ContactInterface::write_rows(NewtonPhase phase, int iterate,
-                                            const ClosureCounts& global,
+ContactRowSums ContactInterface::write_rows(int iterate, const ClosureCounts& global,
                                             const std::vector<double>& prescribed,
                                             ContactTerms& terms, Vector& F) {
   const int dim = dim_;
@@ -94,7 +93,7 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, int iterate,
   // measured from the last evaluation's gaps.
   std::fill(held_back_.begin(), held_back_.end(), 0);
   if (!tied) {
-    held_back_ = policy_.held_back(candidates_, global, phase);
+    held_back_ = policy_.held_back(candidates_, global, newton_phase(iterate));
     for (int q = 0; q < n_owned; ++q) {
       gap_known_[q] = candidates_[q].paired;
       iterate_gap_[q] = candidates_[q].gap;
@@ -119,7 +118,7 @@ ContactRowSums ContactInterface::write_rows(NewtonPhase phase, int iterate,
   std::vector<double> slip_value(n_owned * 2, 0.0);
   std::vector<std::array<SparseGradient, 2>> dslip(coulomb ? n_owned : 0);
   for (int q = 0; q < n_owned; ++q)
-    law_inputs(q, phase, iterate, prescribed, nodes_host(q), &slip_value[2 * q],
+    law_inputs(q, iterate, prescribed, nodes_host(q), &slip_value[2 * q],
                coulomb ? dslip[q].data() : nullptr);
   Kokkos::deep_copy(law_nodes_, nodes_host);
   evaluate_contact_law(LawSpace(), law, Kokkos::View<const ContactLawNode*, LawMemory>(law_nodes_),
@@ -183,9 +182,8 @@ ContactInterface::SlaveRow ContactInterface::slave_row(int q) const {
 // or the gap as prepare_active_set measured it at these positions and, with Coulomb, the
 // weighted slip ū_k (objective on the current geometry, assembly/weighted_slip.hpp) and its
 // gradient.
-void ContactInterface::law_inputs(int q, NewtonPhase phase, int iterate,
-                                  const std::vector<double>& prescribed, ContactLawNode& in,
-                                  double* slip, SparseGradient* dslip) {
+void ContactInterface::law_inputs(int q, int iterate, const std::vector<double>& prescribed,
+                                  ContactLawNode& in, double* slip, SparseGradient* dslip) {
   const SlaveRow sr = slave_row(q);
   const double D = sr.D.value;
   const int dim = dim_;
@@ -230,7 +228,7 @@ void ContactInterface::law_inputs(int q, NewtonPhase phase, int iterate,
     return;
   }
   in.gap = candidates_[q].gap;
-  in.near = policy_.near(q, lambda_n, in.gap, phase);
+  in.near = policy_.near(q, lambda_n, in.gap, newton_phase(iterate));
   const double s = lambda_n - c_hat_ * in.gap;
   const int fixed = cycle_rule(!in.held_back && (s >= -active_tolerance_ || in.near), s);
   if (fixed == 1) in.near = 1, in.held_back = 0;  // closed although s < −tol

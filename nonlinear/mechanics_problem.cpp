@@ -97,7 +97,6 @@ void MechanicsProblem::limit_step(const Vector& /*x*/, Vector& step) {
 MechanicsProblem::~MechanicsProblem() = default;
 
 void MechanicsProblem::begin_step(double t, Vector& x) {
-  phase_ = NewtonPhase::step_start;
   iterate_ = 0;
   for (auto& c : interfaces_) c->begin_step();
   // The load expressions are evaluated on each rank's own faces: a value that is not finite
@@ -154,6 +153,7 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
     // The stages of contact_interface.hpp, each over all interfaces: geometry, pairing
     // tolerance, closure counts, then the rows (local).
     const int n = int(interfaces_.size());
+    const NewtonPhase phase = newton_phase(iterate_);
     for (auto& c : interfaces_) c->update_geometry(u_base, u_old_base);
     std::vector<double> D_max(n), D_max_all(n);
     for (int i = 0; i < n; ++i) D_max[i] = interfaces_[i]->local_max_D();
@@ -162,16 +162,16 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
     bool holds_back = false;
     for (int i = 0; i < n; ++i) {
       interfaces_[i]->set_pairing_tolerance(D_max_all[i]);
-      const ClosureCounts k = interfaces_[i]->prepare_active_set(x, phase_);
+      const ClosureCounts k = interfaces_[i]->prepare_active_set(x, phase);
       counts[2 * i] = k.active_before, counts[2 * i + 1] = k.closing;
-      holds_back = holds_back || interfaces_[i]->holds_back(phase_);
+      holds_back = holds_back || interfaces_[i]->holds_back(phase);
     }
     if (holds_back)  // the same on every rank: the same input and phase
       Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 2 * n, counts.data(), counts_all.data());
     ContactRowSums sums;
     for (int i = 0; i < n; ++i) {
       const ContactRowSums s = interfaces_[i]->write_rows(
-          phase_, iterate_, {counts_all[2 * i], counts_all[2 * i + 1]}, prescribed_, terms_, F);
+          iterate_, {counts_all[2 * i], counts_all[2 * i + 1]}, prescribed_, terms_, F);
       sums.active += s.active, sums.changes += s.changes, sums.floor2 += s.floor2;
       sums.newly_fixed += s.newly_fixed;
       if (s.fixed.violation > sums.fixed.violation) sums.fixed = s.fixed;

@@ -86,10 +86,7 @@ class MechanicsProblem : public NonlinearProblem {
   /// The Newton iterate of the step that the next residual() evaluates (0: the initial guess,
   /// k: after k updates, line-search trials included): the active-set start rules depend on
   /// it (ActiveSetPolicy). begin_step() resets it to 0.
-  void set_newton_iterate(int k) override {
-    iterate_ = k;
-    phase_ = newton_phase(k);
-  }
+  void set_newton_iterate(int k) override { iterate_ = k; }
   /// The owned multiplier rows' kinds at the last residual() (every interface's), or nullptr
   /// without contact.
   const MultiplierRows* multiplier_rows() const override {
@@ -168,8 +165,7 @@ class MechanicsProblem : public NonlinearProblem {
   std::vector<double> prescribed_;  ///< per global u dof, NaN where free
   int active_size_ = 0, active_changes_ = 0;
   double residual_floor_ = 0.0;
-  NewtonPhase phase_ = NewtonPhase::step_start;  ///< of the next residual evaluation
-  int iterate_ = 0;                              ///< the Newton iterate of phase_
+  int iterate_ = 0;  ///< the Newton iterate of the next residual evaluation (newton_phase)
 };
 
 }  // namespace grout
