@@ -7,9 +7,9 @@
 // contact, Jacobian, linear solve; min/mean/max over ranks) and, before the first step,
 // which mesh the run reads and what each rank holds of it.
 //
-// The mesh: a static run without contact, on a direct solver and with one results file, reads
-// the distributed mesh (each rank its part, drivers/mesh_choice.hpp); any other run the
-// replicated mesh. GROUT_MESH=replicated keeps the replicated mesh for every run.
+// The mesh: a static run without contact, with one results file, reads the distributed mesh
+// (each rank its part, drivers/mesh_choice.hpp); any other run the replicated mesh.
+// GROUT_MESH=replicated keeps the replicated mesh for every run.
 //
 // Exit codes: 0 done, 2 bad input (message names the file and key or mesh entity; also an
 // output that cannot be written), 3 a step did not converge (every earlier step is already
@@ -46,8 +46,8 @@
 #include "nonlinear/mechanics_problem.hpp"
 #include "nonlinear/newton.hpp"
 #include "nonlinear/system_layout.hpp"
+#include "parallel/distributed_bodies.hpp"
 #include "parallel/distributed_mesh.hpp"
-#include "parallel/exodus_slices.hpp"
 
 namespace {
 
@@ -92,8 +92,7 @@ struct RunMesh {
 /// against it; every rank agrees on the outcome.
 RunMesh read_mesh(const Input& input, bool forced_replicated,
                   const Teuchos::RCP<const Comm>& comm) {
-  const MeshChoice choice = choose_mesh(
-      input, [&] { return read_mesh_header(*comm, input.mesh_file).num_nodes; }, forced_replicated);
+  const MeshChoice choice = choose_mesh(input, forced_replicated);
   RunMesh run_mesh;
   if (!choice.distributed) {
     run_mesh.replicated_reason = choice.reason;
@@ -123,6 +122,24 @@ SystemLayout direct_solver_layout(const MechanicsProblem& problem, int dim) {
   layout.multiplier_pairing = problem.multiplier_pairing();
   layout.dofs_per_node = dim;
   layout.dim = dim;
+  return layout;
+}
+
+/// The layout on the distributed mesh: the direct solvers' (the dimension, the pairing), and
+/// for the iterative path each rank's owned nodes (its rows' nodes) with their coordinates and
+/// bodies, labelled across the ranks (parallel/distributed_bodies.hpp; none when the mesh is
+/// one body). Collective.
+SystemLayout distributed_layout(const MechanicsProblem& problem, const DistributedMesh& mesh,
+                                const Input& input, const Comm& comm) {
+  SystemLayout layout = direct_solver_layout(problem, mesh.local.dimension);
+  if (!iterative_solver_chosen(input, mesh.global_num_nodes)) return layout;
+  const std::size_t owned = std::size_t(mesh.num_owned_nodes), dim = mesh.local.dimension;
+  layout.nodes.assign(mesh.node_gid.begin(), mesh.node_gid.begin() + owned);
+  layout.coordinates.assign(mesh.local.coordinates.begin(),
+                            mesh.local.coordinates.begin() + owned * dim);
+  layout.num_global_nodes = mesh.global_num_nodes;
+  DistributedBodies bodies = distributed_node_bodies(comm, mesh);
+  if (bodies.num_bodies > 1) layout.node_bodies = std::move(bodies.owned_node_body);
   return layout;
 }
 
@@ -189,8 +206,8 @@ void run(const std::string& input_path, const std::string& output_dir, bool time
   }
   const NewtonOptions& newton = input.solver.newton;
   // The replicated mesh's layout also has every node's coordinates and body (iterative path).
-  const SystemLayout layout =
-      distributed ? direct_solver_layout(problem, mesh.dimension) : system_layout(problem, mesh);
+  const SystemLayout layout = distributed ? distributed_layout(problem, *distributed, input, *comm)
+                                          : system_layout(problem, mesh);
   LinearSolver linear(input.solver.linear, layout);
   std::unique_ptr<ResultsOutput> output;
   agree_on_errors(*comm, [&] {

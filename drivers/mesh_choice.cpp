@@ -7,22 +7,22 @@
 
 namespace grout {
 
-MeshChoice choose_mesh(const Input& input, const std::function<long long()>& num_nodes,
-                       bool forced_replicated) {
+MeshChoice choose_mesh(const Input& input, bool forced_replicated) {
   const auto replicated = [](std::string reason) { return MeshChoice{false, std::move(reason)}; };
   if (forced_replicated) return replicated("GROUT_MESH=replicated");
   if (!input.contact.empty()) return replicated("contact");
   if (input.dynamics.enabled) return replicated("dynamics");
   if (input.output.parallel == OutputParallel::per_rank)
     return replicated("output/parallel: per_rank");
-  // Without contact the unknowns are the displacements: num_nodes * dim.
-  const LinearSolverType type = input.solver.linear.type;
-  const bool iterative = type == LinearSolverType::belos ||
-                         (type == LinearSolverType::automatic &&
-                          auto_linear_solver_type(num_nodes() * input.model.dimension,
-                                                  input.model.dimension) == "belos");
-  if (iterative) return replicated("the iterative linear solver");
   return {true, ""};
+}
+
+bool iterative_solver_chosen(const Input& input, long long num_nodes) {
+  const LinearSolverType type = input.solver.linear.type;
+  return type == LinearSolverType::belos ||
+         (type == LinearSolverType::automatic &&
+          auto_linear_solver_type(num_nodes * input.model.dimension, input.model.dimension) ==
+              "belos");
 }
 
 bool replicated_mesh_forced() {

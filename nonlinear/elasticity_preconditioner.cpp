@@ -10,25 +10,46 @@
 
 namespace grout {
 
+namespace {
+
+// Where global node `node` is in `coordinates`: its id itself without `nodes` (every node
+// given), else its place in `*nodes` (ascending); -1 when it is not given.
+long long node_index(GO node, std::size_t num_given, const std::vector<GO>* nodes) {
+  if (!nodes) return node >= 0 && std::size_t(node) < num_given ? node : -1;
+  const auto at = std::lower_bound(nodes->begin(), nodes->end(), node);
+  return at != nodes->end() && *at == node ? at - nodes->begin() : -1;
+}
+
+}  // namespace
+
 Teuchos::RCP<MultiVector> rigid_body_modes(const Map& map, int dim,
-                                           const std::vector<double>& coordinates) {
+                                           const std::vector<double>& coordinates,
+                                           const std::vector<GO>* nodes) {
   const std::size_t num_nodes = coordinates.size() / std::size_t(dim);
-  // Centroid of all nodes: rotations about it keep the modes well scaled.
+  // Centroid of all nodes: rotations about it keep the modes well scaled. With `nodes` each
+  // rank sums its own and the sums are added over the ranks.
   double centre[3] = {0.0, 0.0, 0.0};
   for (std::size_t n = 0; n < num_nodes; ++n)
     for (int d = 0; d < dim; ++d) centre[d] += coordinates[n * dim + d];
-  for (int d = 0; d < dim; ++d) centre[d] /= num_nodes > 0 ? double(num_nodes) : 1.0;
+  double count = double(num_nodes);
+  if (nodes) {
+    double local[4] = {centre[0], centre[1], centre[2], count}, global[4];
+    Teuchos::reduceAll(*map.getComm(), Teuchos::REDUCE_SUM, 4, local, global);
+    for (int d = 0; d < 3; ++d) centre[d] = global[d];
+    count = global[3];
+  }
+  for (int d = 0; d < dim; ++d) centre[d] /= count > 0.0 ? count : 1.0;
 
   const int num_modes = rigid_mode_count(dim);
   auto modes = Teuchos::rcp(new MultiVector(Teuchos::rcpFromRef(map), num_modes));
   auto v = modes->getLocalViewHost(Tpetra::Access::OverwriteAll);
   for (LO i = 0; i < LO(map.getNodeNumElements()); ++i) {
     const GO g = map.getGlobalElement(i);
-    const GO node = g / dim;
+    const long long node = node_index(g / dim, num_nodes, nodes);
     const int c = int(g % dim);
-    if (node >= GO(num_nodes))
+    if (node < 0)
       throw std::invalid_argument("rigid_body_modes: dof " + std::to_string(g) +
-                                  " is not a displacement dof");
+                                  " is not a displacement dof of the nodes given");
     // Translations e_c, then the rotations e_k × (x − centre) (kernels/free_rigid_modes.hpp).
     for (int k = 0; k < num_modes; ++k) {
       double r[3];
@@ -55,29 +76,45 @@ bool is_nodal_displacement_map(const Map& map, int dim, long long num_nodes) {
 
 Teuchos::RCP<MultiVector> node_coordinates(const Map& map, int dim,
                                            const std::vector<double>& coordinates,
-                                           const std::vector<int>& bodies) {
-  // Bounding-box diagonal of all nodes: the bodies' spacing is 1000 times it.
+                                           const std::vector<int>& bodies,
+                                           const std::vector<GO>* nodes) {
+  // Bounding-box diagonal of all nodes: the bodies' spacing is 1000 times it. With `nodes`
+  // the union of the ranks' boxes (a rank without nodes: an empty box, +inf and -inf).
   double spacing = 0.0;
-  if (!bodies.empty() && !coordinates.empty()) {
+  const bool distributed = nodes != nullptr;
+  if ((!bodies.empty() && !coordinates.empty()) || distributed) {
+    double lo[3], hi[3];  // hi as -max for one reduction
     for (int d = 0; d < dim; ++d) {
-      double lo = coordinates[d], hi = coordinates[d];
+      lo[d] = coordinates.empty() ? INFINITY : coordinates[d];
+      hi[d] = coordinates.empty() ? INFINITY : -coordinates[d];
       for (std::size_t i = d; i < coordinates.size(); i += dim)
-        lo = std::min(lo, coordinates[i]), hi = std::max(hi, coordinates[i]);
-      spacing += (hi - lo) * (hi - lo);
+        lo[d] = std::min(lo[d], coordinates[i]), hi[d] = std::min(hi[d], -coordinates[i]);
     }
+    if (distributed) {
+      double local[6], global[6];
+      for (int d = 0; d < dim; ++d) local[d] = lo[d], local[dim + d] = hi[d];
+      Teuchos::reduceAll(*map.getComm(), Teuchos::REDUCE_MIN, 2 * dim, local, global);
+      for (int d = 0; d < dim; ++d) lo[d] = global[d], hi[d] = global[dim + d];
+    }
+    for (int d = 0; d < dim; ++d) spacing += (-hi[d] - lo[d]) * (-hi[d] - lo[d]);
     spacing = 1000.0 * std::max(std::sqrt(spacing), 1e-300);
   }
-  std::vector<GO> nodes;
+  std::vector<GO> row_nodes;
   for (LO i = 0; i < LO(map.getNodeNumElements()); i += dim)
-    nodes.push_back(map.getGlobalElement(i) / dim);
+    row_nodes.push_back(map.getGlobalElement(i) / dim);
   const auto node_map =
-      Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(), nodes.data(),
-                           nodes.size(), 0, map.getComm()));
+      Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                           row_nodes.data(), row_nodes.size(), 0, map.getComm()));
   auto X = Teuchos::rcp(new MultiVector(node_map, dim));
   auto v = X->getLocalViewHost(Tpetra::Access::OverwriteAll);
-  for (std::size_t n = 0; n < nodes.size(); ++n) {
-    for (int d = 0; d < dim; ++d) v(n, d) = coordinates[std::size_t(nodes[n]) * dim + d];
-    if (!bodies.empty()) v(n, 0) += spacing * bodies[std::size_t(nodes[n])];
+  const std::size_t num_given = coordinates.size() / std::size_t(dim);
+  for (std::size_t n = 0; n < row_nodes.size(); ++n) {
+    const long long at = node_index(row_nodes[n], num_given, nodes);
+    if (at < 0)
+      throw std::invalid_argument("node_coordinates: node " + std::to_string(row_nodes[n]) +
+                                  " is not among the nodes given");
+    for (int d = 0; d < dim; ++d) v(n, d) = coordinates[std::size_t(at) * dim + d];
+    if (!bodies.empty()) v(n, 0) += spacing * bodies[std::size_t(at)];
   }
   return X;
 }

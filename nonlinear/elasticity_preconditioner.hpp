@@ -50,10 +50,14 @@
 namespace grout {
 
 /// The rigid-body modes on `map`, whose GIDs are displacement dofs n*dim + c of the nodes
-/// of `coordinates` (node-major x0 y0 [z0] x1 ..., every node on every rank): 3 columns in
-/// 2D, 6 in 3D. Throws std::invalid_argument on a GID beyond the nodes.
+/// of `coordinates` (node-major x0 y0 [z0] x1 ...): every node on every rank when `nodes` is
+/// null (the replicated mesh), else the nodes of the ascending ids `*nodes`, each rank those
+/// of its rows (the distributed mesh; collective). 3 columns in 2D, 6 in 3D, the rotations
+/// about the centroid of all nodes. Throws std::invalid_argument on a GID whose node is not
+/// given.
 Teuchos::RCP<MultiVector> rigid_body_modes(const Map& map, int dim,
-                                           const std::vector<double>& coordinates);
+                                           const std::vector<double>& coordinates,
+                                           const std::vector<GO>* nodes = nullptr);
 
 /// True if every GID of `map` (all ranks) is a displacement dof of the `num_nodes` nodes and
 /// every rank owns whole nodes in node-major order (collective).
@@ -69,11 +73,13 @@ void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ran
                              bool separate_bodies = false);
 
 /// The coordinates of the nodes of a nodal displacement map (one row per node of `map`, in
-/// its order): MueLu's `Coordinates` for the aggregation and the repartitioning. With
-/// `bodies` (body index per node, as io/mesh_bodies.hpp; empty: one body) body b is moved
-/// by b·S along x, S = 1000 × the bounding-box diagonal of all nodes.
+/// its order): MueLu's `Coordinates` for the aggregation and the repartitioning.
+/// `coordinates` and `nodes` as rigid_body_modes. With `bodies` (body index per node of
+/// `coordinates`, as io/mesh_bodies.hpp; empty: one body) body b is moved by b·S along x,
+/// S = 1000 × the bounding-box diagonal of all nodes.
 Teuchos::RCP<MultiVector> node_coordinates(const Map& map, int dim,
                                            const std::vector<double>& coordinates,
-                                           const std::vector<int>& bodies = {});
+                                           const std::vector<int>& bodies = {},
+                                           const std::vector<GO>* nodes = nullptr);
 
 }  // namespace grout

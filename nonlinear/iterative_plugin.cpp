@@ -123,13 +123,24 @@ int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b
   Teuchos::ParameterList muelu = settings.muelu;
   const int dim = settings.dim;
   const int num_ranks = K->getRowMap()->getComm()->getSize();
-  const long long num_nodes = dim > 0 ? settings.coordinates.size() / dim : 0;
-  const bool bodies = settings.bodies.size() == std::size_t(num_nodes) && num_nodes > 0;
+  // The nodes' coordinates and bodies: every node on every rank (the replicated mesh), or
+  // each rank its rows' nodes (the distributed mesh, num_global_nodes given).
+  const bool distributed = settings.num_global_nodes > 0;
+  const std::size_t num_given = dim > 0 ? settings.coordinates.size() / dim : 0;
+  const long long num_nodes = distributed ? settings.num_global_nodes : (long long)(num_given);
+  const std::vector<GO>* nodes = distributed ? &settings.nodes : nullptr;
+  bool bodies = settings.bodies.size() == num_given && num_given > 0;
+  if (distributed) {  // one answer on every rank: a rank may hold no node
+    int here = settings.bodies.empty() ? 0 : 1, anywhere = 0;
+    Teuchos::reduceAll(*K->getRowMap()->getComm(), Teuchos::REDUCE_MAX, here,
+                       Teuchos::outArg(anywhere));
+    bodies = anywhere == 1;
+  }
   if (num_nodes > 0 && is_nodal_displacement_map(*K->getRowMap(), dim, num_nodes))
     set_elasticity_defaults(muelu, dim, num_ranks,
-                            rigid_body_modes(*K->getRowMap(), dim, settings.coordinates),
+                            rigid_body_modes(*K->getRowMap(), dim, settings.coordinates, nodes),
                             node_coordinates(*K->getRowMap(), dim, settings.coordinates,
-                                             bodies ? settings.bodies : std::vector<int>()),
+                                             bodies ? settings.bodies : std::vector<int>(), nodes),
                             bodies);
   if (num_ranks > 1 && !muelu.isParameter("coarse: type"))
     muelu.set("coarse: type", "RELAXATION");  // never KLU2 on a multi-rank communicator

@@ -27,8 +27,10 @@ struct IterativeSettings {
   const Teuchos::ParameterList& muelu;     ///< the user's `MueLu` sublist
   bool reuse_preconditioner;               ///< keep the MueLu hierarchy between solves
   int dim;                                 ///< 0: no coordinates
-  const std::vector<double>& coordinates;  ///< node-major, every node on every rank
-  const std::vector<int>& bodies;          ///< body per node; empty: one body
+  const std::vector<double>& coordinates;  ///< node-major, every node or those of `nodes`
+  const std::vector<int>& bodies;          ///< body per node; empty on every rank: one body
+  const std::vector<GO>& nodes;            ///< ids of the nodes given, ascending; empty: all
+  long long num_global_nodes;              ///< all ranks; 0: the nodes of `coordinates`
 };
 
 class IterativeSolver {
@@ -63,7 +65,7 @@ class IterativeSolver {
 
 /// Bumped whenever IterativeSolver or IterativeSettings change: a module built from other
 /// sources refuses to create a solver (the loader then tries the next directory).
-constexpr int iterative_solver_interface_version = 2;
+constexpr int iterative_solver_interface_version = 3;
 
 }  // namespace grout
 

@@ -40,7 +40,7 @@ struct LinearSolver::Impl {
     return self;
   }
   // The system's layout (system_layout.hpp), with node_bodies emptied when every node is in
-  // one body.
+  // one body (replicated layouts; a distributed one comes so).
   SystemLayout layout;
   // The iterative path (type: belos), from the module grout_iterative loaded at the first
   // iterative solve (iterative_module.hpp); it keeps the MueLu hierarchy between solves.
@@ -102,7 +102,9 @@ LinearSolver::LinearSolver(LinearSolverSettings settings, SystemLayout layout)
   impl_->settings = std::move(settings);
   impl_->layout = std::move(layout);
   std::vector<int>& bodies = impl_->layout.node_bodies;
-  if (std::all_of(bodies.begin(), bodies.end(), [&](int b) { return b == bodies.front(); }))
+  // Each rank holds every node's body only on the replicated mesh (system_layout.hpp).
+  if (impl_->layout.nodes.empty() &&
+      std::all_of(bodies.begin(), bodies.end(), [&](int b) { return b == bodies.front(); }))
     bodies.clear();
   const LinearSolverSettings& s = impl_->settings;
   impl_->type = linear_solver_type_name(s.type);
@@ -258,8 +260,9 @@ int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector
 
   // Belos + MueLu, in the module grout_iterative (loaded here at the first iterative solve).
   const IterativeSettings settings{
-      impl_->settings.belos, impl_->settings.muelu,     impl_->settings.reuse_preconditioner,
-      impl_->layout.dim,     impl_->layout.coordinates, impl_->layout.node_bodies};
+      impl_->settings.belos, impl_->settings.muelu,         impl_->settings.reuse_preconditioner,
+      impl_->layout.dim,     impl_->layout.coordinates,     impl_->layout.node_bodies,
+      impl_->layout.nodes,   impl_->layout.num_global_nodes};
   try {
     return impl_->iterative_solver().solve(K, b, x, belos_type, settings);
   } catch (const ExitCodeError&) {  // no module, or an error with its own exit code

@@ -24,16 +24,24 @@ struct SystemLayout {
   /// Slave dofs s of one node share s / dofs_per_node (the mesh dimension for Grout's maps:
   /// node · dim + component).
   int dofs_per_node = 1;
-  /// Node coordinates, node-major x0 y0 [z0] x1 ..., every node on every rank. Empty: the
-  /// iterative path's MueLu has no rigid-body near-null space (its defaults apply).
+  /// Node coordinates, node-major x0 y0 [z0] x1 ...: every node on every rank (the replicated
+  /// mesh), or the nodes of `nodes` (the distributed mesh: each rank its owned nodes, whose
+  /// dofs are its rows). Empty: the iterative path's MueLu has no rigid-body near-null space
+  /// (its defaults apply).
   std::vector<double> coordinates;
+  /// Global ids of the nodes of `coordinates` and `node_bodies`, ascending. Empty: every node,
+  /// 0, 1, ... (the replicated mesh).
+  std::vector<GO> nodes;
+  /// The mesh's node count, all ranks; 0: the nodes of `coordinates` (the replicated mesh).
+  long long num_global_nodes = 0;
   /// Spatial dimension of `coordinates`. 0: unknown; `type: auto` then picks as in 2D. In 3D
   /// without it a system goes to KLU2, whose 3D factorisations are 20-80x slower than MUMPS's
   /// (docs/performance.md).
   int dim = 0;
-  /// Body index of every node (io/mesh_bodies.hpp). Empty, or every node in one body: one body.
-  /// With several, the iterative path's aggregation keeps the bodies apart
-  /// (elasticity_preconditioner.hpp).
+  /// Body index of every node of `coordinates` (io/mesh_bodies.hpp). Empty, or (replicated)
+  /// every node in one body: one body. With several, the iterative path's aggregation keeps
+  /// the bodies apart (elasticity_preconditioner.hpp). With `nodes` it is empty on every rank
+  /// or on none (a rank whose nodes are all in one body may be one of several bodies).
   std::vector<int> node_bodies;
 };
 
