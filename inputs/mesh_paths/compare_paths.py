@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Run one input on the distributed and on the replicated mesh and compare the results.
 
-Usage: compare_paths.py INPUT NP GROUT [LAUNCHER ...]
+Usage: compare_paths.py [--tol TOL] INPUT NP GROUT [LAUNCHER ...]
 
 Runs GROUT on INPUT on NP ranks twice, from the working directory: as it chooses (a static run
 without contact on a direct solver reads the distributed mesh, drivers/mesh_choice.hpp) with
@@ -11,6 +11,13 @@ holdings line per rank, each rank holding less than the whole mesh when NP > 1; 
 it read the replicated one. Then tools/compare_results --geometry: the same Exodus mesh, value
 for value, and the same results and CSV summary to 1e-11 of each quantity's scale (round-off:
 the two paths partition the mesh differently, so the direct solver sums in another order).
+--tol TOL: an input on the iterative solver. The distributed run must have set up MueLu (the
+timer "grout: linear solve: MueLu set-up"), and the answers agree to TOL of each quantity's
+scale (tools/compare_results --answers-only: the Krylov iteration counts differ with the
+partition, which changes the rank-local smoothers and aggregates). TOL = 2 κ(K) τ: each path
+stops at ‖r‖ ≤ τ‖b‖ (Belos's `Convergence Tolerance`, 1e-12 by default), so the two answers
+differ by K⁻¹(r_a − r_b), at most 2 κ(K) τ of ‖u‖; κ(K) of the free dofs from
+condition_number.py.
 LAUNCHER: the MPI launcher and its options, used when NP > 1.
 """
 import os
@@ -30,9 +37,13 @@ def run(command, env, label):
 
 
 def main():
-    if len(sys.argv) < 4:
+    args = sys.argv[1:]
+    tol = None
+    if args[:1] == ["--tol"] and len(args) > 1:
+        tol, args = args[1], args[2:]
+    if len(args) < 3:
         sys.exit(__doc__)
-    input_file, np, grout, launcher = sys.argv[1], int(sys.argv[2]), sys.argv[3], sys.argv[4:]
+    input_file, np, grout, launcher = args[0], int(args[1]), args[2], args[3:]
     stem = pathlib.Path(input_file).stem
     out = pathlib.Path("paths") / stem
     prefix = launcher + ["-np", str(np)] if np > 1 else []
@@ -42,6 +53,8 @@ def main():
               "distributed run")
     if "grout: mesh: distributed" not in log:
         sys.exit(f"{input_file} on {np} rank(s) did not read the distributed mesh:\n{log}")
+    if tol is not None and "grout: linear solve: MueLu set-up" not in log:
+        sys.exit(f"{input_file} on {np} rank(s) did not take the iterative path:\n{log}")
     held = re.findall(r"^mesh on rank (\d+): nodes (\d+) owned .*\(([\d.]+) % of (\d+)\), "
                       r"elements (\d+) owned .*\(([\d.]+) % of (\d+)\)", log, re.MULTILINE)
     if len(held) != np:
@@ -58,8 +71,11 @@ def main():
               "replicated run")
     if "grout: mesh: replicated" not in log:
         sys.exit(f"GROUT_MESH=replicated did not read the replicated mesh:\n{log}")
-    result = subprocess.run([sys.executable, str(TOOLS / "compare_results"), str(replicated_dir),
-                             str(distributed_dir), "--geometry"], capture_output=True, text=True)
+    compare = [sys.executable, str(TOOLS / "compare_results"), str(replicated_dir),
+               str(distributed_dir), "--geometry"]
+    if tol is not None:
+        compare += ["--tol", tol, "--answers-only"]
+    result = subprocess.run(compare, capture_output=True, text=True)
     print(result.stdout, end="")
     return result.returncode
 
