@@ -122,7 +122,7 @@ Teuchos::RCP<MultiVector> node_coordinates(const Map& map, int dim,
 void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ranks,
                              const Teuchos::RCP<MultiVector>& null_space,
                              const Teuchos::RCP<MultiVector>& node_coordinates,
-                             bool separate_bodies) {
+                             bool separate_bodies, bool multipliers) {
   const auto set_default = [&](const std::string& key, const auto& value) {
     if (!muelu.isParameter(key)) muelu.set(key, value);
   };
@@ -131,7 +131,16 @@ void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ran
   set_default("multigrid algorithm", std::string("sa"));
   set_default("aggregation: type", std::string("uncoupled"));
   set_default("transpose: use implicit", true);
-  set_default("smoother: type", std::string("RILUK"));  // ILU(0), rank-local
+  if (!muelu.isParameter("smoother: type")) {  // rank-local (elasticity_preconditioner.hpp)
+    if (multipliers) {
+      muelu.set("smoother: type", std::string("RILUK"));  // ILU(0)
+    } else if (!muelu.isSublist("smoother: params")) {
+      muelu.set("smoother: type", std::string("RELAXATION"));
+      Teuchos::ParameterList& relaxation = muelu.sublist("smoother: params");
+      relaxation.set("relaxation: type", std::string("Symmetric Gauss-Seidel"));
+      relaxation.set("relaxation: sweeps", 1);
+    }
+  }
   // MueLu's default is 2000 rows. 500: the coarse KLU2 solve stays negligible, a system of
   // 500-2000 unknowns on several ranks gets a coarse level (with 2000 it was smoothed only,
   // 71 iterations on 2 ranks against 1 on one rank in 3D), and the stacked study's meshes

@@ -14,10 +14,15 @@
 //   basis) and rotations to O(h);
 // - prescribed dofs are identity rows (their columns eliminated): MueLu treats them as
 //   Dirichlet rows, the modes keep their values there;
-// - smoother: ILU(0) (Ifpack2 RILUK, on each rank's rows). On the condensed contact
-//   systems it needs fewer iterations than symmetric Gauss–Seidel or Chebyshev, whose
-//   counts grow more with the mesh (docs/performance.md, "Iterative solver"); a user's
-//   `smoother: type` replaces it;
+// - smoother, on each rank's rows: ILU(0) (Ifpack2 RILUK) on a system with contact or tie
+//   multipliers (condensed): there it needs fewer iterations than symmetric Gauss–Seidel or
+//   Chebyshev, whose counts grow more with the mesh (3D stacked blocks, 5.1e4 unknowns:
+//   one Newton iteration of 18 GMRES iterations against two of 293 in all for one sweep of
+//   SGS); one sweep of symmetric Gauss–Seidel
+//   on a displacement-only system, whose set-up is the diagonal only: ILU(0)'s set-up was 44 %
+//   of MueLu's, and one SGS sweep takes 17–23 % less CPU for the whole run and 18 % less
+//   memory at 2–5e5 unknowns in 3D for 2–3 more CG iterations (docs/performance.md,
+//   "Iterative solver"); a user's `smoother: type` replaces either;
 // - coarse solve: KLU2 on one rank. On more ranks the coarse levels are repartitioned
 //   (Zoltan2 multi-jagged on the node coordinates) onto one rank with a subcommunicator,
 //   where KLU2 is exact (Debian's KLU2 is wrong on a multi-rank communicator, docs/design.md,
@@ -66,11 +71,12 @@ bool is_nodal_displacement_map(const Map& map, int dim, long long num_nodes);
 /// Grout's MueLu defaults for elasticity, merged under the user's `muelu` entries, plus the
 /// near-null space and the coordinates in `user data` (`muelu` is modified).
 /// `separate_bodies`: the coordinates keep the bodies apart (node_coordinates), and the
-/// aggregation drops the links between them.
+/// aggregation drops the links between them. `multipliers`: the system holds contact or tie
+/// multiplier rows (condensed), smoothed by ILU(0); without, symmetric Gauss–Seidel.
 void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ranks,
                              const Teuchos::RCP<MultiVector>& null_space,
                              const Teuchos::RCP<MultiVector>& node_coordinates,
-                             bool separate_bodies = false);
+                             bool separate_bodies = false, bool multipliers = true);
 
 /// The coordinates of the nodes of a nodal displacement map (one row per node of `map`, in
 /// its order): MueLu's `Coordinates` for the aggregation and the repartitioning.

@@ -141,7 +141,7 @@ int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b
                             rigid_body_modes(*K->getRowMap(), dim, settings.coordinates, nodes),
                             node_coordinates(*K->getRowMap(), dim, settings.coordinates,
                                              bodies ? settings.bodies : std::vector<int>(), nodes),
-                            bodies);
+                            bodies, settings.multipliers);
   if (num_ranks > 1 && !muelu.isParameter("coarse: type"))
     muelu.set("coarse: type", "RELAXATION");  // never KLU2 on a multi-rank communicator
   const auto K_crs = Teuchos::rcp_const_cast<Matrix>(K);

@@ -31,6 +31,7 @@ struct IterativeSettings {
   const std::vector<int>& bodies;          ///< body per node; empty on every rank: one body
   const std::vector<GO>& nodes;            ///< ids of the nodes given, ascending; empty: all
   long long num_global_nodes;              ///< all ranks; 0: the nodes of `coordinates`
+  bool multipliers;                        ///< contact or tie multipliers (condensed or not)
 };
 
 class IterativeSolver {

@@ -259,10 +259,15 @@ int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector
   }
 
   // Belos + MueLu, in the module grout_iterative (loaded here at the first iterative solve).
-  const IterativeSettings settings{
-      impl_->settings.belos, impl_->settings.muelu,         impl_->settings.reuse_preconditioner,
-      impl_->layout.dim,     impl_->layout.coordinates,     impl_->layout.node_bodies,
-      impl_->layout.nodes,   impl_->layout.num_global_nodes};
+  const IterativeSettings settings{impl_->settings.belos,
+                                   impl_->settings.muelu,
+                                   impl_->settings.reuse_preconditioner,
+                                   impl_->layout.dim,
+                                   impl_->layout.coordinates,
+                                   impl_->layout.node_bodies,
+                                   impl_->layout.nodes,
+                                   impl_->layout.num_global_nodes,
+                                   !impl_->layout.multiplier_pairing.empty()};
   try {
     return impl_->iterative_solver().solve(K, b, x, belos_type, settings);
   } catch (const ExitCodeError&) {  // no module, or an error with its own exit code
