@@ -215,17 +215,22 @@ def advance_step(gf, md, free, apply, step, s_from, s_to, w, max_res, noisy=Fals
     return total, cuts, converged
 
 
-def add_large_sliding_contact(gf, md, r, release, mu, slave, master, order=1, dim=2):
+def add_large_sliding_contact(gf, md, r, release, mu, slave, master, order=1, dim=2, alpha=1.0,
+                              version=0):
     """Poulios & Renard's integral large-sliding contact brick (raytracing): augmentation r,
     release distance `release`, Coulomb mu (0: frictionless). slave = (variable, MeshFem,
     mesh, MeshIm, region), master = (variable, MeshFem, MeshIm, region); the multiplier lam_c
     is QK(dim, order) on the slave's mesh, filtered to its region. With mu > 0 each body's slip is
     measured from its copy w_<variable>, the start-of-step state (`advance` sets it).
+    GetFEM's slip is (u_s - u_m(Y) - (w_s - w_m(Y))) * alpha, Y the master point now opposite;
+    alpha = 1 (the default, as GetFEM's own demo_large_sliding_contact.py) makes it the slip
+    increment of the step; version 1 is GetFEM's "more symmetric" brick (0: the default).
     Returns (brick index, {variable: its copy's name})."""
     md.add_initialized_data("r", [r])
     md.add_initialized_data("f", [mu])
-    md.add_initialized_data("alpha", [1.0])
-    ind = md.add_integral_large_sliding_contact_brick_raytracing("r", release, "f", "alpha")
+    md.add_initialized_data("alpha", [alpha])
+    ind = md.add_integral_large_sliding_contact_brick_raytracing("r", release, "f", "alpha",
+                                                                 version)
     s_var, s_mf, s_mesh, s_mim, s_region = slave
     m_var, m_mf, m_mim, m_region = master
     w = {}

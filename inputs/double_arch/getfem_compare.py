@@ -8,14 +8,17 @@ Usage:
       (frictionless, d to 0.024 in 8 steps) and np1/double_arch_mu05_ci.e (mu = 0.5, 16 steps;
       friction depends on the path, so the same steps) and compares with the np1/ and np2/
       runs step by step. Exit 77 (ctest: skipped) when python3-getfem is missing.
-  getfem_compare.py --full STEM:MU ... [--tol 0.01]
+  getfem_compare.py --full STEM:MU[:SLAVE] ... [--tol 0.01]
       docs/verification.md #14's "Grout within 1 % of GetFEM on the same mesh and law over the
       path" (ctest double_arch/getfem_full, after the 1-rank runs of double_arch.yaml and
       double_arch_mu05.yaml): runs getfem_double_arch.py on double_arch.exo with friction
       coefficient MU to the d of Grout's np1/STEM.e, on Grout's steps when they are equal
       (else in steps of 0.5 mm, Grout's largest), and compares the centre curves at Grout's
       steps (GetFEM interpolated linearly in d): max |u_G - u_g| within --tol of Grout's
-      largest |u| over the path. Exit 77 when python3-getfem is missing.
+      largest |u| over the path. SLAVE (default base, as Grout and Kratos) is GetFEM's slave
+      side: with mu > 0 only slave = ring gives a GetFEM curve that converges in its steps
+      (docs/verification.md, "Independent check with GetFEM"). Exit 77 when python3-getfem is
+      missing.
   getfem_compare.py --grout STEM[:LABEL] ... --getfem CSV[:LABEL[:STEM]] ... [--plot PNG]
       The full path (run_getfem.sh): GetFEM CSVs and Grout runs (np1/STEM.e) against the
       literature curve (frictionless_reference_center_displacement.csv) and Kratos' 2017
@@ -143,9 +146,12 @@ def ci_case(stem, mu, tol, failures):
 
 
 def full_case(spec, tol, failures):
-    """Row 14: GetFEM over the whole path of np1/STEM.e (STEM:MU), within tol of max |u|."""
-    stem, _, mu = spec.partition(":")
+    """Row 14: GetFEM over the whole path of np1/STEM.e (STEM:MU[:SLAVE]), within tol of max |u|;
+    SLAVE (base, the default, or ring) is GetFEM's slave side."""
+    stem, _, rest = spec.partition(":")
+    mu, _, slave = rest.partition(":")
     mu = float(mu or 0.0)
+    slave = slave or "base"
     d, u, f = grout_curve("np1/%s.e" % stem)
     steps = len(d) - 1
     if np.abs(np.diff(d) - d[-1] / steps).max() > 1e-9:
@@ -153,7 +159,7 @@ def full_case(spec, tol, failures):
     csv_out = "getfem_full_%s.csv" % stem
     cmd = [sys.executable, os.path.join(HERE, "getfem_double_arch.py"), "--mesh",
            "double_arch.exo", "--d-max", repr(d[-1]), "--steps", str(steps), "--mu", repr(mu),
-           "--csv", csv_out]
+           "--slave", slave, "--csv", csv_out]
     rc = subprocess.call(cmd)
     if rc == SKIP:
         return SKIP
@@ -165,10 +171,12 @@ def full_case(spec, tol, failures):
     df = np.abs(np.interp(d, dg, fg) - f)
     k = int(np.argmax(du))
     scale_u, scale_f = np.abs(u).max(), np.abs(f).max()
-    print("np1/%s (mu = %g), d up to %.4f (Grout %d steps, GetFEM %d): centre max |u_G - u_g| "
+    print("np1/%s (mu = %g), d up to %.4f (Grout %d steps, GetFEM %d, slave %s): centre max "
+          "|u_G - u_g| "
           "%.3f mm at d = %.4f (%.2f %% of Grout's max|u| = %.4f m; tolerance %.1f %%), rms "
           "%.3f mm; end force max %.2f %% of max|F| = %.3e N/m (printed)"
-          % (stem, mu, d[-1], len(d) - 1, steps, 1e3 * du.max(), d[k], 100 * du.max() / scale_u,
+          % (stem, mu, d[-1], len(d) - 1, steps, slave, 1e3 * du.max(), d[k],
+             100 * du.max() / scale_u,
              scale_u, 100 * tol, 1e3 * np.sqrt((du ** 2).mean()), 100 * df.max() / scale_f,
              scale_f))
     if not du.max() <= tol * scale_u:
@@ -270,7 +278,7 @@ def full(a):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--ci", action="store_true")
-    ap.add_argument("--full", nargs="+", metavar="STEM:MU")
+    ap.add_argument("--full", nargs="+", metavar="STEM:MU[:SLAVE]")
     ap.add_argument("--tol", type=float, default=0.01)
     ap.add_argument("--getfem", nargs="*", default=[])
     ap.add_argument("--grout", nargs="*", default=[])

@@ -19,11 +19,15 @@ ring_contact, ring_ends, node set ring_bottom), read with netCDF4:
 - contact: GetFEM's integral large sliding contact brick (augmented Lagrangian, raytracing on
   the current geometry: Poulios & Renard 2015, the formulation of the literature curve),
   frictionless, or Coulomb with --mu (the slip measured from the displacement at the start of
-  the step), slave = the base top (as Kratos and Grout; --slave ring swaps), multiplier on
+  the step, times --alpha = 1, as GetFEM's own demo), slave = the base top (as Kratos and Grout;
+  --slave ring swaps: with --mu the only choice whose curve converges in --steps,
+  docs/verification.md), multiplier on
   the slave's nodes (QK(2,1) trace); augmentation parameter --r (Pa/m, default E_base / h with
   h = 5 mm the base's element size), release distance --release (default 5 mm);
 - diagnostics only: --moduli BASE INNER OUTER replaces the json's moduli; --base-support roller
-  lets the base bottom slide in x (u_y = 0, u_x = 0 at its middle node);
+  lets the base bottom slide in x (u_y = 0, u_x = 0 at its middle node); --alpha, GetFEM's
+  factor on the slip (>= 20 the Newton fails); --brick-version 1, GetFEM's "more symmetric"
+  brick; --contact-integration nodal, the contact terms on the element nodes;
 - load path: d = 0 ... --d-max in --steps equal steps (Newton from the previous state; a step
   that does not converge is halved, up to 6 times);
 - output: --csv, one row per step: imposed d, the centre's (ring_bottom, the lowest outer node)
@@ -78,6 +82,12 @@ def main():
                     help="Young's moduli in place of the input's (diagnostics only)")
     ap.add_argument("--base-support", default="clamped", choices=("clamped", "roller"),
                     help="roller: the base bottom slides in x (diagnostic only)")
+    ap.add_argument("--alpha", type=float, default=1.0,
+                    help="GetFEM's slip factor (diagnostics; 1: the slip increment of a step)")
+    ap.add_argument("--brick-version", type=int, default=0, choices=(0, 1),
+                    help="GetFEM's contact brick: 0 non-symmetric, 1 more symmetric")
+    ap.add_argument("--contact-integration", default="gauss", choices=("gauss", "nodal"),
+                    help="contact terms on the element's Gauss points or its nodes (diagnostic)")
     ap.add_argument("--csv", default="")
     ap.add_argument("--ring-check", action="store_true")
     ap.add_argument("--max-res", type=float, default=1e-4,
@@ -142,11 +152,17 @@ def main():
     h = 0.25 / 50
     r = a.r if a.r is not None else E["base"] / h
     # Coulomb: the slip is measured from the displacement at the start of the step (w).
-    bodies = {"base": ("ub", mfb, base.mesh, mimb, TOP),
-              "ring": ("ur", mfr, ring.mesh, mimr, CONTACT)}
+    def contact_im(body, mim):  # nodal: the vertex (Newton-Cotes) rule, 2 points per side
+        if a.contact_integration == "gauss":
+            return mim
+        return gf.MeshIm(body.mesh, gf.Integ("IM_NC_PARALLELEPIPED(2,1)"))
+
+    bodies = {"base": ("ub", mfb, base.mesh, contact_im(base, mimb), TOP),
+              "ring": ("ur", mfr, ring.mesh, contact_im(ring, mimr), CONTACT)}
     other = "ring" if a.slave == "base" else "base"
     ind, w = add_large_sliding_contact(gf, md, r, a.release, a.mu, bodies[a.slave],
-                                       bodies[other][:2] + bodies[other][3:], order=a.order)
+                                       bodies[other][:2] + bodies[other][3:], order=a.order,
+                                       alpha=a.alpha, version=a.brick_version)
 
     # The centre's y dof (and the inner bottom node's, when the mesh names it), the ring-end
     # y dofs (for the reaction). A vector MeshFem interleaves the components (x, y per node).

@@ -7,9 +7,10 @@
 #   Grout  double_arch.yaml on Kratos' mesh and on a mesh twice as fine,
 #   GetFEM QK(2,1) on both meshes (same elements as Grout), QK(2,2) on Kratos' mesh, and
 #          QK(2,1) with the base's E halved (a diagnostic),
-#   and both codes with mu = 0.5 on Kratos' mesh,
+#   and both codes with mu = 0.5 on Kratos' mesh (GetFEM with slave = base, as Grout, and with
+#   slave = ring, the one whose frictional curve converges in its steps),
 # then getfem_compare.py: numbers, getfem_double_arch.png and getfem_double_arch_mu05.png. About
-# 3.5 min CPU in all (Grout 11 + 35-90 + 9 s, GetFEM 11 + 50 + 61 + 11 + 13 s). Needs
+# 3.7 min CPU in all (Grout 11 + 35-90 + 9 s, GetFEM 11 + 50 + 61 + 11 + 13 + 13 s). Needs
 # python3-getfem.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -37,6 +38,7 @@ $g --mesh double_arch_fine.exo --csv getfem_fine_q1.csv > getfem_fine_q1.log
 $g --mesh double_arch.exo --order 2 --csv getfem_q2.csv > getfem_q2.log
 $g --mesh double_arch.exo --moduli 1.5e8 1e11 1e9 --csv getfem_base_half.csv > getfem_base_half.log
 $g --mesh double_arch.exo --mu 0.5 --csv getfem_mu05_q1.csv > getfem_mu05_q1.log
+$g --mesh double_arch.exo --mu 0.5 --slave ring --csv getfem_mu05_q1_ring.csv > getfem_mu05_q1_ring.log
 $g --mesh double_arch_fine.exo --d-max 0.001 --steps 1 --ring-check | grep "ring check"
 $g --mesh double_arch_fine.exo --order 2 --d-max 0.001 --steps 1 --ring-check | grep "ring check"
 PYTHONPATH=$root/tools MPLBACKEND=Agg $py "$here/getfem_compare.py" \
@@ -49,4 +51,5 @@ PYTHONPATH=$root/tools MPLBACKEND=Agg $py "$here/getfem_compare.py" \
 PYTHONPATH=$root/tools MPLBACKEND=Agg $py "$here/getfem_compare.py" --frictional \
   --grout "double_arch_mu05:QUAD4, Kratos' mesh, mu = 0.5" \
   --getfem "getfem_mu05_q1.csv:QK(2,1), Kratos' mesh, mu = 0.5:double_arch_mu05" \
+           "getfem_mu05_q1_ring.csv:QK(2,1), Kratos' mesh, mu = 0.5, slave ring:double_arch_mu05" \
   --plot getfem_double_arch_mu05.png

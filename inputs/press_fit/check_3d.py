@@ -14,11 +14,18 @@ Runs (np<r>/STEM.csv; reactions per metre of thickness / 1000 = the 2D figure's 
   top only: its faces z = 0 and 0.25 are free, so the block is neither plane strain nor plane
   stress). Printed beside the 2D plane-strain and plane-stress runs (--plane-stress, default
   press_fit_plane_stress_ci), with every step converged; not held to the plane-strain targets.
-- --figure: also check the --kratos run against solution_3d.png (Kratos' base reaction in N,
-  read off the figure: peak 3.81e4 at t = 0.92, just below the 4e4 grid line; no plateau: the
-  curve falls from the peak to 0.51e4 at t = 1.4; at t = 1.3, about 1.2e4) -- peak and the value at
-  t = 1.3 within 10 % (#18). Not in CI: the figure is 150 times below Grout's base reaction
-  and of another shape (docs/verification.md #18), so this check fails.
+- --figure: also check the run --figure-run (default press_fit_3d_kratos_time: Kratos' 3D
+  supports on Kratos' time axis, dt = 0.005 to t = 1.4, np1/STEM.e) against solution_3d.png,
+  digitised into reference_solution_3d.csv (digitize_solution_3d.py). The figure is not the total
+  base reaction (150-350 times smaller, another shape): the Examples' README calls it "the
+  reaction in the base support most western points", i.e. the horizontal reaction of the base
+  nodes at x = 0 (y = 0; three nodes, z = 0, 0.125, 0.25), summed here. Checked (#18, 10 %):
+  the spike after the interference (largest value for t <= 0.05), the decay (t = 0.1 and 0.2),
+  the dip (smallest value for 0.2 < t < 0.5), the peak (largest value after t = 0.5) and the
+  values at t = 1.3 and 1.4, signed (the figure's values are all positive). Not in CI: measured,
+  the first phase (block over the left end) matches within 8 %, but after the block reaches the
+  ramp Grout's westernmost reaction changes sign and peaks at 1.35e4 at t = 1.0 while the figure
+  rises to 3.81e4 at t = 0.92, so this check fails (docs/verification.md #18).
 """
 import argparse
 import csv
@@ -32,7 +39,6 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 THICKNESS = 0.25
 TOL_2D = 0.03  # #18: the plateau against the 2D plane-strain run and the strip
 TOL_FIGURE = 0.10  # #18: against solution_3d.png
-FIGURE_PEAK, FIGURE_AT_1_3 = 3.81e4, 1.2e4  # N, read off solution_3d.png (docstring)
 
 ap = argparse.ArgumentParser()
 ap.add_argument("--held", default="press_fit_3d_plane_strain_ci")
@@ -41,6 +47,7 @@ ap.add_argument("--two-d", default="press_fit_ci")
 ap.add_argument("--plane-stress", default="press_fit_plane_stress_ci")
 ap.add_argument("--ranks", type=int, nargs="+", default=[1, 2])
 ap.add_argument("--figure", action="store_true")
+ap.add_argument("--figure-run", default="press_fit_3d_kratos_time")
 a = ap.parse_args()
 
 spec = importlib.util.spec_from_file_location("press_fit_check", os.path.join(HERE, "check.py"))
@@ -59,6 +66,56 @@ def curve(stem, np_, node_set, per_metre):
 def summary(s, rx):
     k = int(np.argmax(rx))
     return rx[k], s[k], rx[s > 137].mean()
+
+
+def westernmost_reaction(stem):
+    """(times, summed reaction_x of the base nodes at x = 0, y = 0) of np1/STEM.e."""
+    from grout_results import Results
+
+    r = Results("np1/%s.e" % stem)
+    x = np.asarray(r.coordinates())
+    x = x.T if x.shape[0] == 3 else x
+    west = np.nonzero((np.abs(x[:, 0]) < 1e-9) & (np.abs(x[:, 1]) < 1e-9))[0]
+    if len(west) != 3:
+        raise SystemExit("np1/%s.e: %d base nodes at x = 0, expected 3" % (stem, len(west)))
+    t = np.asarray(r.times())
+    return t, np.array([r.nodal("reaction_x", k)[west].sum() for k in range(len(t))])
+
+
+def figure_check(stem):
+    """solution_3d.png (reference_solution_3d.csv) against the westernmost base reaction of
+    np1/STEM.e (docstring, --figure); returns the failures."""
+    ref = np.loadtxt(os.path.join(HERE, "reference_solution_3d.csv"), delimiter=",", comments="#",
+                     skiprows=3)
+    tf, rf = ref[:, 0], ref[:, 1]
+    t, rg = westernmost_reaction(stem)
+    out = []
+
+    def extreme(tt, r, lo, hi, pick):
+        sel = np.nonzero((tt > lo) & (tt <= hi))[0]
+        k = sel[pick(r[sel])]
+        return r[k], tt[k]
+
+    rows = [("spike, t <= 0.05", extreme(t, rg, 0, 0.05, np.argmax),
+             extreme(tf, rf, 0, 0.05, np.argmax))]
+    for tq in (0.1, 0.2):
+        rows.append(("t = %g" % tq, (np.interp(tq, t, rg), tq), (np.interp(tq, tf, rf), tq)))
+    rows.append(("dip, 0.2 < t < 0.5", extreme(t, rg, 0.2, 0.5, np.argmin),
+                 extreme(tf, rf, 0.2, 0.5, np.argmin)))
+    rows.append(("peak, t > 0.5", extreme(t, rg, 0.5, 2, np.argmax),
+                 extreme(tf, rf, 0.5, 2, np.argmax)))
+    for tq in (1.3, 1.4):
+        rows.append(("t = %g" % tq, (np.interp(tq, t, rg), tq), (np.interp(tq, tf, rf), tq)))
+    print("solution_3d.png against the westernmost base reaction (x = 0, y = 0, 3 nodes) of "
+          "np1/%s.e (N):" % stem)
+    for what, (g, tg), (f, tfig) in rows:
+        err = g / f - 1
+        print("  %-20s Grout %10.4g at t = %.3f   figure %10.4g at t = %.3f   %+7.1f %%"
+              % (what, g, tg, f, tfig, 100 * err))
+        if not abs(err) <= TOL_FIGURE:
+            out.append("%s: westernmost base reaction, %s: %.4g N vs solution_3d.png %.4g N "
+                       "(%+.0f %%, #18: 10 %%)" % (stem, what, g, f, 100 * err))
+    return out
 
 
 failures = []
@@ -106,17 +163,12 @@ if a.kratos:
     if abs(t[-1] - 1.3) > 1e-9:
         failures.append("%s stopped at t = %g" % (a.kratos, t[-1]))
     _, _, base = curve(a.kratos, 1, "displacement_displacement_auto2", False)
-    print("3D Kratos' supports, base reaction: peak %.4g N at t = %.3f, %.4g N at t = 1.3; "
-          "solution_3d.png: peak %.3g N, %.3g N at t = 1.3"
-          % (base.max(), t[int(np.argmax(base))], base[-1], FIGURE_PEAK, FIGURE_AT_1_3))
-    if a.figure:
-        for what, value, ref in (("peak", base.max(), FIGURE_PEAK), ("t = 1.3", base[-1],
-                                                                       FIGURE_AT_1_3)):
-            if not abs(value / ref - 1) <= TOL_FIGURE:
-                failures.append("%s: base reaction %s %.4g N vs solution_3d.png %.3g N (%+.0f %%, "
-                                "#18: 10 %%)" % (a.kratos, what, value, ref,
-                                                 100 * (value / ref - 1)))
+    print("3D Kratos' supports, total base reaction: peak %.4g N at t = %.3f, %.4g N at t = 1.3 "
+          "(solution_3d.png peaks at 3.81e4 N: it is not this sum)"
+          % (base.max(), t[int(np.argmax(base))], base[-1]))
 
+if a.figure:
+    failures += figure_check(a.figure_run)
 if failures:
     print("FAILED:\n  " + "\n  ".join(failures))
     sys.exit(1)

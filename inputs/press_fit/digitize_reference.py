@@ -54,22 +54,26 @@ def equally_spaced(candidates, n):
     return list(best)
 
 
-def digitize(path):
+def digitize(path, x_ticks=(0.0, 50.0, 100.0, 150.0), y_ticks=(0.0, 1e4, 2e4, 3e4, 4e4),
+             legend=(480, 265)):
+    """(points (x, y) of the blue curve, (x grid columns, y grid rows, x map, y map)); the
+    grid lines sit at x_ticks and y_ticks; legend = (right column, bottom row) of a legend box
+    in the upper left whose blue pixels are skipped ((0, 0): none)."""
     import matplotlib.image as mpimg
 
     rgb = (mpimg.imread(path)[:, :, :3] * 255).round()
     gray = (rgb.max(axis=2) - rgb.min(axis=2) <= 2) & (rgb[:, :, 0] >= 185) & (rgb[:, :, 0] <= 200)
-    xs = equally_spaced(runs(gray.sum(axis=0), 100), 4)  # steps 0, 50, 100, 150
-    ys = equally_spaced(runs(gray.sum(axis=1), 100), 5)[::-1]  # 0 .. 4e4, bottom up
-    ax = np.polyfit(xs, [0.0, 50.0, 100.0, 150.0], 1)
-    ay = np.polyfit(ys, [0.0, 1e4, 2e4, 3e4, 4e4], 1)
-    for name, a, px, v in (("x", ax, xs, [0, 50, 100, 150]), ("y", ay, ys, [0, 1e4, 2e4, 3e4, 4e4])):
+    xs = equally_spaced(runs(gray.sum(axis=0), 100), len(x_ticks))  # left to right
+    ys = equally_spaced(runs(gray.sum(axis=1), 100), len(y_ticks))[::-1]  # bottom up
+    ax = np.polyfit(xs, list(x_ticks), 1)
+    ay = np.polyfit(ys, list(y_ticks), 1)
+    for name, a, px, v in (("x", ax, xs, list(x_ticks)), ("y", ay, ys, list(y_ticks))):
         if np.abs(np.polyval(a, px) - v).max() > 0.01 * (v[-1] - v[0]):
             raise RuntimeError("%s: %s grid lines %s are not equally spaced" % (path, name, px))
     b = rgb[:, :, 2] - np.maximum(rgb[:, :, 0], rgb[:, :, 1])
     blue = (rgb[:, :, 2] > 150) & (rgb[:, :, 0] < 120) & (rgb[:, :, 1] < 120)
     rows = np.arange(rgb.shape[0])
-    legend_right, legend_bottom = 480, 265  # legend box (upper left)
+    legend_right, legend_bottom = legend  # legend box (upper left)
     points = []
     for col in range(rgb.shape[1]):
         sel = blue[:, col] & ~((col < legend_right) & (rows < legend_bottom))
