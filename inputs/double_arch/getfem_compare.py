@@ -8,7 +8,7 @@ Usage:
       (frictionless, d to 0.024 in 8 steps) and np1/double_arch_mu05_ci.e (mu = 0.5, 16 steps;
       friction depends on the path, so the same steps) and compares with the np1/ and np2/
       runs step by step. Exit 77 (ctest: skipped) when python3-getfem is missing.
-  getfem_compare.py --full STEM:MU[:SLAVE] ... [--tol 0.01]
+  getfem_compare.py --full STEM:MU[:SLAVE] ... [--tol 0.01] [--mesh double_arch.exo]
       docs/verification.md #14's "Grout within 1 % of GetFEM on the same mesh and law over the
       path" (ctest double_arch/getfem_full, after the 1-rank runs of double_arch.yaml and
       double_arch_mu05.yaml): runs getfem_double_arch.py on double_arch.exo with friction
@@ -145,9 +145,9 @@ def ci_case(stem, mu, tol, failures):
     return 0
 
 
-def full_case(spec, tol, failures):
-    """Row 14: GetFEM over the whole path of np1/STEM.e (STEM:MU[:SLAVE]), within tol of max |u|;
-    SLAVE (base, the default, or ring) is GetFEM's slave side."""
+def full_case(spec, tol, failures, mesh="double_arch.exo"):
+    """Row 14: GetFEM over the whole path of np1/STEM.e (STEM:MU[:SLAVE]) on MESH (Grout's),
+    within tol of max |u|; SLAVE (base, the default, or ring) is GetFEM's slave side."""
     stem, _, rest = spec.partition(":")
     mu, _, slave = rest.partition(":")
     mu = float(mu or 0.0)
@@ -158,7 +158,7 @@ def full_case(spec, tol, failures):
         steps = int(round(d[-1] / 0.0005))
     csv_out = "getfem_full_%s.csv" % stem
     cmd = [sys.executable, os.path.join(HERE, "getfem_double_arch.py"), "--mesh",
-           "double_arch.exo", "--d-max", repr(d[-1]), "--steps", str(steps), "--mu", repr(mu),
+           mesh, "--d-max", repr(d[-1]), "--steps", str(steps), "--mu", repr(mu),
            "--slave", slave, "--csv", csv_out]
     rc = subprocess.call(cmd)
     if rc == SKIP:
@@ -188,7 +188,7 @@ def full_case(spec, tol, failures):
 def full_check(a):
     failures = []
     for spec in a.full:
-        if full_case(spec, a.tol, failures) == SKIP:
+        if full_case(spec, a.tol, failures, a.mesh) == SKIP:
             return SKIP
     if failures:
         print("FAILED:\n  " + "\n  ".join(failures))
@@ -280,6 +280,8 @@ def main():
     ap.add_argument("--ci", action="store_true")
     ap.add_argument("--full", nargs="+", metavar="STEM:MU[:SLAVE]")
     ap.add_argument("--tol", type=float, default=0.01)
+    ap.add_argument("--mesh", default="double_arch.exo",
+                    help="--full: the Exodus mesh of Grout's runs, for GetFEM")
     ap.add_argument("--getfem", nargs="*", default=[])
     ap.add_argument("--grout", nargs="*", default=[])
     ap.add_argument("--plot")
