@@ -7,9 +7,10 @@
 // contact, Jacobian, linear solve; min/mean/max over ranks) and, before the first step,
 // which mesh the run reads and what each rank holds of it.
 //
-// The mesh: a static run without contact, on a direct solver and with one results file, reads
-// the distributed mesh (each rank its part, drivers/mesh_choice.hpp); any other run the
-// replicated mesh. GROUT_MESH=replicated keeps the replicated mesh for every run.
+// The mesh: a static run without contact or with frictionless or frictional contact, on a
+// direct solver and with one results file, reads the distributed mesh (each rank its part,
+// drivers/mesh_choice.hpp); any other run the replicated mesh. GROUT_MESH=replicated keeps the
+// replicated mesh for every run.
 //
 // Exit codes: 0 done, 2 bad input (message names the file and key or mesh entity; also an
 // output that cannot be written), 3 a step did not converge (every earlier step is already
@@ -46,6 +47,7 @@
 #include "nonlinear/mechanics_problem.hpp"
 #include "nonlinear/newton.hpp"
 #include "nonlinear/system_layout.hpp"
+#include "parallel/distributed_bodies.hpp"
 #include "parallel/distributed_mesh.hpp"
 #include "parallel/exodus_slices.hpp"
 
@@ -182,7 +184,20 @@ void run(const std::string& input_path, const std::string& output_dir, bool time
           run_mesh.num_nodes(), run_mesh.num_elements(), run_mesh.replicated_reason.c_str(),
           held.c_str());
   }
-  MechanicsProblem problem(solid, mesh, input);
+  // Contact on the distributed mesh: global numbers, set positions and bodies (collective).
+  std::optional<ContactMeshPart> contact_part;
+  if (distributed && !input.contact.empty()) {
+    ContactMeshPart& part = contact_part.emplace();
+    part.global_num_nodes = distributed->global_num_nodes;
+    part.rank = distributed->rank;
+    part.node_gid = &distributed->node_gid;
+    part.element_owner = &distributed->element_owner;
+    part.element_gid = &distributed->element_gid;
+    part.side_set_position = &distributed->side_set_position;
+    part.side_set_global_size = &distributed->side_set_global_size;
+    part.node_body = distributed_node_bodies(*comm, *distributed);
+  }
+  MechanicsProblem problem(solid, mesh, input, contact_part ? &*contact_part : nullptr);
   if (timers) {  // collective
     const std::string held = problem.describe_contact_holdings();
     if (root && !held.empty()) std::printf("%s", held.c_str());

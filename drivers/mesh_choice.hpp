@@ -3,10 +3,11 @@
 // mesh (parallel/distributed_mesh.hpp) when every piece the run uses has its distributed form,
 // the replicated mesh (every rank holds all of it) otherwise.
 //
-// Distributed so far: a static run (load stepping) without contact, solved by a direct
-// linear solver (MUMPS or KLU2, named or chosen by `type: auto`), with one Exodus file
-// (`output/parallel: single`) and the CSV summary. What keeps the replicated mesh: contact
-// (the interfaces read set entries and coordinates across the mesh), dynamics (initial
+// Distributed so far: a static run (load stepping), without contact or with frictionless and
+// frictional pairs, solved by a direct linear solver (MUMPS or KLU2, named or chosen by `type:
+// auto` for the most unknowns the run can have), with one Exodus file (`output/parallel:
+// single`) and the CSV summaries. What keeps the replicated mesh: self-contact (the sides
+// are chosen over the whole surface) and tied contact (not yet compared), dynamics (initial
 // velocities, the mass matrix's layout), the iterative solver (every node's coordinates and
 // body for MueLu), `output/parallel: per_rank` (its pieces are cut from the whole mesh).
 //
