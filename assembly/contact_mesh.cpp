@@ -23,7 +23,7 @@ GlobalIndex ContactMesh::global_node(GlobalIndex n) const {
 }
 
 GlobalIndex ContactMesh::body(GlobalIndex n) const {
-  if (part_) return part_->node_body[std::size_t(n)];
+  if (part_) return part_->node_body.empty() ? -1 : part_->node_body[std::size_t(n)];
   if (replicated_bodies_.empty()) replicated_bodies_ = node_bodies(mesh_);
   return replicated_bodies_[std::size_t(n)];
 }

@@ -33,7 +33,7 @@ struct ContactMeshPart {
   /// Per side set, per local entry: its position in the file's set; the file's set sizes.
   const std::vector<std::vector<GlobalIndex>>* side_set_position = nullptr;
   const std::vector<GlobalIndex>* side_set_global_size = nullptr;
-  /// Per local node: the lowest global node of its body.
+  /// Per local node: the lowest global node of its body (empty: bodies unknown, -1).
   std::vector<GlobalIndex> node_body;
 };
 

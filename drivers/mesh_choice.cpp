@@ -18,16 +18,17 @@ MeshChoice choose_mesh(const Input& input, const std::function<long long()>& num
   }
   if (input.output.parallel == OutputParallel::per_rank)
     return replicated("output/parallel: per_rank");
-  // The unknowns: the displacements, num_nodes * dim, and with contact the multipliers, dim
-  // per slave node (at most as many again): `auto` must pick a direct solver for the most.
-  const LinearSolverType type = input.solver.linear.type;
-  const long long most_unknowns =
-      num_nodes() * input.model.dimension * (input.contact.empty() ? 1 : 2);
-  const bool iterative = type == LinearSolverType::belos ||
-                         (type == LinearSolverType::automatic &&
-                          auto_linear_solver_type(most_unknowns, input.model.dimension) == "belos");
+  // The unknowns: the displacements, num_nodes * dim; with contact the multipliers come on
+  // top, which the driver counts on the distributed mesh (iterative_for_unknowns).
+  const bool iterative = input.solver.linear.type == LinearSolverType::belos ||
+                         iterative_for_unknowns(input, num_nodes() * input.model.dimension);
   if (iterative) return replicated("the iterative linear solver");
   return {true, ""};
+}
+
+bool iterative_for_unknowns(const Input& input, long long unknowns) {
+  return input.solver.linear.type == LinearSolverType::automatic &&
+         auto_linear_solver_type(unknowns, input.model.dimension) == "belos";
 }
 
 bool replicated_mesh_forced() {

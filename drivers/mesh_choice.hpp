@@ -5,11 +5,13 @@
 //
 // Distributed so far: a static run (load stepping), without contact or with frictionless and
 // frictional pairs, solved by a direct linear solver (MUMPS or KLU2, named or chosen by `type:
-// auto` for the most unknowns the run can have), with one Exodus file (`output/parallel:
-// single`) and the CSV summaries. What keeps the replicated mesh: self-contact (the sides
-// are chosen over the whole surface) and tied contact (not yet compared), dynamics (initial
-// velocities, the mass matrix's layout), the iterative solver (every node's coordinates and
-// body for MueLu), `output/parallel: per_rank` (its pieces are cut from the whole mesh).
+// auto`), with one Exodus file (`output/parallel: single`) and the CSV summaries. With contact
+// under `type: auto` the driver counts the multipliers on the distributed mesh and reads the
+// replicated mesh instead where they take the unknowns to the iterative solver. What keeps the
+// replicated mesh: self-contact (the sides are chosen over the whole surface) and tied contact (not
+// yet compared), dynamics (initial velocities, the mass matrix's layout), the iterative solver
+// (every node's coordinates and body for MueLu), `output/parallel: per_rank` (its pieces are cut
+// from the whole mesh).
 //
 // The environment variable GROUT_MESH=replicated keeps the replicated mesh for any run (to
 // compare the two paths: tools/compare_results, the ctests */mesh_paths/*).
@@ -31,6 +33,9 @@ struct MeshChoice {
 /// `forced_replicated`: GROUT_MESH=replicated.
 MeshChoice choose_mesh(const Input& input, const std::function<long long()>& num_nodes,
                        bool forced_replicated);
+
+/// Whether `type: auto` picks the iterative solver for `unknowns` (false for a named type).
+bool iterative_for_unknowns(const Input& input, long long unknowns);
 
 /// Whether GROUT_MESH=replicated is set; any other value than replicated or distributed (the
 /// default) is an input error naming it.
