@@ -132,55 +132,6 @@ ContactSurface build_contact_surface(const Mesh& mesh, const Input& input,
   return s;
 }
 
-LocalContactFaces build_local_contact_surface(const Mesh& mesh, const Input& input,
-                                              const ContactInput& contact,
-                                              const std::function<bool(GlobalIndex)>& owns) {
-  LocalContactFaces local;
-  ContactSurface& s = local.surface;
-  // The whole surfaces (the mesh is replicated, so every rank finds the same answer).
-  const char* const slave_key = contact.self ? "self" : "slave";
-  if (contact.self)
-    faces_of(mesh, input, contact, slave_key,
-             contact_side_sets(contact, false));  // exists, not empty
-  else
-    check_bodies(mesh, input, contact, faces_of(mesh, input, contact, "slave", {contact.slave}),
-                 faces_of(mesh, input, contact, "master", {contact.master}));
-  s.name = contact.name;
-  s.self = contact.self;
-  s.type = contact.type;
-  s.dimension = mesh.dimension;
-  const auto has_owned = [&](const GlobalIndex* nodes, int n) {
-    for (int a = 0; a < n; ++a)
-      if (owns(nodes[a])) return true;
-    return false;
-  };
-  // Nodes of the faces with an owned node; then every face touching one of them.
-  const std::vector<GlobalIndex> near = unique_nodes(
-      faces_of(mesh, input, contact, slave_key, contact_side_sets(contact, false), has_owned));
-  s.slave = faces_of(mesh, input, contact, slave_key, contact_side_sets(contact, false),
-                     [&](const GlobalIndex* nodes, int n) {
-                       for (int a = 0; a < n; ++a)
-                         if (std::binary_search(near.begin(), near.end(), nodes[a])) return true;
-                       return false;
-                     });
-  s.integrate.resize(s.slave.size());
-  for (std::size_t f = 0; f < s.slave.size(); ++f)
-    s.integrate[f] = has_owned(s.slave.nodes[f].data(), s.slave.num_nodes[f]);
-  index_slave_nodes(s);
-  local.owned_master = faces_of(mesh, input, contact, "master", contact_side_sets(contact, true),
-                                [&](const GlobalIndex* nodes, int n) {
-                                  for (int a = 0; a < n && !contact.self; ++a) {
-                                    // an owned slave node?
-                                    if (!owns(nodes[a]) || !s.slave_index.count(nodes[a])) continue;
-                                    if (local.shared_node < 0 || nodes[a] < local.shared_node)
-                                      local.shared_node = nodes[a];
-                                  }
-                                  return owns(*std::min_element(nodes, nodes + n));
-                                });
-  s.nodes = s.slave_nodes;
-  return local;
-}
-
 void set_master_faces(ContactSurface& s, SurfaceFaces master) {
   s.master = std::move(master);
   const std::vector<GlobalIndex> master_nodes = unique_nodes(s.master);

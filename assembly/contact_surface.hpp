@@ -1,7 +1,7 @@
 #pragma once
 // Slave and master surfaces of a contact interface, from the side sets the input names:
 // the whole interface (build_contact_surface), or the part one rank evaluates in distributed
-// contact (build_local_contact_surface, then set_master_faces with the faces the parallel
+// contact (assembly/contact_sides.hpp, then set_master_faces with the faces the parallel
 // search ghosted, assembly/contact_distribution.hpp).
 
 #include <array>
@@ -49,8 +49,8 @@ struct ContactSurface {
 ContactSurface build_contact_surface(const Mesh& mesh, const Input& input,
                                      const ContactInput& contact);
 
-/// The part of an interface that one rank evaluates, with `owns(node)` true for the nodes
-/// it owns:
+/// The part of an interface that one rank evaluates (assembly/contact_sides.hpp builds it),
+/// with `owns(node)` true for the nodes it owns:
 /// - surface.slave: the slave faces with an owned node (integrate = 1), then, for the nodal
 ///   normals of their nodes, every other slave face around those nodes (integrate = 0), in
 ///   side-set order; surface.master is empty (set_master_faces);
@@ -63,9 +63,6 @@ struct LocalContactFaces {
   SurfaceFaces owned_master;
   GlobalIndex shared_node = -1;
 };
-LocalContactFaces build_local_contact_surface(const Mesh& mesh, const Input& input,
-                                              const ContactInput& contact,
-                                              const std::function<bool(GlobalIndex)>& owns);
 
 /// The input error for a node (0-based) on both surfaces of `contact`.
 std::string shared_node_message(const Input& input, const ContactInput& contact, GlobalIndex node);

@@ -7,9 +7,10 @@
 // contact, Jacobian, linear solve; min/mean/max over ranks) and, before the first step,
 // which mesh the run reads and what each rank holds of it.
 //
-// The mesh: a static run without contact, with one results file, reads the distributed mesh
-// (each rank its part, drivers/mesh_choice.hpp); any other run the replicated mesh.
-// GROUT_MESH=replicated keeps the replicated mesh for every run.
+// The mesh: a static run without contact or with frictionless or frictional contact, with one
+// results file, reads the distributed mesh (each rank its part, drivers/mesh_choice.hpp; with
+// contact on a direct solver); any other run the replicated mesh. GROUT_MESH=replicated keeps
+// the replicated mesh for every run.
 //
 // Exit codes: 0 done, 2 bad input (message names the file and key or mesh entity; also an
 // output that cannot be written), 3 a step did not converge (every earlier step is already
@@ -29,9 +30,11 @@
 #include <optional>
 
 #include "assembly/agree_on_errors.hpp"
+#include "assembly/contact_mesh.hpp"
 #include "assembly/distribute_mesh.hpp"
 #include "assembly/initial_conditions.hpp"
 #include "assembly/mass_matrix.hpp"
+#include "assembly/raw_mpi_comm.hpp"
 #include "assembly/solid_problem.hpp"
 #include "drivers/heap_settings.hpp"
 #include "drivers/mesh_choice.hpp"
@@ -88,11 +91,45 @@ struct RunMesh {
   }
 };
 
+/// What contact reads of a distributed mesh (assembly/contact_mesh.hpp), bodies not set.
+ContactMeshPart contact_mesh_part(const DistributedMesh& mesh) {
+  ContactMeshPart part;
+  part.global_num_nodes = mesh.global_num_nodes;
+  part.rank = mesh.rank;
+  part.node_gid = &mesh.node_gid;
+  part.element_owner = &mesh.element_owner;
+  part.element_gid = &mesh.element_gid;
+  part.side_set_position = &mesh.side_set_position;
+  part.side_set_global_size = &mesh.side_set_global_size;
+  return part;
+}
+
+/// Collective: the slave nodes of every contact pair of `input` on the distributed mesh (the
+/// slave side sets gathered, as the interfaces gather them).
+GlobalIndex contact_slave_nodes(const DistributedMesh& mesh, const Input& input, const Comm& comm) {
+  const ContactMeshPart part = contact_mesh_part(mesh);  // only the faces' nodes are read
+  const ContactMesh contact_mesh(mesh.local, part, raw_mpi_comm(comm));
+  GlobalIndex count = 0;
+  for (const ContactInput& c : input.contact) {
+    std::vector<GlobalIndex> nodes;
+    for (const std::string& set : contact_side_sets(c, false)) {
+      const SideFaces faces = contact_mesh.all_faces(set);
+      for (std::size_t f = 0; f < faces.size(); ++f)
+        nodes.insert(nodes.end(), faces.nodes[f].begin(),
+                     faces.nodes[f].begin() + std::max(faces.num_nodes[f], 0));
+    }
+    std::sort(nodes.begin(), nodes.end());
+    count += GlobalIndex(std::unique(nodes.begin(), nodes.end()) - nodes.begin());
+  }
+  return count;
+}
+
 /// Collective. Reads the mesh the run can use (drivers/mesh_choice.hpp) and checks the input
 /// against it; every rank agrees on the outcome.
 RunMesh read_mesh(const Input& input, bool forced_replicated,
                   const Teuchos::RCP<const Comm>& comm) {
-  const MeshChoice choice = choose_mesh(input, forced_replicated);
+  const MeshChoice choice = choose_mesh(
+      input, [&] { return read_mesh_header(*comm, input.mesh_file).num_nodes; }, forced_replicated);
   RunMesh run_mesh;
   if (!choice.distributed) {
     run_mesh.replicated_reason = choice.reason;
@@ -112,6 +149,19 @@ RunMesh read_mesh(const Input& input, bool forced_replicated,
                                 mesh.rank,     mesh.side_set_global_size, mesh.node_set_global_size,
                                 x_max_all};
   agree_on_errors(*comm, [&] { check_input_against_mesh(input, mesh.local, numbers); });
+  // With contact under `type: auto` the multipliers count too (dim per slave node, as
+  // ContactInterface numbers them): where they take the unknowns to the iterative solver the
+  // run reads the replicated mesh after all.
+  if (!input.contact.empty() &&
+      iterative_for_unknowns(input,
+                             (mesh.global_num_nodes + contact_slave_nodes(mesh, input, *comm)) *
+                                 mesh.local.dimension)) {
+    run_mesh.distributed.reset();
+    run_mesh.replicated_reason = "contact on the iterative linear solver";
+    run_mesh.replicated =
+        read_and_broadcast_mesh(*comm, [&] { return read_exodus(input.mesh_file); });
+    agree_on_errors(*comm, [&] { check_input_against_mesh(input, *run_mesh.replicated); });
+  }
   return run_mesh;
 }
 
@@ -199,7 +249,13 @@ void run(const std::string& input_path, const std::string& output_dir, bool time
           run_mesh.num_nodes(), run_mesh.num_elements(), run_mesh.replicated_reason.c_str(),
           held.c_str());
   }
-  MechanicsProblem problem(solid, mesh, input);
+  // Contact on the distributed mesh: global numbers, set positions and bodies (collective).
+  std::optional<ContactMeshPart> contact_part;
+  if (distributed && !input.contact.empty()) {
+    contact_part = contact_mesh_part(*distributed);
+    contact_part->node_body = distributed_node_body_labels(*comm, *distributed);
+  }
+  MechanicsProblem problem(solid, mesh, input, contact_part ? &*contact_part : nullptr);
   if (timers) {  // collective
     const std::string held = problem.describe_contact_holdings();
     if (root && !held.empty()) std::printf("%s", held.c_str());

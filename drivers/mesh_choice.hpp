@@ -3,17 +3,22 @@
 // mesh (parallel/distributed_mesh.hpp) when every piece the run uses has its distributed form,
 // the replicated mesh (every rank holds all of it) otherwise.
 //
-// Distributed so far: a static run (load stepping) without contact, on any linear solver
-// (MUMPS, KLU2 or Belos + MueLu, named or chosen by `type: auto`; the iterative path takes its
-// rows' nodes' coordinates and the bodies labelled across the ranks,
-// parallel/distributed_bodies.hpp), with one Exodus file (`output/parallel: single`) and the
-// CSV summary. What keeps the replicated mesh: contact (the interfaces read set entries and
-// coordinates across the mesh), dynamics (initial velocities, the mass matrix's layout),
+// Distributed so far: a static run (load stepping), without contact or with frictionless and
+// frictional pairs, with one Exodus file (`output/parallel: single`) and the CSV summaries.
+// Without contact on any linear solver (MUMPS, KLU2 or Belos + MueLu, named or chosen by `type:
+// auto`; the iterative path takes its rows' nodes' coordinates and the bodies labelled across
+// the ranks, parallel/distributed_bodies.hpp); with contact on a direct solver (MUMPS or KLU2):
+// under `type: auto` the driver counts the multipliers on the distributed mesh and reads the
+// replicated mesh instead where they take the unknowns to the iterative solver. What keeps the
+// replicated mesh: self-contact (the sides are chosen over the whole surface) and tied contact
+// (not yet compared), contact on the iterative solver (MueLu's layout then takes every node's
+// coordinates and body), dynamics (initial velocities, the mass matrix's layout),
 // `output/parallel: per_rank` (its pieces are cut from the whole mesh).
 //
 // The environment variable GROUT_MESH=replicated keeps the replicated mesh for any run (to
 // compare the two paths: tools/compare_results, the ctests */mesh_paths/*).
 
+#include <functional>
 #include <string>
 
 #include "io/input.hpp"
@@ -25,8 +30,14 @@ struct MeshChoice {
   std::string reason;  ///< why the replicated mesh (empty when distributed)
 };
 
-/// The choice for `input`; `forced_replicated`: GROUT_MESH=replicated.
-MeshChoice choose_mesh(const Input& input, bool forced_replicated);
+/// The choice for `input`; `num_nodes()` gives the mesh's node count (from the file's header),
+/// asked only under `type: auto`, which picks its solver by the unknown count;
+/// `forced_replicated`: GROUT_MESH=replicated.
+MeshChoice choose_mesh(const Input& input, const std::function<long long()>& num_nodes,
+                       bool forced_replicated);
+
+/// Whether `type: auto` picks the iterative solver for `unknowns` (false for a named type).
+bool iterative_for_unknowns(const Input& input, long long unknowns);
 
 /// Whether a run without contact on a mesh of `num_nodes` nodes solves its systems with Belos +
 /// MueLu: `type: belos`, or `auto` at or above its threshold (nonlinear/linear_solver.hpp; the

@@ -60,6 +60,7 @@ ResultsOutput::ResultsOutput(const Mesh& mesh, const Input& input, const SolidPr
       input_(input),
       solid_(solid),
       problem_(problem),
+      distributed_(distributed),
       root_(solid.comm()->getRank() == 0) {
   const int dim = mesh.dimension;
   std::vector<std::string> nodal;
@@ -155,11 +156,6 @@ void ResultsOutput::open_files(const Input& input, const std::vector<std::string
       profile_.write(
           "step,time,node,x,y,contact_pressure,normal_gap,contact_status,lm_x,lm_y,"
           "slip_x,slip_y\n");
-      profile_nodes_ = problem_.slave_nodes();
-      const auto& X = mesh_.coordinates;
-      std::sort(profile_nodes_.begin(), profile_nodes_.end(), [&](GlobalIndex a, GlobalIndex b) {
-        return X[2 * a] < X[2 * b] || (X[2 * a] == X[2 * b] && X[2 * a + 1] < X[2 * b + 1]);
-      });
     }
   }
 }
@@ -216,7 +212,29 @@ void ResultsOutput::write(const ConvergedStep& step) {
   // The 2D contact profile: every slave node's results, on rank 0.
   std::vector<std::vector<double>> profile;  // rank 0: [field][received entry]
   if (profile_wanted_) {
-    if (!profile_to_root_) profile_to_root_ = std::make_unique<RootGather>(comm, contact.nodes, 0);
+    if (!profile_to_root_) {
+      // The slave nodes (each from its owner) with their coordinates, on rank 0 sorted by x,
+      // then y (a surface-sized gather, once).
+      profile_to_root_ = std::make_unique<RootGather>(comm, contact.nodes, 0);
+      std::vector<double> x, y;
+      for (GlobalIndex n : contact.nodes) {
+        const GlobalIndex local = distributed_ ? distributed_->local_node(n) : n;
+        x.push_back(mesh_.coordinates[std::size_t(2 * local)]);
+        y.push_back(mesh_.coordinates[std::size_t(2 * local + 1)]);
+      }
+      profile_x_ = profile_to_root_->gather(x);
+      profile_y_ = profile_to_root_->gather(y);
+      const std::vector<GlobalIndex>& received = profile_to_root_->received_ids();
+      profile_order_.resize(received.size());
+      std::iota(profile_order_.begin(), profile_order_.end(), std::size_t(0));
+      std::sort(profile_order_.begin(), profile_order_.end(),
+                [&](std::size_t a, std::size_t b) { return received[a] < received[b]; });
+      const auto& X = profile_x_;
+      const auto& Y = profile_y_;
+      std::sort(profile_order_.begin(), profile_order_.end(), [&](std::size_t a, std::size_t b) {
+        return X[a] < X[b] || (X[a] == X[b] && Y[a] < Y[b]);
+      });
+    }
     for (const auto* field : {&contact.pressure, &contact.gap, &contact.status, &contact.lm[0],
                               &contact.lm[1], &contact.slip[0], &contact.slip[1]})
       profile.push_back(profile_to_root_->gather(*field));
@@ -259,14 +277,11 @@ void ResultsOutput::write(const ConvergedStep& step) {
     summary_.write(row.str() + "\n");
   }
   if (profile_.is_open()) {
-    std::unordered_map<GlobalIndex, std::size_t> entry;
     const auto& received = profile_to_root_->received_ids();
-    for (std::size_t i = 0; i < received.size(); ++i) entry[received[i]] = i;
     std::ostringstream rows;
-    for (GlobalIndex n : profile_nodes_) {
-      const std::size_t i = entry.at(n);
-      rows << step.step << "," << std::setprecision(17) << step.time << "," << n + 1 << ","
-           << mesh_.coordinates[2 * n] << "," << mesh_.coordinates[2 * n + 1];
+    for (std::size_t i : profile_order_) {
+      rows << step.step << "," << std::setprecision(17) << step.time << "," << received[i] + 1
+           << "," << profile_x_[i] << "," << profile_y_[i];
       for (const auto& field : profile) rows << "," << field[i];
       rows << "\n";
     }

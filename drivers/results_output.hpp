@@ -21,8 +21,8 @@ namespace grout {
 
 class ResultsOutput {
  public:
-  /// Collective. `distributed`: `mesh` is this rank's part of that mesh (it must outlive the
-  /// constructor; output/parallel: single, no contact); nullptr: the replicated mesh.
+  /// Collective. `distributed`: `mesh` is this rank's part of that mesh (both must outlive the
+  /// ResultsOutput; output/parallel: single); nullptr: the replicated mesh.
   ResultsOutput(const Mesh& mesh, const Input& input, const SolidProblem& solid,
                 const MechanicsProblem& problem, const DistributedMesh* distributed = nullptr);
   void write(const ConvergedStep& step);
@@ -47,6 +47,7 @@ class ResultsOutput {
   const Input& input_;
   const SolidProblem& solid_;
   const MechanicsProblem& problem_;
+  const DistributedMesh* distributed_ = nullptr;
   bool root_ = false;
   bool profile_wanted_ = false;  ///< 2D contact with a summary (every rank knows)
   std::vector<std::string> global_names_;
@@ -54,10 +55,11 @@ class ResultsOutput {
   std::unique_ptr<ResultsFile> exodus_;
   std::unique_ptr<OutputCommit> commit_;  ///< temporary names -> final names (this rank's files)
   CheckedTextFile summary_;
-  CheckedTextFile newton_log_;              ///< per Newton iteration of every converged step
-  CheckedTextFile profile_;                 ///< 2D: slave-node contact results along the interface
-  std::vector<GlobalIndex> profile_nodes_;  ///< slave nodes sorted by x, then y
+  CheckedTextFile newton_log_;  ///< per Newton iteration of every converged step
+  CheckedTextFile profile_;     ///< 2D: slave-node contact results along the interface
   std::unique_ptr<RootGather> profile_to_root_;  ///< this rank's slave nodes, in received order
+  std::vector<double> profile_x_, profile_y_;    ///< rank 0: their coordinates, as received
+  std::vector<std::size_t> profile_order_;       ///< rank 0: received entries by x, then y
 };
 
 }  // namespace grout

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "assembly/contact_distribution.hpp"
+#include "assembly/contact_sides.hpp"
 #include "assembly/raw_mpi_comm.hpp"
 #include "io/errors.hpp"
 
@@ -12,11 +13,9 @@ namespace grout {
 
 namespace {
 
-// Young's modulus of the material of the block of the side set's first face.
-double youngs_modulus_of(const Input& input, const Mesh& mesh, const std::string& set_name,
+// Young's modulus of the material of `block` (a side's first face's).
+double youngs_modulus_of(const Input& input, const ElementBlock& block,
                          const ContactInput& contact) {
-  const SideSet* set = mesh.find_side_set(set_name);  // checked by build_local_contact_surface
-  const ElementBlock& block = *mesh.block_of(set->elements.front());
   if (const MaterialInput* m = find_material(input, block)) return m->youngs_modulus;
   throw InputError(input.file + ": grout/contact/" + contact.name + ": no material on block '" +
                    block.name + "'");
@@ -24,13 +23,19 @@ double youngs_modulus_of(const Input& input, const Mesh& mesh, const std::string
 
 }  // namespace
 
-ContactInterface::ContactInterface(const Mesh& mesh, const Input& input, const ContactInput& ci,
-                                   int index, GO lambda_offset,
+ContactInterface::ContactInterface(const ContactMesh& mesh, const Input& input,
+                                   const ContactInput& ci, int index, GO lambda_offset,
                                    const std::function<bool(GlobalIndex)>& owns,
                                    const Teuchos::RCP<const Teuchos::Comm<int>>& comm)
-    : mesh_(mesh), input_(ci), index_(index), dim_(mesh.dimension), lambda_offset_(lambda_offset) {
+    : num_global_nodes_(mesh.num_global_nodes()),
+      input_(ci),
+      index_(index),
+      dim_(mesh.dimension()),
+      lambda_offset_(lambda_offset) {
   raw_comm_ = raw_mpi_comm(*comm);
-  LocalContactFaces local = build_local_contact_surface(mesh, input, ci, owns);
+  ContactSides sides = read_contact_sides(mesh, input, ci, owns);
+  LocalContactFaces& local = sides.local;
+  X_ref_ = std::move(sides.X);
   GlobalIndex shared =
       local.shared_node < 0 ? std::numeric_limits<GlobalIndex>::max() : local.shared_node;
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, 1, &shared, &local.shared_node);
@@ -39,7 +44,7 @@ ContactInterface::ContactInterface(const Mesh& mesh, const Input& input, const C
   surface_ = std::move(local.surface);
   owned_master_ = std::move(local.owned_master);
   const ContactSurface& s = surface_;
-  const std::vector<GlobalIndex> all_slave = side_set_nodes(mesh, contact_side_sets(ci, false));
+  const std::vector<GlobalIndex>& all_slave = sides.all_slave_nodes;
   for (std::size_t j = 0; j < s.slave_nodes.size(); ++j) {
     if (!owns(s.slave_nodes[j])) continue;
     owned_.push_back(int(j));
@@ -48,27 +53,27 @@ ContactInterface::ContactInterface(const Mesh& mesh, const Input& input, const C
   }
   const int n_owned = int(owned_.size());
   num_multipliers_ = GO(all_slave.size()) * dim_;
-  if (ci.self)  // the faces of the surface (ids 0 .. self_faces_ - 1 over its side sets)
-    for (const std::string& set : contact_side_sets(ci, false))
-      self_faces_ += GlobalIndex(mesh.find_side_set(set)->elements.size());
+  if (ci.self) self_faces_ = sides.num_slave_faces;  // ids 0 .. self_faces_ - 1
 
-  const double E1 = youngs_modulus_of(input, mesh, ci.slave, ci);
-  const double E2 = youngs_modulus_of(input, mesh, ci.master, ci);
-  c_hat_ = ci.c_n > 0.0
-               ? ci.c_n
-               : 2.0 / (1.0 / E1 + 1.0 / E2) / mean_face_size(mesh, contact_side_sets(ci, false));
+  const double E1 = youngs_modulus_of(input, *sides.slave_block, ci);
+  const double E2 = youngs_modulus_of(input, *sides.master_block, ci);
+  const double h = mean_slave_face_size_ = sides.mean_slave_face_size;
+  c_hat_ = ci.c_n > 0.0 ? ci.c_n : 2.0 / (1.0 / E1 + 1.0 / E2) / h;
   active_tolerance_ = 1e-10 * 2.0 / (1.0 / E1 + 1.0 / E2);
   std::vector<double> proximity(n_owned, 0.0);  // start_gap × the mean size of the node's faces
   for (int q = 0; q < n_owned; ++q) {
     const auto& faces = s.slave_node_faces[owned_[q]];
-    for (int f : faces)
-      proximity[q] += face_size(mesh, s.slave.nodes[f].data(), s.slave.num_nodes[f]);
+    for (int f : faces) {
+      std::array<double, 3> x[max_face_nodes];
+      for (int a = 0; a < s.slave.num_nodes[f]; ++a) x[a] = X_ref_.at(s.slave.nodes[f][a]);
+      proximity[q] += face_size_of(dim_, x, s.slave.num_nodes[f]);
+    }
     if (!faces.empty()) proximity[q] *= ci.start_gap / double(faces.size());
   }
   policy_ = ActiveSetPolicy(std::move(proximity), ci.start_closure);
   c_t_hat_ = ci.c_t > 0.0 ? ci.c_t : c_hat_;
   // κ = 1e-11 of the default ĉ (not of an input c_n: the iterates must not depend on it).
-  hold_ = 1e-11 * 2.0 / (1.0 / E1 + 1.0 / E2) / mean_face_size(mesh, contact_side_sets(ci, false));
+  hold_ = 1e-11 * 2.0 / (1.0 / E1 + 1.0 / E2) / h;
   // Collocation points: per slave element (2D) or per direction (3D); 20 unless the input
   // sets them.
   options_.mortar = mortar_options(dim_,
@@ -155,8 +160,9 @@ void ContactInterface::ghost_master_faces(const Vector* u_base, const Vector* u_
   if (u_old_base) uob = u_old_base->getLocalViewHost(Tpetra::Access::ReadOnly);
   const auto node_values = [&](GlobalIndex n, double X[3], double u[3], double u_old[3]) {
     for (int d = 0; d < 3; ++d) X[d] = u[d] = u_old[d] = 0.0;
+    const std::array<double, 3>& Xn = X_ref_.at(n);
     for (int d = 0; d < dim; ++d) {
-      X[d] = mesh_.coordinates[n * dim + d];
+      X[d] = Xn[d];
       if (!u_base) continue;
       const LO lid = base_map_->getLocalElement(n * dim + d);
       u[d] = ub(lid, 0);
@@ -377,8 +383,10 @@ void ContactInterface::append_pairing(std::vector<long long>& pairs) const {
 std::vector<ContactInterface::NodeResult> ContactInterface::node_results() const {
   std::vector<NodeResult> out;
   for (std::size_t q = 0; q < owned_.size(); ++q) {
-    NodeResult r{
-        surface_.slave_nodes[owned_[q]], pressure_[q], gap_[q], double(active_[q]), {}, {}, {}};
+    const GlobalIndex node = surface_.slave_nodes[owned_[q]];
+    NodeResult r{node, pressure_[q], gap_[q], double(active_[q]), {}, {}, {}, {}};
+    const std::array<double, 3>& X = X_ref_.at(node);
+    for (int d = 0; d < 3; ++d) r.X[d] = X[d];
     const ContactMortar& m = current_geometry_ ? current_ : reference_;
     for (int d = 0; d < dim_; ++d) {
       r.normal[d] = m.frames.size() > std::size_t(owned_[q]) ? m.frames[owned_[q]].n[d] : 0.0;

@@ -20,8 +20,10 @@
 #include <mpi.h>
 
 #include <array>
+#include <unordered_map>
 #include <vector>
 
+#include "assembly/contact_mesh.hpp"
 #include "assembly/contact_mortar.hpp"
 #include "assembly/contact_terms.hpp"
 #include "assembly/weighted_slip.hpp"
@@ -55,8 +57,9 @@ class ContactInterface {
   /// (slave faces around the slave nodes `owns` says it owns), multipliers numbered from
   /// `lambda_offset` by the sorted slave nodes of the side set, ĉ = E/h unless c_n is set.
   /// Collective (a slave side set may not share a node with its master side).
-  ContactInterface(const Mesh& mesh, const Input& input, const ContactInput& contact, int index,
-                   GO lambda_offset, const std::function<bool(GlobalIndex)>& owns,
+  /// `mesh`: the replicated mesh or this rank's part of the distributed one.
+  ContactInterface(const ContactMesh& mesh, const Input& input, const ContactInput& contact,
+                   int index, GO lambda_offset, const std::function<bool(GlobalIndex)>& owns,
                    const Teuchos::RCP<const Teuchos::Comm<int>>& comm);
 
   const ContactInput& input() const { return input_; }
@@ -68,6 +71,8 @@ class ContactInterface {
   void append_base_dofs(std::vector<GO>& dofs) const;
   /// Slave nodes this rank owns (global node indices).
   std::vector<GlobalIndex> owned_slave_nodes() const;
+  /// Mean size of the slave side's faces (longest edges, summed in side-set order).
+  double mean_slave_face_size() const { return mean_slave_face_size_; }
   /// Called once the base map is known: D, M and normals of the reference configuration
   /// (reference geometry only; collective).
   void set_base_map(const Teuchos::RCP<const Map>& base_map);
@@ -121,6 +126,7 @@ class ContactInterface {
     double pressure, gap, status;
     double lambda[3], slip[3];
     double normal[3];  ///< the unit normal n_j of the geometry in use (reference or current)
+    double X[3];       ///< reference coordinates
   };
   std::vector<NodeResult> node_results() const;
   /// Per owned slave node's e_j of ContactStepEnergy: (closing part, other part), and whether
@@ -150,7 +156,9 @@ class ContactInterface {
   /// The Newton step's tangential hold of owned node q (frictionless, active): Jacobian only.
   void add_tangential_hold(int q, ContactTerms& terms) const;
 
-  const Mesh& mesh_;
+  GlobalIndex num_global_nodes_ = 0;
+  /// Reference coordinates of the nodes of this rank's slave faces and owned master faces.
+  std::unordered_map<GlobalIndex, std::array<double, 3>> X_ref_;
   ContactInput input_;
   int index_ = 0;  ///< in the input's contact list
   int dim_ = 2;
@@ -163,6 +171,7 @@ class ContactInterface {
   GO num_multipliers_ = 0;
   std::vector<GO> lambda_index_;  ///< per owned slave node: its index among all slave nodes
   double c_hat_ = 1.0;
+  double mean_slave_face_size_ = 0.0;
   double active_tolerance_ = 0.0;  ///< on λ_n − ĉ g: 1e-10 E
   double c_t_hat_ = 1.0;           ///< c_t: like ĉ unless the input sets it
   double hold_ = 0.0;              ///< Newton step's tangential hold per unit D_jj: κ E/h

@@ -131,7 +131,7 @@ ContactRowSums ContactInterface::write_rows(int iterate, const ClosureCounts& gl
     const ContactLawNode& in = nodes_host(q);
     const ContactLawResult& r = results(q);
     // One tag per node: its forces, rows and hold, keys unique per row.
-    terms.begin_node(GO(index_) * GO(mesh_.num_nodes()) + surface_.slave_nodes[owned_[q]]);
+    terms.begin_node(GO(index_) * GO(num_global_nodes_) + surface_.slave_nodes[owned_[q]]);
     add_contact_forces(q, terms);
     record_node(q, in, r, &slip_value[2 * q]);
     if (r.status != node_open) {  // round-off of rows that carry ĉ × (a gap or a slip)

@@ -5,55 +5,94 @@
 #include <cmath>
 #include <set>
 
+#include "assembly/contact_distribution.hpp"
 #include "assembly/contact_surface.hpp"
-#include "io/mesh_bodies.hpp"
 #include "kernels/small_dense_lu.hpp"
 
 namespace grout {
 
-FreeRotationLimit::FreeRotationLimit(const Mesh& mesh, const Input& input,
-                                     Teuchos::RCP<const Map> map)
-    : mesh_(mesh), dim_(mesh.dimension), map_(std::move(map)) {
-  // Bodies as everywhere else: the connected components of the elements (io/mesh_bodies).
-  const std::vector<int> body_of = node_bodies(mesh);
+FreeRotationLimit::FreeRotationLimit(const ContactMesh& mesh, const Input& input,
+                                     Teuchos::RCP<const Map> map,
+                                     const std::vector<double>& slave_face_size)
+    : dim_(mesh.dimension()), distributed_(mesh.distributed()), map_(std::move(map)) {
+  const auto& comm = *map_->getComm();
+  // Bodies as everywhere else: the connected components of the elements (io/mesh_bodies),
+  // those of the sets' faces gathered over the ranks on a distributed part.
   const auto bodies_of = [&](const std::vector<std::string>& sets) {
-    std::set<int> out;
-    for (GlobalIndex n : side_set_nodes(mesh, sets)) out.insert(body_of[std::size_t(n)]);
-    return out;
+    std::vector<long long> mine;
+    for (const std::string& set : sets)
+      for (GlobalIndex b : mesh.local_faces(set).bodies) mine.push_back(b);
+    if (distributed_)
+      mine = exchange_with_ranks(
+          std::vector<std::vector<long long>>(std::size_t(comm.getSize()), mine), mesh.comm());
+    return std::set<GlobalIndex>(mine.begin(), mine.end());
   };
   // Bodies a tied, frictional or self-contact pair touches: their rotation is held by it.
-  std::set<int> held;
+  std::set<GlobalIndex> held;
   for (const ContactInput& ci : input.contact) {
     if (ci.type == ContactKind::frictionless && !ci.self) continue;
     for (const bool master : {false, true})
-      for (int b : bodies_of(contact_side_sets(ci, master))) held.insert(b);
+      for (GlobalIndex b : bodies_of(contact_side_sets(ci, master))) held.insert(b);
   }
+  const Mesh& local = mesh.mesh();
   for (std::size_t i = 0; i < input.contact.size(); ++i) {
     const ContactInput& ci = input.contact[i];
     if (ci.type != ContactKind::frictionless || ci.self) continue;
-    const std::set<int> slave_bodies = bodies_of({ci.slave});
+    const std::set<GlobalIndex> slave_bodies = bodies_of({ci.slave});
     if (slave_bodies.empty() || std::any_of(slave_bodies.begin(), slave_bodies.end(),
-                                            [&](int b) { return held.count(b) > 0; }))
+                                            [&](GlobalIndex b) { return held.count(b) > 0; }))
       continue;
     Body body;
     body.pair = int(i);
-    for (GlobalIndex n = 0; n < mesh.num_nodes(); ++n)  // ascending: sorted
-      if (slave_bodies.count(body_of[std::size_t(n)])) body.nodes.push_back(n);
-    for (GlobalIndex n : body.nodes)
-      for (int c = 0; c < dim_; ++c) body.X0[c] += mesh.coordinates[n * dim_ + c];
-    for (int c = 0; c < dim_; ++c) body.X0[c] /= double(body.nodes.size());
-    double r2 = 0.0;
-    for (GlobalIndex n : body.nodes)
+    // Ascending: the replicated mesh's nodes, or a part's owned nodes (owned first, ascending).
+    for (GlobalIndex n = 0; n < local.num_nodes(); ++n) {
+      const GlobalIndex g = mesh.global_node(n);
+      if (distributed_ && !map_->isNodeGlobalElement(GO(g) * dim_)) continue;
+      if (!slave_bodies.count(mesh.body(n))) continue;
+      body.nodes.push_back(g);
+      std::array<double, 3> X{0.0, 0.0, 0.0};
+      for (int c = 0; c < dim_; ++c) X[c] = local.coordinates[n * dim_ + c];
+      body.X.push_back(X);
+    }
+    // X0 = Σ X / count, L² = Σ |X − X0|² / count over the body's nodes.
+    double sums[4] = {0.0, 0.0, 0.0, double(body.nodes.size())}, all[4];
+    for (const auto& X : body.X)
+      for (int c = 0; c < dim_; ++c) sums[c] += X[c];
+    if (distributed_)
+      Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 4, sums, all);
+    else
+      std::copy(sums, sums + 4, all);
+    const double count = all[3];
+    for (int c = 0; c < dim_; ++c) body.X0[c] = all[c] / count;
+    double r2 = 0.0, r2_all = 0.0;
+    for (const auto& X : body.X)
       for (int c = 0; c < dim_; ++c) {
-        const double d = mesh.coordinates[n * dim_ + c] - body.X0[c];
+        const double d = X[c] - body.X0[c];
         r2 += d * d;
       }
-    body.L = std::sqrt(r2 / double(body.nodes.size()));
-    body.h = mean_face_size(mesh, std::vector<std::string>{ci.slave});
+    if (distributed_)
+      Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, r2, Teuchos::outArg(r2_all));
+    else
+      r2_all = r2;
+    body.L = std::sqrt(r2_all / count);
+    body.h = slave_face_size[i];
     if (!(body.L > 0.0) || !(body.h > 0.0)) continue;
     bodies_.push_back(std::move(body));
   }
 }
+
+namespace {
+std::vector<double> slave_face_sizes(const Mesh& mesh, const Input& input) {
+  std::vector<double> sizes;
+  for (const ContactInput& ci : input.contact)
+    sizes.push_back(mean_face_size(mesh, contact_side_sets(ci, false)));
+  return sizes;
+}
+}  // namespace
+
+FreeRotationLimit::FreeRotationLimit(const Mesh& mesh, const Input& input,
+                                     Teuchos::RCP<const Map> map)
+    : FreeRotationLimit(ContactMesh(mesh), input, std::move(map), slave_face_sizes(mesh, input)) {}
 
 double FreeRotationLimit::limit(const std::vector<double>& prescribed,
                                 const std::vector<std::vector<ContactNode>>& active,
@@ -75,12 +114,13 @@ double FreeRotationLimit::limit(const std::vector<double>& prescribed,
 double FreeRotationLimit::limit_body(const Body& body, const std::vector<double>& prescribed,
                                      const std::vector<ContactNode>& contact, Vector& step) const {
   const int dim = dim_, n = rigid_mode_count(dim);
-  const double* X = mesh_.coordinates.data();
-  // G and P over the body's dofs (replicated data: the same on every rank).
+  // G and P over the body's dofs (replicated data: the same on every rank; a distributed
+  // part's owned nodes, summed over the ranks).
   double G[max_rigid_modes][max_rigid_modes] = {}, P[max_rigid_modes][max_rigid_modes] = {};
-  for (GlobalIndex node : body.nodes) {
+  for (std::size_t k = 0; k < body.nodes.size(); ++k) {
+    const GlobalIndex node = body.nodes[k];
     double r[max_rigid_modes][3];
-    for (int a = 0; a < n; ++a) rigid_mode_value(dim, a, X + node * dim, body.X0, body.L, r[a]);
+    for (int a = 0; a < n; ++a) rigid_mode_value(dim, a, body.X[k].data(), body.X0, body.L, r[a]);
     for (int c = 0; c < dim; ++c) {
       const bool fixed = !std::isnan(prescribed[node * dim + c]);
       for (int a = 0; a < n; ++a)
@@ -89,6 +129,15 @@ double FreeRotationLimit::limit_body(const Body& body, const std::vector<double>
           if (fixed) P[a][b] += r[a][c] * r[b][c];
         }
     }
+  }
+  if (distributed_) {
+    double GP[2 * max_rigid_modes * max_rigid_modes], all[2 * max_rigid_modes * max_rigid_modes];
+    constexpr int m = max_rigid_modes * max_rigid_modes;
+    std::copy(&G[0][0], &G[0][0] + m, GP);
+    std::copy(&P[0][0], &P[0][0] + m, GP + m);
+    Teuchos::reduceAll(*map_->getComm(), Teuchos::REDUCE_SUM, 2 * m, GP, all);
+    std::copy(all, all + m, &G[0][0]);
+    std::copy(all + m, all + 2 * m, &P[0][0]);
   }
   FreeRigidModes modes;
   if (!free_rigid_modes(dim, G, P, modes) || !modes.rotates) return 0.0;
@@ -103,16 +152,17 @@ double FreeRotationLimit::limit_body(const Body& body, const std::vector<double>
   constexpr int nb = 0, nN = max_rigid_modes, nQ = nN + 9, nX = nQ + 3 * max_rigid_modes,
                 ncount = nX + 3, nsums = ncount + 1;
   double sums[nsums] = {}, all[nsums] = {};
-  for (GlobalIndex node : body.nodes) {
+  for (std::size_t k = 0; k < body.nodes.size(); ++k) {
+    const GlobalIndex node = body.nodes[k];
     if (lid(node, 0) == invalid) continue;  // a node's dofs have one owner
     for (int a = 0; a < n; ++a) {
       double r[3];
-      rigid_mode_value(dim, a, X + node * dim, body.X0, body.L, r);
+      rigid_mode_value(dim, a, body.X[k].data(), body.X0, body.L, r);
       for (int c = 0; c < dim; ++c) sums[nb + a] += r[c] * s(lid(node, c), 0);
     }
   }
   for (const ContactNode& cn : contact) {
-    const double* Xj = X + cn.node * dim;
+    const double* Xj = cn.X;
     for (int c = 0; c < dim; ++c) {
       for (int e = 0; e < dim; ++e) sums[nN + 3 * c + e] += cn.normal[c] * cn.normal[e];
       sums[nX + c] += Xj[c];
@@ -161,7 +211,7 @@ double FreeRotationLimit::limit_body(const Body& body, const std::vector<double>
   double slide = 0.0, slide_all = 0.0;
   for (const ContactNode& cn : contact) {
     double v[3];
-    rigid_motion_value(dim, w, X + cn.node * dim, body.X0, body.L, v);
+    rigid_motion_value(dim, w, cn.X, body.X0, body.L, v);
     double v2 = 0.0;
     for (int c = 0; c < dim; ++c) v2 += v[c] * v[c];
     slide = std::max(slide, std::sqrt(v2));
@@ -171,10 +221,11 @@ double FreeRotationLimit::limit_body(const Body& body, const std::vector<double>
   if (!(slide_all > cap)) return slide_all / body.h;
 
   const double cut = 1.0 - cap / slide_all;
-  for (GlobalIndex node : body.nodes) {
+  for (std::size_t k = 0; k < body.nodes.size(); ++k) {
+    const GlobalIndex node = body.nodes[k];
     if (lid(node, 0) == invalid) continue;
     double v[3];
-    rigid_motion_value(dim, w, X + node * dim, body.X0, body.L, v);
+    rigid_motion_value(dim, w, body.X[k].data(), body.X0, body.L, v);
     for (int c = 0; c < dim; ++c)
       if (std::isnan(prescribed[node * dim + c])) s(lid(node, c), 0) -= cut * v[c];
   }

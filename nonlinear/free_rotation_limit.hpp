@@ -32,8 +32,10 @@
 // removing w altogether stalls Newton (random_094: |F| stays at 1.3), since the step's rigid
 // fit also holds part of its deformation.
 
+#include <array>
 #include <vector>
 
+#include "assembly/contact_mesh.hpp"
 #include "assembly/tpetra_types.hpp"
 #include "io/input.hpp"
 #include "io/mesh.hpp"
@@ -45,12 +47,18 @@ namespace grout {
 struct ContactNode {
   GlobalIndex node = 0;
   double normal[3] = {0.0, 0.0, 0.0};
+  double X[3] = {0.0, 0.0, 0.0};  ///< reference coordinates
 };
 
 class FreeRotationLimit {
  public:
-  /// The slave bodies of the frictionless pairs of `input` (see above); `map` is the
-  /// problem's (u dofs node * dim + c first).
+  /// The slave bodies of the frictionless pairs of `input` (see above) on the replicated mesh
+  /// or this rank's part of the distributed one (each body's owned nodes; the sums over a
+  /// body are then summed over the ranks); `map` is the problem's (u dofs node * dim + c
+  /// first); `slave_face_size` the mean slave face size of each pair. Collective.
+  FreeRotationLimit(const ContactMesh& mesh, const Input& input, Teuchos::RCP<const Map> map,
+                    const std::vector<double>& slave_face_size);
+  /// The same on the replicated mesh, with the slave face sizes of its side sets.
   FreeRotationLimit(const Mesh& mesh, const Input& input, Teuchos::RCP<const Map> map);
 
   /// Limits `step` (the Newton step, on the problem's map) with `prescribed` the value of
@@ -68,17 +76,18 @@ class FreeRotationLimit {
 
  private:
   struct Body {
-    int pair = 0;                    ///< index in the input's contact list
-    std::vector<GlobalIndex> nodes;  ///< sorted
-    double X0[3] = {0.0, 0.0, 0.0};  ///< centroid of the nodes
-    double L = 1.0;                  ///< RMS distance of the nodes from X0
-    double h = 0.0;                  ///< mean slave face size
+    int pair = 0;                          ///< index in the input's contact list
+    std::vector<GlobalIndex> nodes;        ///< sorted (on a distributed part: the owned ones)
+    std::vector<std::array<double, 3>> X;  ///< their reference coordinates
+    double X0[3] = {0.0, 0.0, 0.0};        ///< centroid of the nodes
+    double L = 1.0;                        ///< RMS distance of the nodes from X0
+    double h = 0.0;                        ///< mean slave face size
   };
   double limit_body(const Body& body, const std::vector<double>& prescribed,
                     const std::vector<ContactNode>& contact, Vector& step) const;
 
-  const Mesh& mesh_;
   int dim_ = 2;
+  bool distributed_ = false;
   Teuchos::RCP<const Map> map_;
   std::vector<Body> bodies_;
 };

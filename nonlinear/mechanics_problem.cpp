@@ -20,13 +20,16 @@
 
 namespace grout {
 
-MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, const Input& input)
-    : solid_(solid), mesh_(mesh), input_(input), dim_(mesh.dimension) {
+MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, const Input& input,
+                                   const ContactMeshPart* part)
+    : solid_(solid), input_(input), dim_(mesh.dimension) {
   // From the solid, not the mesh: `mesh` may be one rank's part of a distributed mesh.
   num_u_ = GO(solid.num_global_nodes()) * dim_;
   const auto& owned_u = *solid.owned_map();
   const auto comm = solid.comm();
   raw_comm_ = raw_mpi_comm(*comm);
+  const ContactMesh contact_mesh = part ? ContactMesh(mesh, *part, raw_comm_) : ContactMesh(mesh);
+  gather_prescribed_ = part && !input.contact.empty();
   num_owned_u_ = int(owned_u.getNodeNumElements());
   std::vector<GO> owned;
   for (int i = 0; i < num_owned_u_; ++i) owned.push_back(owned_u.getGlobalElement(i));
@@ -37,7 +40,7 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
   GO next_lambda = num_u_;
   std::vector<GO> base;  // displacement dofs of the nodes of local faces
   for (const ContactInput& ci : input.contact) {
-    auto c = std::make_unique<ContactInterface>(mesh, input, ci, int(interfaces_.size()),
+    auto c = std::make_unique<ContactInterface>(contact_mesh, input, ci, int(interfaces_.size()),
                                                 next_lambda, owns, comm);
     next_lambda += c->num_multipliers();
     c->append_owned_multipliers(owned);
@@ -76,9 +79,13 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
   reaction_ = solid.create_vector();
   K_solid_ = solid.create_matrix();
   prescribed_.assign(num_u_, std::numeric_limits<double>::quiet_NaN());
-  // Only a contact pair's slave body can turn freely (its bodies read the whole mesh).
-  if (!input.contact.empty())
-    rotation_limit_ = std::make_unique<FreeRotationLimit>(mesh, input, map_);
+  // Only a contact pair's slave body can turn freely.
+  if (!input.contact.empty()) {
+    std::vector<double> slave_face_size;
+    for (const auto& c : interfaces_) slave_face_size.push_back(c->mean_slave_face_size());
+    rotation_limit_ =
+        std::make_unique<FreeRotationLimit>(contact_mesh, input, map_, slave_face_size);
+  }
   if (rotation_limit_ && rotation_limit_->num_bodies() == 0) rotation_limit_.reset();
 }
 
@@ -87,7 +94,8 @@ void MechanicsProblem::limit_step(const Vector& /*x*/, Vector& step) {
   std::vector<std::vector<ContactNode>> active(input_.contact.size()), slave(active.size());
   for (std::size_t i = 0; i < interfaces_.size(); ++i)
     for (const ContactInterface::NodeResult& r : interfaces_[i]->node_results()) {
-      const ContactNode node{r.node, {r.normal[0], r.normal[1], r.normal[2]}};
+      const ContactNode node{
+          r.node, {r.normal[0], r.normal[1], r.normal[2]}, {r.X[0], r.X[1], r.X[2]}};
       slave[i].push_back(node);
       if (r.status != 0.0) active[i].push_back(node);
     }
@@ -105,6 +113,18 @@ void MechanicsProblem::begin_step(double t, Vector& x) {
     prescribed_ = solid_.prescribed_displacements(t);
     solid_.external_force(t, *f_ext_);
   });
+  if (gather_prescribed_) {
+    // A distributed mesh's part knows the values of its local nodes; the contact rows and the
+    // Jacobian's columns reach master nodes beyond the ghost layer: every rank gets every
+    // value (minimum over the ranks, free = +inf; the ranks that hold a node agree on it).
+    const double inf = std::numeric_limits<double>::infinity();
+    for (double& v : prescribed_)
+      if (std::isnan(v)) v = inf;
+    MPI_Allreduce(MPI_IN_PLACE, prescribed_.data(), int(prescribed_.size()), MPI_DOUBLE, MPI_MIN,
+                  raw_comm_);
+    for (double& v : prescribed_)
+      if (v == inf) v = std::numeric_limits<double>::quiet_NaN();
+  }
   auto xv = x.getLocalViewHost(Tpetra::Access::ReadWrite);
   for (int i = 0; i < num_owned_u_; ++i) {
     const double value = prescribed_[map_->getGlobalElement(i)];
@@ -273,16 +293,6 @@ std::vector<std::pair<GO, GO>> MechanicsProblem::multiplier_pairing() const {
   for (std::size_t k = 0; k + 1 < all.size(); k += 2) pairs.emplace_back(all[k], all[k + 1]);
   std::sort(pairs.begin(), pairs.end());
   return pairs;
-}
-
-std::vector<GlobalIndex> MechanicsProblem::slave_nodes() const {
-  std::vector<GlobalIndex> nodes;
-  for (const auto& c : interfaces_) {
-    const std::vector<GlobalIndex> set =
-        side_set_nodes(mesh_, contact_side_sets(c->input(), false));
-    nodes.insert(nodes.end(), set.begin(), set.end());
-  }
-  return nodes;
 }
 
 ContactStepEnergy MechanicsProblem::contact_step_energy() const {

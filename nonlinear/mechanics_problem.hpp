@@ -68,8 +68,10 @@ struct ContactStepEnergy {
 class MechanicsProblem : public NonlinearProblem {
  public:
   /// `mesh`: the replicated mesh, or this rank's part of the distributed mesh (the solid's
-  /// `part.local`) when the input has no contact (the interfaces read the whole mesh).
-  MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, const Input& input);
+  /// `part.local`) with `part` its global numbers and bodies (assembly/contact_mesh.hpp).
+  /// Collective.
+  MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, const Input& input,
+                   const ContactMeshPart* part = nullptr);
   ~MechanicsProblem() override;
 
   Teuchos::RCP<const Map> map() const override { return map_; }
@@ -134,14 +136,11 @@ class MechanicsProblem : public NonlinearProblem {
   /// Collective: on rank 0 one line per interface and rank, what the rank holds of it
   /// (ContactInterface::Holdings); empty on the other ranks and without contact.
   std::string describe_contact_holdings() const;
-  /// Slave nodes of every interface (global node indices, each interface's sorted).
-  std::vector<GlobalIndex> slave_nodes() const;
 
  private:
   void report_fixed_nodes(int count, const ContactRowSums& local) const;
 
   const SolidProblem& solid_;
-  const Mesh& mesh_;
   const Input& input_;
   int dim_ = 2;
   GO num_u_ = 0;  ///< global displacement dofs
@@ -163,6 +162,7 @@ class MechanicsProblem : public NonlinearProblem {
   const Vector* solid_step_start_ = nullptr;  ///< set_solid_step_start
   bool K_solid_constant_ = false;   ///< K_solid_ assembled and independent of u (small strain)
   std::vector<double> prescribed_;  ///< per global u dof, NaN where free
+  bool gather_prescribed_ = false;  ///< contact on a distributed part: the ranks' values merged
   int active_size_ = 0, active_changes_ = 0;
   double residual_floor_ = 0.0;
   int iterate_ = 0;  ///< the Newton iterate of the next residual evaluation (newton_phase)

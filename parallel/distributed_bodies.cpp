@@ -34,7 +34,8 @@ std::vector<GlobalIndex> local_components(const Mesh& local) {
 
 }  // namespace
 
-DistributedBodies distributed_node_bodies(const Comm& comm, const DistributedMesh& mesh) {
+std::vector<GlobalIndex> distributed_node_body_labels(const Comm& comm,
+                                                      const DistributedMesh& mesh) {
   const auto comm_rcp = Teuchos::rcpFromRef(comm);
   const std::size_t num_local = mesh.node_gid.size(), num_owned = std::size_t(mesh.num_owned_nodes);
   const std::vector<GO> gids(mesh.node_gid.begin(), mesh.node_gid.end());
@@ -74,6 +75,12 @@ DistributedBodies distributed_node_bodies(const Comm& comm, const DistributedMes
     }
     Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, changed_here, Teuchos::outArg(changed));
   }
+  return label;
+}
+
+DistributedBodies distributed_node_bodies(const Comm& comm, const DistributedMesh& mesh) {
+  const std::size_t num_owned = std::size_t(mesh.num_owned_nodes);
+  const std::vector<GlobalIndex> label = distributed_node_body_labels(comm, mesh);
 
   // Roots: owned nodes labelled with their own id, one per body; a body's index is its root's
   // place among all roots in ascending id (node_bodies's numbering).

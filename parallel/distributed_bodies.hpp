@@ -26,6 +26,11 @@ struct DistributedBodies {
   int num_bodies = 0;                ///< bodies of the whole mesh
 };
 
+/// Collective. Per local node (owned and ghost) of `mesh`, its body's label after the rounds
+/// of the file comment: the lowest global node id of the body.
+std::vector<GlobalIndex> distributed_node_body_labels(const Comm& comm,
+                                                      const DistributedMesh& mesh);
+
 /// Collective. The bodies of `mesh` (see the file comment): the same indices as
 /// node_bodies(the replicated mesh) at the owned nodes. A node of no element is a body of its
 /// own.

@@ -43,9 +43,10 @@ struct Blocks {
     }
     for (GlobalIndex n : mesh.find_node_set("upper_bottom")->nodes) {
       if (!map->isNodeGlobalElement(2 * n)) continue;
-      const ContactNode node{n, {0.0, -1.0, 0.0}};  // the slave body's outward normal
-      slave[0].push_back(node);
       const double x = mesh.coordinates[2 * n];
+      // the slave body's outward normal
+      const ContactNode node{n, {0.0, -1.0, 0.0}, {x, mesh.coordinates[2 * n + 1], 0.0}};
+      slave[0].push_back(node);
       if (x > 0.2 && x < 0.8) active[0].push_back(node);
     }
   }
