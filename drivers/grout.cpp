@@ -51,6 +51,7 @@
 #include "nonlinear/system_layout.hpp"
 #include "parallel/distributed_bodies.hpp"
 #include "parallel/distributed_mesh.hpp"
+#include "parallel/exodus_slices.hpp"
 
 namespace {
 
