@@ -36,7 +36,8 @@ void march_steps(NonlinearProblem& problem, LinearSolver& linear, const NewtonOp
     // (linear extrapolation along the path, the usual predictor of incremental
     // path-following). From x_n alone only the prescribed nodes move, and the first solve
     // carries the whole increment through the contact state of t_n. A step that fails from
-    // the predicted start is retried from x_n (then as without the predictor).
+    // the predicted start is retried from x_n (then as without the predictor); a cut step
+    // begins the same sequence again, from the predicted start with the full step.
     const bool extrapolated = stepping.extrapolate && step > 0 && !plain && !fell_back;
     if (extrapolated) {
       const double r = (t_next - times.time()) / (times.time() - t_before);
@@ -83,6 +84,7 @@ void march_steps(NonlinearProblem& problem, LinearSolver& linear, const NewtonOp
       ++cuts;
       times.halve();
       plain = false;
+      if (stepping.extrapolate) fell_back = false;  // the cut step: predicted, full step first
       if (root) {
         std::printf("  step %d t = %g: %s; cutting the step to dt = %g (%d/%d)\n", step + 1, t_next,
                     report.reason.c_str(), times.step_size(), cuts, stepping.max_cuts);
