@@ -276,6 +276,7 @@ void run(const std::string& input_path, const std::string& output_dir, bool time
   stepping.step_size.adaptive = input.time.adaptive;
   stepping.step_size.max_step_size = input.time.max_step_size;
   stepping.min_step_size = input.time.min_step_size;
+  stepping.extrapolate = input.time.extrapolate;
 
   // Solve, writing and flushing every converged step at once.
   const auto write_step = [&](const ConvergedStep& step) {

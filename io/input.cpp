@@ -430,16 +430,20 @@ Input read_input_text(const std::string& raw, const std::string& path) {
       "time",
       {Key::number("end").above(0).defaults("1"), Key::integer("steps").at_least(1).defaults("1"),
        Key::choice("stepping", {"fixed", "adaptive"}, "stepping").defaults("fixed"),
-       Key::number("max_step_size").above(0), Key::number("min_step_size").above(0)});
+       Key::number("max_step_size").above(0), Key::number("min_step_size").above(0),
+       Key::choice("predictor", {"last", "extrapolated"}, "predictor").defaults("last")});
   input.time.end = time.number("end");
   input.time.steps = time.integer("steps");
   input.time.adaptive = time.string("stepping") == "adaptive";
+  input.time.extrapolate = time.string("predictor") == "extrapolated";
   if (time.has("max_step_size")) {
     if (!input.time.adaptive) time.fail("max_step_size", "only with stepping: adaptive");
     input.time.max_step_size = time.number("max_step_size");
   }
   read_min_step_size(time, input.time);
   read_dynamics(grout, input);
+  if (input.time.extrapolate && grout.has("dynamics"))  // the time integrator predicts there
+    time.fail("predictor", "extrapolated is for quasi-static analyses (not with grout/dynamics)");
   if (input.model.plane == PlaneKind::axisymmetric) {
     // The mass matrix and the dynamics' rigid-body velocity updates are not weighted by 2 pi r.
     if (grout.has("dynamics"))

@@ -98,6 +98,9 @@ struct TimeInput {
   int steps = 1;               ///< equal steps, or (adaptive) the first step is end / steps
   bool adaptive = false;       ///< `stepping: adaptive`: grow after easy steps
   double max_step_size = 0.0;  ///< adaptive bound on the step size; 0 = none
+  /// `predictor: extrapolated`: a quasi-static step starts from the last two converged states
+  /// extrapolated to its time (load_stepping.hpp); `last` (default): from the last one.
+  bool extrapolate = false;
   /// Smallest step a cut-back may make (exit 3 below it); resolved by the reader: default
   /// min_step_fraction · end, at least min_step_floor · end. end / steps may not be smaller.
   double min_step_size = 0.0;

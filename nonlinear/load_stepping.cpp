@@ -13,7 +13,7 @@ void march_steps(NonlinearProblem& problem, LinearSolver& linear, const NewtonOp
                  const std::function<void(double t, Vector& x)>& begin_step,
                  const std::function<void(ConvergedStep&)>& accept) {
   const bool root = problem.map()->getComm()->getRank() == 0;
-  Vector x(problem.map()), trial(problem.map());
+  Vector x(problem.map()), trial(problem.map()), x_before(problem.map());  // x_n, x_{n−1}
   StepTimes times(stepping.end_time, stepping.steps);  // t = t_end·k/den, never a sum of Δt
   // A step whose full-step Newton solve fails (the active set, or stick and slip, cycling
   // where many nodes change at once: a frictional landing from an open gap) is retried at the
@@ -26,16 +26,38 @@ void march_steps(NonlinearProblem& problem, LinearSolver& linear, const NewtonOp
   const double min_step_size =
       stepping.min_step_size > 0.0 ? stepping.min_step_size : 1e-6 * stepping.end_time;
   int step = 0, cuts = 0;
-  bool fell_back = false;
+  bool fell_back = false, plain = false;
+  double t_before = 0.0;  // the time of x_before (x_{−1} = 0 at t = 0)
   while (!times.finished()) {
     const double t_next = times.next_time();
     trial.assign(x);
+    // Secant predictor (stepping.extrapolate): x_n + (t − t_n)/(t_n − t_{n−1}) (x_n − x_{n−1}),
+    // displacements and multipliers alike, begin_step then setting the prescribed values
+    // (linear extrapolation along the path, the usual predictor of incremental
+    // path-following). From x_n alone only the prescribed nodes move, and the first solve
+    // carries the whole increment through the contact state of t_n. A step that fails from
+    // the predicted start is retried from x_n (then as without the predictor); a cut step
+    // begins the same sequence again, from the predicted start with the full step.
+    const bool extrapolated = stepping.extrapolate && step > 0 && !plain && !fell_back;
+    if (extrapolated) {
+      const double r = (t_next - times.time()) / (times.time() - t_before);
+      trial.update(-r, x_before, 1.0 + r);
+    }
     begin_step(t_next, trial);
     std::ostringstream prefix;
     prefix << "  step " << step + 1 << " t = " << t_next;
     const NewtonReport report =
         solve_newton(problem, trial, linear, fell_back ? fallback : newton, prefix.str());
     if (!report.converged) {
+      if (extrapolated) {
+        plain = true;
+        if (root) {
+          std::printf("  step %d t = %g: %s; retrying from the last converged state\n", step + 1,
+                      t_next, report.reason.c_str());
+          std::fflush(stdout);
+        }
+        continue;
+      }
       // Only after an iterate: a failure at the start point (its residual, or the first
       // Jacobian's solve) would repeat itself, as the line search acts after the first solve.
       if (can_fall_back && !fell_back && report.residual_history.size() > 1) {
@@ -61,6 +83,8 @@ void march_steps(NonlinearProblem& problem, LinearSolver& linear, const NewtonOp
       }
       ++cuts;
       times.halve();
+      plain = false;
+      if (stepping.extrapolate) fell_back = false;  // the cut step: predicted, full step first
       if (root) {
         std::printf("  step %d t = %g: %s; cutting the step to dt = %g (%d/%d)\n", step + 1, t_next,
                     report.reason.c_str(), times.step_size(), cuts, stepping.max_cuts);
@@ -68,6 +92,8 @@ void march_steps(NonlinearProblem& problem, LinearSolver& linear, const NewtonOp
       }
       continue;
     }
+    x_before.assign(x);
+    t_before = times.time();
     x.assign(trial);
     const double previous_time = times.time();
     times.advance();
@@ -87,7 +113,7 @@ void march_steps(NonlinearProblem& problem, LinearSolver& linear, const NewtonOp
     accept(converged);
     times.after_success(report.iterations, stepping.step_size);
     cuts = 0;  // the budget of halvings is per step
-    fell_back = false;
+    fell_back = plain = false;
   }
 }
 

@@ -19,6 +19,10 @@ struct SteppingOptions {
   /// (a collapsing solid cut dt down to 1e-16 and then "converged" a step of dt = 0).
   double min_step_size = 0.0;
   StepSizeOptions step_size;  ///< fixed or adaptive increments (nonlinear/step_size.hpp)
+  /// Each step starts from the last two converged states extrapolated to its time instead of
+  /// the last one; a step that fails from there is retried from the last one (docs/input.md,
+  /// `time/predictor`; quasi-static only: the reader refuses it with dynamics).
+  bool extrapolate = false;
 };
 
 class DynamicProblem;

@@ -800,6 +800,14 @@ TEST(InputDynamics, ReadsSchemeGravityAndInitialVelocity) {
 }
 
 TEST(InputDynamics, ErrorsNameTheKey) {
+  expect_bad_input("predictor_dynamics", dynamic_input + "  time: {predictor: extrapolated}\n",
+                   {"grout/time/predictor: extrapolated is for quasi-static analyses"});
+  expect_bad_input("predictor_unknown", minimal + "  time: {predictor: quadratic}\n",
+                   {"grout/time/predictor"});
+  EXPECT_TRUE(
+      read_input(write_file("predictor.yaml", minimal + "  time: {predictor: extrapolated}\n"))
+          .time.extrapolate);
+  EXPECT_FALSE(read_input(write_file("predictor_default.yaml", minimal)).time.extrapolate);
   expect_bad_input("no_density", replaced(dynamic_input, ", density: 7.8", ""),
                    {"grout/materials/steel/density: required > 0"});
   expect_bad_input("gravity_quasi_static",

@@ -344,6 +344,75 @@ TEST(MarchSteps, AFailureAtTheStartPointIsNotRetried) {
   EXPECT_EQ(problem.residual_calls, 1);
 }
 
+/// F(x)ᵢ = xᵢ + xᵢ³/10 − t cᵢ along a path through a load t (set by begin_step), and
+/// F(x)ᵢ = xᵢ − t cᵢ with `linear`: then x(t) = t c, which the secant predictor hits exactly.
+/// The residual fails where some xᵢ exceeds `limit`.
+class PathProblem : public NonlinearProblem {
+ public:
+  PathProblem() : map_(Teuchos::rcp(new Map(6, 0, Tpetra::getDefaultComm()))) {}
+  Teuchos::RCP<const Map> map() const override { return map_; }
+  bool residual(const Vector& x, Vector& F) override {
+    auto f = F.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    const auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+    bool ok = true;
+    for (LO i = 0; i < LO(f.extent(0)); ++i) {
+      const double xi = xv(i, 0), c = 1.0 + double(map_->getGlobalElement(i));
+      f(i, 0) = xi + (linear ? 0.0 : 0.1 * xi * xi * xi) - t * c;
+      ok = ok && xi <= limit;
+    }
+    int here = ok ? 1 : 0, all = 0;
+    Teuchos::reduceAll(*map_->getComm(), Teuchos::REDUCE_MIN, 1, &here, &all);
+    return all == 1;
+  }
+  bool jacobian(const Vector& x, Teuchos::RCP<Matrix>& J) override {
+    J = diagonal_matrix(x, [&](double v) { return 1.0 + (linear ? 0.0 : 0.3 * v * v); });
+    return true;
+  }
+  double t = 0.0, limit = std::numeric_limits<double>::infinity();
+  bool linear = true;
+
+ private:
+  Teuchos::RCP<const Map> map_;
+};
+
+/// Newton iterations of every step of march_steps on `problem` (`steps` steps to t = `end`).
+std::vector<int> iterations_per_step(PathProblem& problem, bool extrapolate, int steps = 4,
+                                     double end = 1.0) {
+  LinearSolver linear(Teuchos::ParameterList(), "test", {});
+  SteppingOptions stepping;
+  stepping.end_time = end;
+  stepping.steps = steps;
+  stepping.max_cuts = 0;  // a cut-back would be a failure
+  stepping.extrapolate = extrapolate;
+  std::vector<int> iterations;
+  march_steps(
+      problem, linear, quiet_options(), stepping, [&](double t, Vector&) { problem.t = t; },
+      [&](ConvergedStep& step) { iterations.push_back(step.newton->iterations); });
+  return iterations;
+}
+
+// The secant predictor (SteppingOptions::extrapolate): on a linear path x(t) = t c every step
+// after the first starts at its solution (no Newton update), where the last converged state
+// takes one update per step.
+TEST(MarchSteps, TheSecantPredictorStartsALinearPathAtItsSolution) {
+  PathProblem problem;
+  EXPECT_EQ(iterations_per_step(problem, false), std::vector<int>({1, 1, 1, 1}));
+  EXPECT_EQ(iterations_per_step(problem, true), std::vector<int>({1, 0, 0, 0}));
+}
+
+// A step whose predicted start fails (here its residual: x beyond `limit`) is retried from
+// the last converged state, with no cut-back.
+TEST(MarchSteps, AStepFailingFromThePredictedStartIsRetriedFromTheLastState) {
+  PathProblem problem;
+  problem.linear = false;
+  // For the largest c = 6: x(0.25) = 1.2869, x(0.5) = 2.0887 (x + x³/10 = 6 t); the predicted
+  // start of the step to 0.5 is 2.5738 > limit, Newton's iterates from x(0.25) stay below
+  // 2.2890.
+  problem.limit = 2.4;
+  EXPECT_EQ(iterations_per_step(problem, false, 2, 0.5).size(), 2u);
+  EXPECT_EQ(iterations_per_step(problem, true, 2, 0.5).size(), 2u);
+}
+
 TEST(NewtonOptions, AnInputLineSearchTurnsTheRetryOff) {
   EXPECT_EQ(newton_options_from(Teuchos::ParameterList()).fallback_line_search, "Backtrack");
   Teuchos::ParameterList solver;
