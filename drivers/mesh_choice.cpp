@@ -1,6 +1,7 @@
 #include "drivers/mesh_choice.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 
 #include "io/errors.hpp"
@@ -73,8 +74,11 @@ std::string describe_partition(const DistributionOptions& options) {
   for (const std::string& set : options.contact_side_sets) sets += (sets.empty() ? "" : ", ") + set;
   if (options.separate_contact) return "RCB, the elements on " + sets + " apart from the others";
   if (options.balance_contact) return "two-criteria RCB: elements and elements on " + sets;
-  if (options.contact_weight > 0.0)
-    return "RCB, elements on " + sets + " weighing 1 + " + std::to_string(options.contact_weight);
+  if (options.contact_weight > 0.0) {
+    char weight[32];
+    std::snprintf(weight, sizeof weight, "%g", 1.0 + options.contact_weight);
+    return "RCB, elements on " + sets + " weighing " + weight;
+  }
   return "RCB, weights 1";
 }
 

@@ -75,8 +75,10 @@ inline MeshPart mesh_part(const DistributedMesh& mesh) {
 
 /// How the elements are partitioned.
 struct DistributionOptions {
-  /// Side sets (names or "id_<n>") whose elements weigh 1 + contact_weight in the partition
-  /// instead of 1, so that a part's share of the contact surface follows its weight.
+  /// The contact surface: side sets (names or "id_<n>"); the elements with a face on them
+  /// (contact elements) weigh 1 + contact_weight, or count as a second criterion, or are
+  /// partitioned apart (below), and their parts own their nodes first. Unused when none of
+  /// the three is asked for.
   std::vector<std::string> contact_side_sets;
   /// Leave out the contact side sets the file lacks (the driver's input checks name them with
   /// their key) instead of an InputError.
