@@ -9,8 +9,9 @@
 //
 // The mesh: a static run without contact or with frictionless or frictional contact, with one
 // results file, reads the distributed mesh (each rank its part, drivers/mesh_choice.hpp; with
-// contact on a direct solver); any other run the replicated mesh. GROUT_MESH=replicated keeps
-// the replicated mesh for every run.
+// contact on a direct solver; the slave faces' elements partitioned apart, so that every rank
+// evaluates its share of them; GROUT_PARTITION picks another partition); any other run the
+// replicated mesh. GROUT_MESH=replicated keeps the replicated mesh for every run.
 //
 // Exit codes: 0 done, 2 bad input (message names the file and key or mesh entity; also an
 // output that cannot be written), 3 a step did not converge (every earlier step is already
@@ -82,6 +83,7 @@ struct RunMesh {
   std::optional<Mesh> replicated;
   std::optional<DistributedMesh> distributed;
   std::string replicated_reason;  ///< why not the distributed mesh (drivers/mesh_choice.hpp)
+  std::string partition;          ///< the distributed mesh's partition, in words
 
   const Mesh& mesh() const { return distributed ? distributed->local : *replicated; }
   GlobalIndex num_nodes() const {
@@ -139,8 +141,12 @@ RunMesh read_mesh(const Input& input, bool forced_replicated,
     agree_on_errors(*comm, [&] { check_input_against_mesh(input, *run_mesh.replicated); });
     return run_mesh;
   }
+  // With contact, the partition shares the slave faces as well as the elements.
+  DistributionOptions options;
+  agree_on_errors(*comm, [&] { options = distribution_options(input); });
+  run_mesh.partition = describe_partition(options);
   const DistributedMesh& mesh =
-      run_mesh.distributed.emplace(read_distributed_mesh(*comm, input.mesh_file));
+      run_mesh.distributed.emplace(read_distributed_mesh(*comm, input.mesh_file, options));
   double x_max = 0.0, x_max_all = 0.0;  // the axisymmetric check's extent in x
   for (GlobalIndex n = 0; n < mesh.num_owned_nodes; ++n)
     x_max =
@@ -242,8 +248,8 @@ void run(const std::string& input_path, const std::string& output_dir, bool time
     const std::string mesh_held = distributed ? describe_holdings(*comm, *distributed) : "";
     const std::string held = describe_solid_holdings(solid);
     if (root && distributed)
-      std::printf("grout: mesh: distributed (each rank reads a slice and holds its part)\n%s%s",
-                  mesh_held.c_str(), held.c_str());
+      std::printf("grout: mesh: distributed (each rank reads a slice and holds its part; %s)\n%s%s",
+                  run_mesh.partition.c_str(), mesh_held.c_str(), held.c_str());
     else if (root)
       std::printf(
           "grout: mesh: replicated (every rank holds all %lld nodes and %lld elements; %s)\n%s",

@@ -1,5 +1,7 @@
 #include "drivers/mesh_choice.hpp"
 
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 
 #include "io/errors.hpp"
@@ -34,6 +36,50 @@ bool iterative_solver_chosen(const Input& input, long long num_nodes) {
 bool iterative_for_unknowns(const Input& input, long long unknowns) {
   return input.solver.linear.type == LinearSolverType::automatic &&
          auto_linear_solver_type(unknowns, input.model.dimension) == "belos";
+}
+
+DistributionOptions distribution_options(const Input& input) {
+  DistributionOptions options;
+  options.skip_missing_sets = true;  // check_input_against_mesh names them with their key
+  for (const ContactInput& c : input.contact)
+    for (const std::string& set : contact_side_sets(c, false))
+      if (std::find(options.contact_side_sets.begin(), options.contact_side_sets.end(), set) ==
+          options.contact_side_sets.end())
+        options.contact_side_sets.push_back(set);
+  const char* env = std::getenv("GROUT_PARTITION");
+  const std::string value = env ? env : "";
+  const auto bad = [&] {
+    return InputError("GROUT_PARTITION=" + value +
+                      ": expected separate (the default), plain, criteria or weight:W (W >= 0)");
+  };
+  if (value.empty() || value == "separate") {
+    options.separate_contact = true;
+  } else if (value == "criteria") {
+    options.balance_contact = true;
+  } else if (value.rfind("weight:", 0) == 0) {
+    const std::string w = value.substr(7);
+    char* end = nullptr;
+    options.contact_weight = std::strtod(w.c_str(), &end);
+    if (w.empty() || *end != '\0' || !(options.contact_weight >= 0.0)) throw bad();
+  } else if (value != "plain") {
+    throw bad();
+  }
+  if (options.contact_side_sets.empty()) return DistributionOptions{};  // weights 1
+  return options;
+}
+
+std::string describe_partition(const DistributionOptions& options) {
+  if (options.contact_side_sets.empty()) return "RCB, weights 1";
+  std::string sets;
+  for (const std::string& set : options.contact_side_sets) sets += (sets.empty() ? "" : ", ") + set;
+  if (options.separate_contact) return "RCB, the elements on " + sets + " apart from the others";
+  if (options.balance_contact) return "two-criteria RCB: elements and elements on " + sets;
+  if (options.contact_weight > 0.0) {
+    char weight[32];
+    std::snprintf(weight, sizeof weight, "%g", 1.0 + options.contact_weight);
+    return "RCB, elements on " + sets + " weighing " + weight;
+  }
+  return "RCB, weights 1";
 }
 
 bool replicated_mesh_forced() {

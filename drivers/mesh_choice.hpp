@@ -22,6 +22,7 @@
 #include <string>
 
 #include "io/input.hpp"
+#include "parallel/distributed_mesh.hpp"
 
 namespace grout {
 
@@ -44,6 +45,19 @@ bool iterative_for_unknowns(const Input& input, long long unknowns);
 /// unknowns are num_nodes × dimension). Only then does the distributed mesh's layout carry
 /// the nodes' coordinates and bodies.
 bool iterative_solver_chosen(const Input& input, long long num_nodes);
+
+/// \brief How the distributed mesh's elements are partitioned for `input`: with contact, the
+/// slave side sets of its pairs are the contact surface, and the elements with a face on it are
+/// partitioned apart from the others (DistributionOptions::separate_contact), so that each rank
+/// evaluates its share of the slave faces and holds its share of the solid (docs/performance.md,
+/// "Scale: what a rank holds"). The environment variable GROUT_PARTITION picks another
+/// partition, to compare them: `plain` (weights 1, the contact ignored), `weight:W` (contact
+/// elements weigh 1 + W), `criteria` (two-criteria RCB) or `separate` (the default); any other
+/// value is an input error naming it.
+DistributionOptions distribution_options(const Input& input);
+
+/// The partition `options` make, in words, for the --timers report.
+std::string describe_partition(const DistributionOptions& options);
 
 /// Whether GROUT_MESH=replicated is set; any other value than replicated or distributed (the
 /// default) is an input error naming it.

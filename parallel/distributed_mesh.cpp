@@ -70,12 +70,14 @@ std::vector<double> check_and_centroids(const MeshHeader& h, const MeshSlices& s
 /// The indices of the contact side sets among the header's side sets.
 std::vector<std::size_t> contact_sets(const MeshHeader& h, const DistributionOptions& options) {
   std::vector<std::size_t> sets;
-  if (options.contact_weight == 0.0 && !options.balance_contact) return sets;
+  if (options.contact_weight == 0.0 && !options.balance_contact && !options.separate_contact)
+    return sets;
   for (const std::string& name : options.contact_side_sets) {
     std::size_t k = 0;
     while (k < h.side_sets.size() && h.side_sets[k].name != name &&
            name != "id_" + std::to_string(h.side_sets[k].id))
       ++k;
+    if (k == h.side_sets.size() && options.skip_missing_sets) continue;
     if (k == h.side_sets.size())
       throw InputError("mesh '" + h.file + "': no side set '" + name + "' (contact surface)");
     sets.push_back(k);
@@ -83,28 +85,59 @@ std::vector<std::size_t> contact_sets(const MeshHeader& h, const DistributionOpt
   return sets;
 }
 
-/// Collective. Weight 1 per slice element, 1 + contact_weight for an element with a face in
-/// one of the side sets `sets`; with `two`, two weights per element: 1, and 1 on those
-/// elements (0 elsewhere).
-std::vector<double> element_weights(const Comm& comm, const MeshHeader& h, const MeshSlices& s,
-                                    const std::vector<std::size_t>& sets, double contact_weight,
-                                    bool two) {
-  const std::size_t stride = two ? 2 : 1;
-  std::vector<double> weights(std::size_t(s.num_elements()) * stride, 1.0);
-  if (two)
-    for (std::size_t i = 1; i < weights.size(); i += 2) weights[i] = 0.0;
+/// Collective. Per slice element: 1 when it has a face in one of the side sets `sets` (whose
+/// entries the ranks' set slices hold, sent to the elements' slice ranks), else 0.
+std::vector<char> contact_marks(const Comm& comm, const MeshHeader& h, const MeshSlices& s,
+                                const std::vector<std::size_t>& sets) {
+  std::vector<char> contact(std::size_t(s.num_elements()), 0);
   std::vector<std::vector<long long>> marks(std::size_t(comm.getSize()));
   for (std::size_t k : sets)
     for (GlobalIndex e : s.side_set_elements[k])
       marks[std::size_t(slice_rank(h.num_elements, e, comm.getSize()))].push_back(e);
-  for (long long e : send_to_ranks(comm, marks)) {
-    const std::size_t i = std::size_t(e - s.element_begin) * stride;
-    if (two)
-      weights[i + 1] = 1.0;
-    else
-      weights[i] = 1.0 + contact_weight;
+  for (long long e : send_to_ranks(comm, marks)) contact[std::size_t(e - s.element_begin)] = 1;
+  return contact;
+}
+
+/// Weight 1 per element, 1 + contact_weight for a contact element; with `two`, two weights per
+/// element: 1, and 1 on contact elements (0 elsewhere).
+std::vector<double> element_weights(const std::vector<char>& contact, double contact_weight,
+                                    bool two) {
+  std::vector<double> weights;
+  for (char c : contact) {
+    if (two) {
+      weights.push_back(1.0);
+      weights.push_back(c ? 1.0 : 0.0);
+    } else {
+      weights.push_back(c ? 1.0 + contact_weight : 1.0);
+    }
   }
   return weights;
+}
+
+/// Collective. The contact elements (contact[i] = 1) and the others partitioned apart, one RCB
+/// each with weights 1 (DistributionOptions::separate_contact).
+std::vector<int> partition_separately(const Comm& comm, int dimension,
+                                      const std::vector<GlobalIndex>& ids,
+                                      const std::vector<double>& centroids,
+                                      const std::vector<char>& contact) {
+  std::vector<int> part(ids.size(), 0);
+  for (char group : {char(1), char(0)}) {
+    std::vector<GlobalIndex> group_ids;
+    std::vector<double> group_centroids;
+    std::vector<std::size_t> at;
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      if (contact[i] != group) continue;
+      at.push_back(i);
+      group_ids.push_back(ids[i]);
+      group_centroids.insert(group_centroids.end(), centroids.begin() + 3 * i,
+                             centroids.begin() + 3 * i + 3);
+    }
+    const std::vector<int> group_part =
+        partition_elements_rcb(comm, dimension, group_ids, group_centroids,
+                               std::vector<double>(group_ids.size(), 1.0), 1, comm.getSize());
+    for (std::size_t j = 0; j < at.size(); ++j) part[at[j]] = group_part[j];
+  }
+  return part;
 }
 
 /// check_mesh's set tests on the owned entities (every entry of an owned entity is here):
@@ -173,6 +206,7 @@ DistributedMesh read_distributed_mesh(const Comm& comm, const std::string& path,
   const MeshSlices slices = read_mesh_slices(comm, header);
   timer.emplace(*partition_time);
   std::vector<int> part;
+  std::vector<char> contact;
   {
     const std::vector<GlobalIndex> nodes = slice_element_nodes(slices);
     const std::vector<double> x = fetch_coordinates(comm, header, slices, nodes);
@@ -182,15 +216,19 @@ DistributedMesh read_distributed_mesh(const Comm& comm, const std::string& path,
       centroids = check_and_centroids(header, slices, nodes, x);
       sets = contact_sets(header, options);
     });
-    const std::vector<double> weights = element_weights(
-        comm, header, slices, sets, options.contact_weight, options.balance_contact);
+    contact = contact_marks(comm, header, slices, sets);
     std::vector<GlobalIndex> ids(std::size_t(slices.num_elements()));
     for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = slices.element_begin + GlobalIndex(i);
-    part = partition_elements_rcb(comm, header.dimension, ids, centroids, weights,
-                                  options.balance_contact ? 2 : 1, comm.getSize());
+    if (options.separate_contact)
+      part = partition_separately(comm, header.dimension, ids, centroids, contact);
+    else
+      part = partition_elements_rcb(
+          comm, header.dimension, ids, centroids,
+          element_weights(contact, options.contact_weight, options.balance_contact),
+          options.balance_contact ? 2 : 1, comm.getSize());
   }
   timer.emplace(*migrate_time);
-  DistributedMesh mesh = migrate_mesh(comm, header, slices, part);
+  DistributedMesh mesh = migrate_mesh(comm, header, slices, part, contact);
   agree_on_errors(comm, [&] { check_sets(mesh); });
   return mesh;
 }

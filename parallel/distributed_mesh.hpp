@@ -9,8 +9,11 @@
 //      (parallel/exodus_slices.hpp);
 //   2. element centroids: coordinates of the slice elements' nodes fetched from the ranks
 //      whose node slice holds them (a directory keyed by node id);
-//   3. Zoltan2 RCB on the centroids (parallel/element_partition.hpp);
-//   4. node owners (lowest part among the node's elements, as assembly/partition.hpp) and
+//   3. Zoltan2 RCB on the centroids (parallel/element_partition.hpp), with contact side sets
+//      the elements with a face on them weighted or partitioned apart (DistributionOptions);
+//   4. node owners (lowest part among the node's elements, as assembly/partition.hpp; with
+//      contact side sets, among its contact elements first, so that the contact work, which
+//      follows the owned slave nodes, follows the contact elements' partition) and
 //      ghost destinations, from the node directory; migration of elements, nodes and set
 //      entries to the ranks that hold them (parallel/migrate_mesh.cpp);
 //   5. the checks of check_mesh on owned entities, messages in global numbers.
@@ -72,13 +75,24 @@ inline MeshPart mesh_part(const DistributedMesh& mesh) {
 
 /// How the elements are partitioned.
 struct DistributionOptions {
-  /// Side sets (names or "id_<n>") whose elements weigh 1 + contact_weight in the partition
-  /// instead of 1, so that a part's share of the contact surface follows its weight.
+  /// The contact surface: side sets (names or "id_<n>"); the elements with a face on them
+  /// (contact elements) weigh 1 + contact_weight, or count as a second criterion, or are
+  /// partitioned apart (below), and their parts own their nodes first. Unused when none of
+  /// the three is asked for.
   std::vector<std::string> contact_side_sets;
+  /// Leave out the contact side sets the file lacks (the driver's input checks name them with
+  /// their key) instead of an InputError.
+  bool skip_missing_sets = false;
   double contact_weight = 0.0;
   /// Balance two criteria instead: elements (weight 1 each) and elements on the contact side
-  /// sets (Zoltan's multi-criteria RCB), so each part gets its share of both.
+  /// sets (Zoltan's multi-criteria RCB: one cut per level, the direction whose cut balances
+  /// both best), so each part gets its share of both as far as one plane allows.
   bool balance_contact = false;
+  /// Partition the elements with a face on the contact side sets and the other elements
+  /// separately, one RCB each (weights 1): each part gets its share of both within RCB's 1 %
+  /// whatever the geometry, at the price of contact elements whose neighbours may lie on
+  /// another part (a surface-sized ghost layer).
+  bool separate_contact = false;
 };
 
 /// \brief Collective. Reads the Exodus mesh `path` in slices and distributes it (see the

@@ -6,7 +6,7 @@
 // needs before its first solve.
 //
 //   grout_mesh_probe mesh.exo [--replicated] [--solid] [--timers] [--contact <side set> ...]
-//   [--contact-weight w] [--balance-contact]
+//   [--contact-weight w] [--balance-contact] [--separate-contact]
 
 #include <sys/resource.h>
 
@@ -14,6 +14,7 @@
 #include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_Core.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -26,6 +27,7 @@
 #include "drivers/mpi_startup.hpp"
 #include "io/errors.hpp"
 #include "io/exodus.hpp"
+#include "kernels/topology.hpp"
 #include "parallel/distributed_mesh.hpp"
 
 namespace {
@@ -81,6 +83,8 @@ int main(int argc, char** argv) {
       options.contact_side_sets.push_back(argv[++i]);
     } else if (arg == "--balance-contact") {
       options.balance_contact = true;
+    } else if (arg == "--separate-contact") {
+      options.separate_contact = true;
     } else if (arg == "--contact-weight" && i + 1 < argc) {
       options.contact_weight = std::atof(argv[++i]);
     } else if (path.empty() && arg.rfind("-", 0) != 0) {
@@ -96,7 +100,7 @@ int main(int argc, char** argv) {
       std::fprintf(
           stderr,
           "usage: grout_mesh_probe mesh.exo [--replicated] [--solid] [--contact <side set>]"
-          " [--contact-weight w] [--balance-contact]\n");
+          " [--contact-weight w] [--balance-contact] [--separate-contact]\n");
     return 2;
   }
   try {
@@ -125,19 +129,37 @@ int main(int argc, char** argv) {
           const grout::Input input = solid_input(mesh.local);
           text += build_solid(grout::SolidProblem(grout::mesh_part(mesh), input, comm));
         }
-        // Contact balance: faces of each contact side set and owned dofs (nodes x dimension)
-        // per rank.
+        // Contact balance per rank: faces of each contact side set on owned elements, faces
+        // with an owned node (those the contact evaluates), owned nodes of the set, owned dofs
+        // (nodes x dimension).
         for (const std::string& name : options.contact_side_sets) {
           const grout::SideSet* set = mesh.local.find_side_set(name);
-          long long mine[2] = {0, mesh.num_owned_nodes * mesh.local.dimension};
-          if (set)
-            for (grout::GlobalIndex e : set->elements) mine[0] += mesh.owns_element(e);
-          std::vector<long long> all(std::size_t(2 * comm->getSize()));
-          Teuchos::gatherAll(*comm, 2, mine, int(all.size()), all.data());
+          long long mine[4] = {0, 0, 0, mesh.num_owned_nodes * mesh.local.dimension};
+          std::vector<grout::GlobalIndex> owned_nodes;
+          for (std::size_t i = 0; set && i < set->elements.size(); ++i) {
+            mine[0] += mesh.owns_element(set->elements[i]);
+            const grout::GlobalIndex e = set->elements[i];
+            const grout::ElementBlock& block = *mesh.local.block_of(e);
+            int local[grout::max_side_nodes];
+            const int n_face = grout::side_local_nodes(block.topology, set->sides[i], local);
+            bool evaluated = false;
+            for (int a = 0; a < n_face; ++a) {
+              const grout::GlobalIndex n =
+                  block
+                      .connectivity[(e - block.first_element) * block.nodes_per_element + local[a]];
+              if (mesh.owns_node(n)) evaluated = true, owned_nodes.push_back(n);
+            }
+            mine[1] += evaluated;
+          }
+          std::sort(owned_nodes.begin(), owned_nodes.end());
+          mine[2] = std::unique(owned_nodes.begin(), owned_nodes.end()) - owned_nodes.begin();
+          std::vector<long long> all(std::size_t(4 * comm->getSize()));
+          Teuchos::gatherAll(*comm, 4, mine, int(all.size()), all.data());
           for (int r = 0; r < comm->getSize(); ++r)
             text += "balance rank " + std::to_string(r) + ": side set '" + name + "' faces " +
-                    std::to_string(all[2 * r]) + ", owned dofs " + std::to_string(all[2 * r + 1]) +
-                    "\n";
+                    std::to_string(all[4 * r]) + " (" + std::to_string(all[4 * r + 1]) +
+                    " with an owned node), nodes owned " + std::to_string(all[4 * r + 2]) +
+                    ", owned dofs " + std::to_string(all[4 * r + 3]) + "\n";
         }
       }
     });

@@ -1,8 +1,10 @@
 // Migration to owners with one layer of ghost elements (parallel/migrate_mesh.hpp).
 //
 // The node directory (home: the rank whose node slice holds the node) learns, for each node,
-// the sorted parts of the elements around it, parts(n). Then
-//   owner(n)        = min parts(n), or 0 when parts(n) is empty (a node of no element);
+// the sorted parts of the elements around it, parts(n), and those of its contact elements
+// (a face on a contact side set), contact_parts(n). Then
+//   owner(n)        = min contact_parts(n), or when it is empty min parts(n), or 0 when parts(n)
+//                     is empty (a node of no element);
 //   ranks(e)        = union of parts(n) over the nodes n of element e: e is owned on its part
 //                     and a ghost on the others, exactly the elements that share a node with
 //                     an element the rank owns (the one-layer ghost definition);
@@ -33,24 +35,27 @@ void sort_unique(std::vector<T>& v) {
   v.erase(std::unique(v.begin(), v.end()), v.end());
 }
 
-/// parts(n) for the home's node slice, as CRS (offset per slice node).
+/// parts(n) and owner(n) for the home's node slice, parts as CRS (offset per slice node).
 struct NodeParts {
   std::vector<GlobalIndex> offset;
   std::vector<int> parts;
+  std::vector<int> owner;
 };
 
 NodeParts gather_node_parts(const Comm& comm, const MeshHeader& h, const MeshSlices& s,
-                            const std::vector<int>& element_part) {
+                            const std::vector<int>& element_part,
+                            const std::vector<char>& contact) {
   const int ranks = comm.getSize();
-  // (node, part), each once; merged chunk by chunk so that the pairs of all the element
-  // nodes (8 per hex) never sit in memory at once.
+  // (node, 2 part + 1), or 2 part for a contact element: each once; merged chunk by chunk so
+  // that the pairs of all the element nodes (8 per hex) never sit in memory at once.
   std::vector<std::pair<GlobalIndex, int>> mine, chunk, merged;
   const GlobalIndex chunk_size = std::max<GlobalIndex>(1 << 15, s.num_elements() / 8 + 1);
   for (GlobalIndex first = 0; first < s.num_elements(); first += chunk_size) {
     chunk.clear();
     for (GlobalIndex e = first; e < std::min(s.num_elements(), first + chunk_size); ++e)
       for (GlobalIndex k = s.element_nodes_offset[e]; k < s.element_nodes_offset[e + 1]; ++k)
-        chunk.emplace_back(s.element_nodes[k], element_part[e]);
+        chunk.emplace_back(s.element_nodes[k],
+                           2 * element_part[e] + (contact.empty() || !contact[e] ? 1 : 0));
     sort_unique(chunk);
     merged.clear();
     std::set_union(mine.begin(), mine.end(), chunk.begin(), chunk.end(),
@@ -74,6 +79,18 @@ NodeParts gather_node_parts(const Comm& comm, const MeshHeader& h, const MeshSli
   sort_unique(node_part);
   NodeParts result;
   result.offset.assign(std::size_t(s.num_nodes() + 1), 0);
+  result.owner.assign(std::size_t(s.num_nodes()), 0);
+  std::vector<int> contact_owner(std::size_t(s.num_nodes()), -1);
+  for (auto it = node_part.rbegin(); it != node_part.rend(); ++it) {  // descending: min last
+    const std::size_t local = std::size_t(it->first - s.node_begin);
+    result.owner[local] = it->second / 2;
+    if (it->second % 2 == 0) contact_owner[local] = it->second / 2;
+  }
+  for (std::size_t n = 0; n < contact_owner.size(); ++n)
+    if (contact_owner[n] >= 0) result.owner[n] = contact_owner[n];
+  // parts(n): each part once.
+  for (auto& np : node_part) np.second /= 2;
+  sort_unique(node_part);
   for (const auto& [n, p] : node_part) ++result.offset[std::size_t(n - s.node_begin + 1)];
   std::partial_sum(result.offset.begin(), result.offset.end(), result.offset.begin());
   for (const auto& np : node_part) result.parts.push_back(np.second);
@@ -128,9 +145,10 @@ std::vector<GlobalIndex> slice_element_nodes(const MeshSlices& s) {
 }
 
 DistributedMesh migrate_mesh(const Comm& comm, const MeshHeader& h, const MeshSlices& s,
-                             const std::vector<int>& element_part) {
+                             const std::vector<int>& element_part,
+                             const std::vector<char>& contact) {
   const int me = comm.getRank(), ranks = comm.getSize();
-  const NodeParts node_parts = gather_node_parts(comm, h, s, element_part);
+  const NodeParts node_parts = gather_node_parts(comm, h, s, element_part, contact);
   std::vector<GlobalIndex> ranks_offset;
   std::vector<int> ranks_of;
   element_ranks(comm, h, s, node_parts, ranks_offset, ranks_of);
@@ -181,10 +199,7 @@ DistributedMesh migrate_mesh(const Comm& comm, const MeshHeader& h, const MeshSl
   const int dim = h.dimension;
   std::vector<std::vector<double>> node_answers(static_cast<std::size_t>(ranks));
   std::vector<std::pair<GlobalIndex, int>> holders;  // (node, rank)
-  const auto owner_of = [&](GlobalIndex local) {
-    const GlobalIndex b = node_parts.offset[local];
-    return b < node_parts.offset[local + 1] ? node_parts.parts[b] : 0;
-  };
+  const auto owner_of = [&](GlobalIndex local) { return node_parts.owner[std::size_t(local)]; };
   for (int r = 0, at = 0; r < ranks; ++r)
     for (int i = 0; i < q.counts[std::size_t(r)]; ++i, ++at) {
       const GlobalIndex local = q.ids[std::size_t(at)] - s.node_begin;

@@ -1,14 +1,15 @@
 // The distributed mesh (parallel/distributed_mesh.hpp) against the replicated Mesh read on
 // every rank by io/exodus_reader.cpp, by brute force: owned entities partition the file's,
 // ghosts are exactly the one-layer definition, nodes are owned by the lowest part among their
-// elements, coordinates, connectivity and sets are the file's; the memory bound on 2 ranks;
-// bad meshes throw on every rank with the replicated reader's message.
+// (contact) elements, coordinates, connectivity and sets are the file's; the memory bound on 2
+// ranks; bad meshes throw on every rank with the replicated reader's message.
 
 #include <gtest/gtest.h>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <set>
 
@@ -79,9 +80,16 @@ void check_against_replicated(const std::string& path, const DistributionOptions
   node_count = sum_over_ranks(node_count);
   for (GlobalIndex n = 0; n < N; ++n) ASSERT_EQ(node_count[n], 1) << "node " << n;
 
-  // Brute force: node owner = lowest part among its elements (0 without elements); ghosts =
-  // elements owned elsewhere sharing a node with an element owned here.
+  // Brute force: node owner = lowest part among its contact elements (with a face on one of
+  // the options' contact side sets, when the options use them), else among its elements (0
+  // without elements); ghosts = elements owned elsewhere sharing a node with an element owned
+  // here.
+  std::set<GlobalIndex> contact_elements;
+  if (options.contact_weight != 0.0 || options.balance_contact || options.separate_contact)
+    for (const std::string& name : options.contact_side_sets)
+      for (GlobalIndex e : file.find_side_set(name)->elements) contact_elements.insert(e);
   std::vector<int> node_owner(std::size_t(N), comm->getSize());
+  std::vector<int> contact_owner(std::size_t(N), comm->getSize());
   std::vector<char> touches_mine(std::size_t(N), 0);
   for (const auto& b : file.blocks)
     for (GlobalIndex e = 0; e < b.num_elements(); ++e)
@@ -89,8 +97,12 @@ void check_against_replicated(const std::string& path, const DistributionOptions
         const GlobalIndex n = b.connectivity[e * b.nodes_per_element + a];
         const int p = int(element_owner[b.first_element + e]);
         node_owner[n] = std::min(node_owner[n], p);
+        if (contact_elements.count(b.first_element + e))
+          contact_owner[n] = std::min(contact_owner[n], p);
         if (p == me) touches_mine[n] = 1;
       }
+  for (GlobalIndex n = 0; n < N; ++n)
+    if (contact_owner[n] < comm->getSize()) node_owner[n] = contact_owner[n];
   for (auto& p : node_owner)
     if (p == comm->getSize()) p = 0;
   std::set<GlobalIndex> expected_elements, expected_nodes;
@@ -223,6 +235,40 @@ TEST(DistributedMesh, GmshHalfDiscsMatchReplicated) {
 
 TEST(DistributedMesh, GmshHemispheresMatchReplicated) {
   check_against_replicated(gmsh_mesh("hemispheres.exo"));
+}
+
+/// Owned elements and owned faces of side set `set` on this rank.
+std::pair<long long, long long> owned_elements_and_faces(const DistributedMesh& m,
+                                                         const std::string& set) {
+  long long faces = 0;
+  for (GlobalIndex e : m.local.find_side_set(set)->elements) faces += m.owns_element(e);
+  return {m.num_owned_elements(), faces};
+}
+
+TEST(DistributedMesh, GmshHemispheresWithSeparateContactMatchReplicated) {
+  DistributionOptions options;
+  options.contact_side_sets = {"lower_contact"};
+  options.separate_contact = true;
+  check_against_replicated(gmsh_mesh("hemispheres.exo"), options);
+}
+
+TEST(DistributedMesh, SeparateContactSharesElementsAndContactFaces) {
+  // Two hemispheres one above the other: weights 1 cut between them, so one part holds the
+  // whole slave surface; partitioned apart, the slave faces' elements and the others are each
+  // split evenly, within RCB's 1 % (a face or element more for rounding).
+  const auto comm = world();
+  const std::string path = gmsh_mesh("hemispheres.exo");
+  const Mesh file = read_exodus(path);
+  const double parts = comm->getSize();
+  const double elements = double(file.num_elements()),
+               faces = double(file.find_side_set("lower_contact")->elements.size());
+  DistributionOptions options;
+  options.contact_side_sets = {"lower_contact"};
+  options.separate_contact = true;
+  const auto [mine_elements, mine_faces] =
+      owned_elements_and_faces(read_distributed_mesh(*comm, path, options), "lower_contact");
+  EXPECT_LE(std::abs(double(mine_elements) - elements / parts), 0.01 * elements / parts + 1.0);
+  EXPECT_LE(std::abs(double(mine_faces) - faces / parts), 0.01 * faces / parts + 1.0);
 }
 
 TEST(DistributedMesh, EachRankHoldsAtMost55PercentOnTwoOrMoreRanks) {
