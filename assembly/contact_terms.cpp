@@ -83,6 +83,7 @@ void ContactTerms::sum_forces_to_owners(const Map& map, MPI_Comm comm, Vector& F
 
 std::vector<JacobianTerm> ContactTerms::owned_entries(const Map& map, MPI_Comm comm) const {
   std::vector<JacobianTerm> entries;
+  entries.reserve(entry_rows_.size());
   const int n_ranks = map.getComm()->getSize();
   std::vector<std::vector<long long>> send_ids(n_ranks);
   std::vector<std::vector<double>> send_values(n_ranks);
@@ -97,6 +98,7 @@ std::vector<JacobianTerm> ContactTerms::owned_entries(const Map& map, MPI_Comm c
   }
   const std::vector<long long> ids = exchange_with_ranks(send_ids, comm);
   const std::vector<double> received = exchange_with_ranks(send_values, comm);
+  entries.reserve(entries.size() + received.size());
   for (std::size_t e = 0; e < received.size(); ++e)
     entries.push_back({ids[3 * e], ids[3 * e + 1], ids[3 * e + 2], received[e]});
   return entries;

@@ -1,6 +1,7 @@
 #include "nonlinear/mumps_numbering.hpp"
 
 #include <algorithm>
+#include <numeric>
 
 #include "assembly/raw_mpi_comm.hpp"
 
@@ -119,15 +120,27 @@ MumpsEntries mumps_entries(const MumpsNumbering& numbering, const Matrix& K, boo
   std::vector<int> foreign_owners;
   e.keys.reserve(local.nnz());
   e.values.reserve(local.nnz());
-  for (LO i = 0; i < n_local; ++i) {
+  // Rows in increasing MUMPS index, each row's keys increasing: the keys then come sorted but
+  // for the mirror keys, on any number of ranks. On 2 ranks the local rows and a row's
+  // columns (owned first, then the other ranks') are not in MUMPS's order, and the analysed
+  // pattern was then searched key by key (binary search) and sorted at every analysis
+  // (mumps_pattern.hpp). A row's entries are unique keys: the values do not depend on the order.
+  std::vector<LO> row_order(static_cast<std::size_t>(n_local));
+  std::iota(row_order.begin(), row_order.end(), LO(0));
+  if (!std::is_sorted(e.row_index.begin(), e.row_index.end()))
+    std::sort(row_order.begin(), row_order.end(), [&](LO a, LO b) {
+      return e.row_index[std::size_t(a)] < e.row_index[std::size_t(b)];
+    });
+  std::vector<std::pair<long long, double>> row_entries;
+  for (const LO i : row_order) {
     const long long row = e.row_index[std::size_t(i)];
+    const std::size_t first = e.keys.size();
     for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p) {
       const LO j = local.graph.entries(p);
       const long long col = e.column_index[std::size_t(j)];
       if (symmetric && col > row) {
-        // The mirror keys go last, after the rows' own (in row order, on one rank sorted:
-        // found in one forward walk instead of a binary search each; mumps_pattern.hpp), on
-        // the rank owning their row.
+        // The mirror keys go last, after the rows' own (sorted: found in one forward walk
+        // instead of a binary search each; mumps_pattern.hpp), on the rank owning their row.
         if (local.values(p) != 0.0) continue;
         if (!distributed || owner[std::size_t(j)] == rank) {
           mirror_keys.push_back(col * n + row);
@@ -140,8 +153,18 @@ MumpsEntries mumps_entries(const MumpsNumbering& numbering, const Matrix& K, boo
       e.keys.push_back(row * n + col);
       e.values.push_back(local.values(p));
     }
+    if (!std::is_sorted(e.keys.begin() + std::ptrdiff_t(first), e.keys.end())) {
+      row_entries.clear();
+      for (std::size_t k = first; k < e.keys.size(); ++k)
+        row_entries.emplace_back(e.keys[k], e.values[k]);
+      std::sort(row_entries.begin(), row_entries.end(),
+                [](const auto& a, const auto& b) { return a.first < b.first; });
+      for (std::size_t k = first; k < e.keys.size(); ++k)
+        e.keys[k] = row_entries[k - first].first, e.values[k] = row_entries[k - first].second;
+    }
   }
   if (distributed) send_to_owners(comm, foreign_owners, foreign_keys, mirror_keys);
+  std::sort(mirror_keys.begin(), mirror_keys.end());
   e.keys.insert(e.keys.end(), mirror_keys.begin(), mirror_keys.end());
   e.values.resize(e.keys.size(), 0.0);
   e.sorted_prefix =

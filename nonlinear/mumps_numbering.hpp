@@ -31,15 +31,16 @@ struct MumpsNumbering {
 /// Collective.
 bool renumber(MumpsNumbering& numbering, const Teuchos::RCP<const Map>& row_map, MPI_Comm comm);
 
-/// This rank's entries of K in MUMPS's numbering, 0-based, as keys row · n + col in the
-/// matrix's storage order, with their values. With `symmetric` only the lower triangle
-/// (col ≤ row); an explicit zero above the diagonal stands for its mirror's place in the
-/// pattern (symmetric_condensation.hpp keeps the pattern of rows it eliminates that way, on
-/// the rank owning the row only) and adds the key (col, row) with value 0, after the rows' own,
-/// on the rank owning row col: every key then lives on its row's owner alone, so that a rank's
-/// pattern is the global pattern's part in its rows and an entry that appears in a later
-/// matrix is new on its rank only if it is new to the matrix (else 2 ranks analysed 5 times
-/// where 1 rank analysed 3 times on the 3D Hertz spheres). Collective when `symmetric`.
+/// This rank's entries of K in MUMPS's numbering, 0-based, as keys row · n + col in increasing
+/// order (rows by MUMPS index, each row's keys sorted), with their values. With `symmetric` only
+/// the lower triangle (col ≤ row); an explicit zero above the diagonal stands for its mirror's
+/// place in the pattern (symmetric_condensation.hpp keeps the pattern of rows it eliminates that
+/// way, on the rank owning the row only) and adds the key (col, row) with value 0, after the rows'
+/// own (sorted among themselves), on the rank owning row col: every key then lives on its row's
+/// owner alone, so that a rank's pattern is the global pattern's part in its rows and an entry that
+/// appears in a later matrix is new on its rank only if it is new to the matrix (else 2 ranks
+/// analysed 5 times where 1 rank analysed 3 times on the 3D Hertz spheres). Collective when
+/// `symmetric`.
 struct MumpsEntries {
   std::vector<long long> row_index;     ///< MUMPS index of every owned row
   std::vector<long long> column_index;  ///< MUMPS index of every column of K's column map
