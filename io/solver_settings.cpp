@@ -69,7 +69,8 @@ LinearSolverSettings read_linear(const Teuchos::ParameterList& list, const std::
       list, path, file,
       {Key::choice("type", {"auto", "mumps", "amesos2", "belos"}, "linear solver").defaults("auto"),
        Key::boolean("condense_multipliers"), Key::boolean("reuse_preconditioner").defaults("false"),
-       Key::section("MUMPS"), Key::section("Belos"), Key::section("MueLu")});
+       Key::boolean("symmetric_reduction").defaults("true"), Key::section("MUMPS"),
+       Key::section("Belos"), Key::section("MueLu")});
   LinearSolverSettings settings;
   settings.where = (file.empty() ? "" : file + ": ") + path;
   const std::string type = checked.string("type");
@@ -90,6 +91,7 @@ LinearSolverSettings read_linear(const Teuchos::ParameterList& list, const std::
   if (checked.has("condense_multipliers"))
     settings.condense_multipliers = checked.boolean("condense_multipliers");
   settings.reuse_preconditioner = checked.boolean("reuse_preconditioner");
+  settings.symmetric_reduction = checked.boolean("symmetric_reduction");
   return settings;
 }
 

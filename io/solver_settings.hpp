@@ -59,6 +59,9 @@ struct LinearSolverSettings {
   /// `condense_multipliers`; absent: the solver's default (linear_solver.hpp).
   std::optional<bool> condense_multipliers;
   bool reuse_preconditioner = false;  ///< `reuse_preconditioner`
+  /// `symmetric_reduction`: condensed solves (distributed MUMPS, Belos) try the symmetric
+  /// reduction first (linear_solver.hpp).
+  bool symmetric_reduction = true;
   /// "<file>: grout/solver/Linear Solver", the prefix of the solvers' input errors.
   std::string where = "grout/solver/Linear Solver";
 };

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <set>
 #include <stdexcept>
 
@@ -22,23 +23,34 @@
 namespace grout {
 namespace {
 
-// FNV-1a hash of this rank's rows of K's sparsity pattern (row and column global ids).
-std::uint64_t local_pattern_fingerprint(const Matrix& K) {
-  std::uint64_t h = 1469598103934665603ull;
-  const auto mix = [&](long long v) {
-    for (int byte = 0; byte < 8; ++byte, v >>= 8)
-      h = (h ^ std::uint64_t(v & 0xff)) * 1099511628211ull;
+// FNV-1a hashes of this rank's rows of K: its sparsity pattern (row and column global ids),
+// and the pattern with the values' bits.
+struct Fingerprint {
+  std::uint64_t pattern = 0, values = 0;
+};
+
+Fingerprint local_fingerprint(const Matrix& K) {
+  std::uint64_t h = 1469598103934665603ull, v = h;
+  const auto mix = [](std::uint64_t& hash, std::uint64_t word) {
+    for (int byte = 0; byte < 8; ++byte, word >>= 8)
+      hash = (hash ^ (word & 0xff)) * 1099511628211ull;
   };
   const auto& row_map = *K.getRowMap();
   const auto& col_map = *K.getColMap();
   const auto local = K.getLocalMatrixHost();
   for (LO i = 0; i < LO(row_map.getNodeNumElements()); ++i) {
-    mix(row_map.getGlobalElement(i));
-    for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p)
-      mix(col_map.getGlobalElement(local.graph.entries(p)));
-    mix(-1);
+    mix(h, std::uint64_t(row_map.getGlobalElement(i)));
+    for (auto p = local.graph.row_map(i); p < local.graph.row_map(i + 1); ++p) {
+      mix(h, std::uint64_t(col_map.getGlobalElement(local.graph.entries(p))));
+      std::uint64_t bits;
+      const double value = local.values(p);
+      std::memcpy(&bits, &value, sizeof bits);
+      mix(v, bits);
+    }
+    mix(h, ~std::uint64_t(0));
   }
-  return h;
+  mix(v, h);
+  return {h, v};
 }
 
 class BelosMueLuSolver : public IterativeSolver {
@@ -46,6 +58,7 @@ class BelosMueLuSolver : public IterativeSolver {
   int solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
             const std::string& belos_type, const IterativeSettings& settings) override;
   int reused_hierarchies() const override { return reused_; }
+  int kept_hierarchies() const override { return kept_; }
 
   bool is_belos_solver(const std::string& name) const override {
     return Factory().isSupported(name);
@@ -113,9 +126,10 @@ class BelosMueLuSolver : public IterativeSolver {
   // The last MueLu hierarchy, for reuse_preconditioner.
   Teuchos::RCP<MueLu::TpetraOperator<double, LO, GO, Node>> hierarchy_;
   Teuchos::RCP<const Map> hierarchy_map_;
-  std::uint64_t hierarchy_pattern_ = 0;  // local_pattern_fingerprint of its matrix
+  Fingerprint hierarchy_print_;  // local_fingerprint of its matrix
   int fresh_iterations_ = 0;
   int reused_ = 0;  // solves that reused the hierarchy
+  int kept_ = 0;    // of those, with the same values: no set-up
 };
 
 int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
@@ -146,22 +160,28 @@ int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b
     muelu.set("coarse: type", "RELAXATION");  // never KLU2 on a multi-rank communicator
   const auto K_crs = Teuchos::rcp_const_cast<Matrix>(K);
   Teuchos::RCP<Operator> K_op = K_crs;
-  // Reuse (Newton iterations after the first): the last hierarchy's prolongators and
-  // restrictions, with the coarse operators and the smoothers recomputed from K (MueLu
-  // `reuse: type: RP`), when K has the same unknowns and the same sparsity pattern (RP keeps
-  // the coarse matrices' patterns; a changed active set changes K's). A reused hierarchy that
-  // does not converge is rebuilt and the system solved again; one that needs more than twice
-  // the iterations of its fresh build (+10) is rebuilt at the next solve.
+  // Reuse (Newton iterations after the first): a system equal to the last one, value for
+  // value (small strain on the reference geometry with an unchanged active set: the next
+  // Newton iteration, the next load step's first), keeps the whole hierarchy, with no set-up.
+  // One with the same unknowns and the same sparsity pattern but other values keeps the last
+  // hierarchy's prolongators and restrictions, with the coarse operators and the smoothers
+  // recomputed from K (MueLu `reuse: type: RP`; RP keeps the coarse matrices' patterns: a
+  // changed active set changes K's). A reused hierarchy that does not converge is rebuilt and
+  // the system solved again; one that needs more than twice the iterations of its fresh build
+  // (+10) is rebuilt at the next solve.
   const bool reuse_allowed = settings.reuse_preconditioner;
   if (reuse_allowed && !muelu.isParameter("reuse: type")) muelu.set("reuse: type", "RP");
-  const std::uint64_t pattern = reuse_allowed ? local_pattern_fingerprint(*K) : 0;
+  const Fingerprint print = reuse_allowed ? local_fingerprint(*K) : Fingerprint();
   bool may_reuse =
       reuse_allowed && !hierarchy_.is_null() && hierarchy_map_->isSameAs(*K->getRowMap());
+  bool same_values = false;
   if (may_reuse) {  // MueLu's RP reuse keeps the coarse patterns: K's must not change
-    int same = pattern == hierarchy_pattern_ ? 1 : 0, all_same = 0;
-    Teuchos::reduceAll(*K->getRowMap()->getComm(), Teuchos::REDUCE_MIN, same,
-                       Teuchos::outArg(all_same));
-    may_reuse = all_same == 1;
+    int same[2] = {print.pattern == hierarchy_print_.pattern ? 1 : 0,
+                   print.values == hierarchy_print_.values ? 1 : 0};
+    int all_same[2] = {0, 0};
+    Teuchos::reduceAll(*K->getRowMap()->getComm(), Teuchos::REDUCE_MIN, 2, same, all_same);
+    may_reuse = all_same[0] == 1;
+    same_values = may_reuse && all_same[1] == 1;
   }
   Factory factory;
   auto params = Teuchos::rcp(new Teuchos::ParameterList(settings.belos));
@@ -173,13 +193,17 @@ int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b
       Teuchos::TimeMonitor setup_timer(
           *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: MueLu set-up"));
       if (reused) {
-        MueLu::ReuseTpetraPreconditioner(K_crs, *hierarchy_);
+        // The same values: the hierarchy's own level-0 matrix equals K, nothing to redo.
+        if (same_values)
+          ++kept_;
+        else
+          MueLu::ReuseTpetraPreconditioner(K_crs, *hierarchy_);
         ++reused_;
       } else {
         hierarchy_ = MueLu::CreateTpetraPreconditioner(K_op, muelu);
         hierarchy_map_ = K->getRowMap();
-        hierarchy_pattern_ = pattern;
       }
+      hierarchy_print_ = print;
     }
     auto x_rcp = Teuchos::rcpFromRef(x);
     auto b_rcp = Teuchos::rcpFromRef(b);

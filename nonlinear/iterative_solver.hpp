@@ -46,6 +46,9 @@ class IterativeSolver {
                     const std::string& belos_type, const IterativeSettings& settings) = 0;
   /// Solves that reused a MueLu hierarchy, since construction.
   virtual int reused_hierarchies() const = 0;
+  /// Of those, the solves whose system equalled the hierarchy's value for value: the whole
+  /// hierarchy kept, no set-up.
+  virtual int kept_hierarchies() const = 0;
 
   /// Belos's solver names (case-insensitive), to check `Belos/Solver Type` against.
   virtual bool is_belos_solver(const std::string& name) const = 0;
@@ -66,7 +69,7 @@ class IterativeSolver {
 
 /// Bumped whenever IterativeSolver or IterativeSettings change: a module built from other
 /// sources refuses to create a solver (the loader then tries the next directory).
-constexpr int iterative_solver_interface_version = 3;
+constexpr int iterative_solver_interface_version = 4;
 
 }  // namespace grout
 

@@ -153,6 +153,10 @@ int LinearSolver::reused_hierarchies() const {
   return impl_->iterative ? impl_->iterative->reused_hierarchies() : 0;
 }
 
+int LinearSolver::kept_hierarchies() const {
+  return impl_->iterative ? impl_->iterative->kept_hierarchies() : 0;
+}
+
 const std::string& LinearSolver::last_type() const {
   return impl_->last_type;
 }
@@ -179,13 +183,19 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   if (!impl_->condenses(type) || layout.multiplier_pairing.empty())
     return solve_system(K, b, x, type,
                         impl_->settings.belos_solver.empty() ? "CG" : impl_->belos_type);
-  // The distributed MUMPS path first tries the symmetric (null-space) reduction: for
-  // frictionless or tied contact with a fixed pairing and a symmetric stiffness it gives a
-  // symmetric positive (semi)definite K̃, factorised as LDLᵀ with about half the flops of the
-  // LU of the condensed system (docs/performance.md, "Condensed, symmetric and
-  // Schur-updated direct solves"). Anything else (slip, geometry: current) fails its checks
-  // and takes the condensation below.
-  if (type == "mumps" && !impl_->settings.mumps.gather) {
+  // The distributed MUMPS path and the iterative path first try the symmetric (null-space)
+  // reduction: for frictionless or tied contact with a fixed pairing and a symmetric
+  // stiffness it gives a symmetric positive (semi)definite K̃. MUMPS factorises it as LDLᵀ
+  // with about half the flops of the LU of the condensed system (docs/performance.md,
+  // "Condensed, symmetric and Schur-updated direct solves"); Belos solves it with CG and MueLu
+  // with the smoother of a system without multipliers (one sweep of symmetric Gauss–Seidel,
+  // no factorisation to set up: elasticity_preconditioner.hpp), where the condensed system
+  // needs GMRES and ILU(0) (docs/performance.md, "Iterative solver"). Anything else (slip,
+  // geometry: current) fails its checks and takes the condensation below.
+  const bool symmetric_path =
+      impl_->settings.symmetric_reduction &&
+      ((type == "mumps" && !impl_->settings.mumps.gather) || type == "belos");
+  if (symmetric_path) {
     SymmetricCondensation reduction(layout.multiplier_pairing, layout.dofs_per_node);
     bool applies = false;
     {
@@ -194,20 +204,27 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
       applies = reduction.condense(*K, b, rows);
     }
     if (applies) {
-      Teuchos::TimeMonitor solve_timer(
-          *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: symmetric MUMPS"));
-      if (!impl_->mumps_symmetric) {
-        MumpsOptions options = impl_->settings.mumps;
-        options.symmetric = true;
-        // K̃ is SPD and changes between Newton iterations only near the contact interface.
-        options.schur_updates = true;
-        impl_->mumps_symmetric = std::make_unique<MumpsSolver>(options);
-      }
       Vector y(reduction.matrix()->getRowMap());
-      impl_->mumps_symmetric->solve(reduction.matrix(), reduction.rhs(), y);
+      int iterations = 1;
+      if (type == "belos") {
+        iterations =
+            solve_system(reduction.matrix(), reduction.rhs(), y, type,
+                         impl_->settings.belos_solver.empty() ? "CG" : impl_->belos_type, false);
+      } else {
+        Teuchos::TimeMonitor solve_timer(
+            *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: symmetric MUMPS"));
+        if (!impl_->mumps_symmetric) {
+          MumpsOptions options = impl_->settings.mumps;
+          options.symmetric = true;
+          // K̃ is SPD and changes between Newton iterations only near the contact interface.
+          options.schur_updates = true;
+          impl_->mumps_symmetric = std::make_unique<MumpsSolver>(options);
+        }
+        impl_->mumps_symmetric->solve(reduction.matrix(), reduction.rhs(), y);
+      }
       reduction.expand(y, x);
       impl_->last_symmetric = true;
-      return 1;
+      return iterations;
     }
   }
   MultiplierCondensation condensation(layout.multiplier_pairing, layout.dofs_per_node);
@@ -231,7 +248,8 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
 // --- end condensed multipliers ---
 
 int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
-                               const std::string& type, const std::string& belos_type) {
+                               const std::string& type, const std::string& belos_type,
+                               bool multipliers) {
   if (type == "amesos2") {
     solve_gathered(K, b, x, impl_->self_communicator(K->getRowMap()->getComm()),
                    [](const Teuchos::RCP<Matrix>& K_self, Vector& b_self, Vector& x_self) {
@@ -267,7 +285,7 @@ int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector
                                    impl_->layout.node_bodies,
                                    impl_->layout.nodes,
                                    impl_->layout.num_global_nodes,
-                                   !impl_->layout.multiplier_pairing.empty()};
+                                   multipliers && !impl_->layout.multiplier_pairing.empty()};
   try {
     return impl_->iterative_solver().solve(K, b, x, belos_type, settings);
   } catch (const ExitCodeError&) {  // no module, or an error with its own exit code

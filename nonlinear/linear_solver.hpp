@@ -27,10 +27,15 @@
 //                            overrides any of these settings.
 //                            In the module grout_iterative, loaded at the first
 //                            iterative solve (nonlinear/iterative_module.hpp).
-//   reuse_preconditioner: true   (default false; type: belos) a system with the same unknowns
-//                            and sparsity pattern as the last one reuses its MueLu hierarchy's
-//                            prolongators (MueLu `reuse: type: RP`; coarse operators and
-//                            smoothers recomputed); the hierarchy is kept between solves.
+//   reuse_preconditioner: true   (default false; type: belos) the hierarchy is kept between
+//                            solves: a system equal to the last one value for value (small
+//                            strain, unchanged active set) keeps all of it, no set-up; one with
+//                            the same unknowns and sparsity pattern reuses its prolongators
+//                            (MueLu `reuse: type: RP`; coarse operators and smoothers
+//                            recomputed).
+//   symmetric_reduction: true    (default true) condensed solves on the distributed MUMPS path
+//                            and on the iterative path first try the symmetric reduction
+//                            (below); false: always the condensation.
 // --- condensed multipliers (nonlinear/condensed_solve.hpp) ---
 //   condense_multipliers: true   (default: true on the iterative path and the distributed
 //                            MUMPS path, 3D's default; false on the gathered direct solves
@@ -39,10 +44,13 @@
 //                            solved, then λ is recovered. A reduced system left with a zero
 //                            diagonal (not produced by Grout's contact rows) is solved
 //                            directly even with type: belos. On the distributed MUMPS path
-//                            the symmetric reduction (symmetric_condensation.hpp) is tried
-//                            first: frictionless, tied or sticking contact on the reference
-//                            geometry gives a symmetric K̃, factorised as LDLᵀ by a MumpsSolver of
-//                            its own; any other system falls back to the condensation and LU.
+//                            and the iterative path the symmetric reduction
+//                            (symmetric_condensation.hpp) is tried first: frictionless, tied or
+//                            sticking contact on the reference geometry gives a symmetric K̃,
+//                            factorised as LDLᵀ by a MumpsSolver of its own, or solved by CG
+//                            with MueLu smoothed by symmetric Gauss–Seidel (as a system without
+//                            contact); any other system falls back to the condensation and LU
+//                            or GMRES with ILU(0).
 // --- end condensed multipliers ---
 
 #include <Teuchos_ParameterList.hpp>
@@ -97,16 +105,21 @@ class LinearSolver {
 
   /// Solves that reused a MueLu hierarchy (`reuse_preconditioner: true`), since construction.
   int reused_hierarchies() const;
+  /// Of those, the solves of a system equal to the last one value for value (the whole
+  /// hierarchy kept, no set-up).
+  int kept_hierarchies() const;
   /// The type of the last solve (auto resolved): mumps, mumps_gathered, amesos2 or belos;
   /// empty before any solve.
   const std::string& last_type() const;
-  /// Whether the last solve went through the symmetric reduction and MUMPS's LDLᵀ
-  /// (symmetric_condensation.hpp; type mumps, distributed, multipliers condensed).
+  /// Whether the last solve went through the symmetric reduction (symmetric_condensation.hpp;
+  /// multipliers condensed; type mumps, distributed: MUMPS's LDLᵀ; type belos: CG + MueLu).
   bool last_solve_symmetric() const;
 
  private:
+  /// `multipliers`: K may hold condensed multiplier rows (false: the symmetric reduction's K̃,
+  /// smoothed as a system without contact; iterative_solver.hpp).
   int solve_system(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
-                   const std::string& type, const std::string& belos_type);
+                   const std::string& type, const std::string& belos_type, bool multipliers = true);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -23,8 +23,12 @@
 //                              whole iteration / the two solves, max over ranks: on a loaded
 //                              machine closer to the uncontended cost than the wall time
 //   condense_s, muelu_s, krylov_s   inside solve_s (belos): the condensation of the
-//                              multipliers, the MueLu set-up, the Belos iterations
-//   linear_iterations          of the first solve (1 for a direct solver)
+//                              multipliers (or the symmetric reduction, which the frictionless
+//                              case passes: linear_solver.hpp), the MueLu set-up, the Belos
+//                              iterations
+//   symmetric                  1 if the solve took the symmetric reduction
+//   linear_iterations          of the first solve (1 for a direct solver); resolve_iterations
+//                              of the second
 //   residual                   |J dx + F| / |F| of the first solve
 //   diff_vs_mumps              max |dx − dx_mumps| / max |dx_mumps| (solvers after mumps)
 //   maxrss_MB, maxrss_sum_MB   peak resident memory of the process so far (getrusage), max
@@ -40,6 +44,9 @@
 //   GROUT_BENCH_NEWTON_PARAMS=file.xml   a Teuchos XML `Linear Solver` list merged over the
 //                                     bench's (e.g. a MueLu or Belos sublist to try)
 //   GROUT_BENCH_NEWTON_RESOLVE=0      skip the second solve (resolve_s = 0)
+//   GROUT_BENCH_NEWTON_RESOLVE=same   the second solve with the same values (a copy of J: the
+//                                     next iteration or step with an unchanged active set)
+//   GROUT_BENCH_NEWTON_SIZES_3D=list  comma-separated 3D n instead of 14,20,31 (+ 68)
 // belos runs with condense_multipliers: true and its defaults.
 //
 // Benchmarks step/<2d|3d>/<quasi_static|dynamic>/<n>: whole steps on the same meshes and
@@ -259,15 +266,17 @@ void newton_benchmark(benchmark::State& state, int dim, std::string solver_type)
   double condense = 0, muelu = 0, krylov = 0;
   const char* resolve_env = std::getenv("GROUT_BENCH_NEWTON_RESOLVE");
   const bool resolve_wanted = !resolve_env || std::string(resolve_env) != "0";
+  const bool resolve_same = resolve_env && std::string(resolve_env) == "same";
   double iteration_cpu = 0, solve_cpu = 0, resolve_cpu = 0;
-  int iterations = 0;
-  bool ok = true;
+  int iterations = 0, resolve_iterations = 0;
+  bool ok = true, symmetric = false;
   std::string error;
   for (auto _ : state) {
     const double solid0 = timer_seconds("grout: solid assembly");
     const double contact0 = timer_seconds("grout: contact (search, integration, assembly)");
     const double analysis0 = timer_seconds("grout: MUMPS analysis");
-    const double condense0 = timer_seconds("grout: linear solve: condensation");
+    const double condense0 = timer_seconds("grout: linear solve: condensation") +
+                             timer_seconds("grout: linear solve: symmetric reduction");
     const double muelu0 = timer_seconds("grout: linear solve: MueLu set-up");
     const double krylov0 = timer_seconds("grout: linear solve: Krylov iterations");
     iteration_cpu = solve_cpu = resolve_cpu = 0;
@@ -289,20 +298,23 @@ void newton_benchmark(benchmark::State& state, int dim, std::string solver_type)
     LinearSolver linear(solver_params(solver_type), "bench_newton", std::move(layout));
     try {
       solve = timed([&] { iterations = linear.solve(c.J, rhs, dx); }, &solve_cpu);
+      symmetric = linear.last_solve_symmetric();
       iteration_cpu += solve_cpu;
       analysis = max_over_ranks(timer_seconds("grout: MUMPS analysis") - analysis0);
-      condense = max_over_ranks(timer_seconds("grout: linear solve: condensation") - condense0);
+      condense =
+          max_over_ranks(timer_seconds("grout: linear solve: condensation") +
+                         timer_seconds("grout: linear solve: symmetric reduction") - condense0);
       muelu = max_over_ranks(timer_seconds("grout: linear solve: MueLu set-up") - muelu0);
       krylov = max_over_ranks(timer_seconds("grout: linear solve: Krylov iterations") - krylov0);
       if (resolve_wanted) {
         // The same pattern, other values: a Newton iteration with an unchanged active set.
         Matrix J2(*c.J, Teuchos::Copy);
         J2.resumeFill();
-        J2.scale(1.0 + 1e-9);
+        if (!resolve_same) J2.scale(1.0 + 1e-9);
         J2.fillComplete(c.J->getDomainMap(), c.J->getRangeMap());
         Vector dx2(problem.map());
         const auto J2_ptr = Teuchos::rcpFromRef(J2);
-        resolve = timed([&] { linear.solve(J2_ptr, rhs, dx2); }, &resolve_cpu);
+        resolve = timed([&] { resolve_iterations = linear.solve(J2_ptr, rhs, dx2); }, &resolve_cpu);
       }
     } catch (const std::exception& e) {
       ok = false;
@@ -334,6 +346,7 @@ void newton_benchmark(benchmark::State& state, int dim, std::string solver_type)
   state.counters["solve_s"] = solve;
   state.counters["analysis_s"] = analysis;
   state.counters["resolve_s"] = resolve;
+  state.counters["resolve_iterations"] = resolve_iterations;
   state.counters["condense_s"] = condense;
   state.counters["muelu_s"] = muelu;
   state.counters["krylov_s"] = krylov;
@@ -341,6 +354,7 @@ void newton_benchmark(benchmark::State& state, int dim, std::string solver_type)
   state.counters["solve_cpu_s"] = solve_cpu;
   state.counters["resolve_cpu_s"] = resolve_cpu;
   state.counters["linear_iterations"] = iterations;
+  state.counters["symmetric"] = symmetric ? 1 : 0;
   state.counters["maxrss_MB"] = max_over_ranks(peak_rss_mb());
   state.counters["maxrss_sum_MB"] = sum_over_ranks(peak_rss_mb());
   state.counters["setup_s"] = c.setup_seconds;
@@ -480,6 +494,12 @@ void register_benchmarks() {
   // dofs ≈ 2 (n+1)² · 2 (2D), 2 (n+1)² (n/2+1) · 3 (3D), plus the multipliers.
   for (const int dim : {2, 3}) {
     std::vector<int> sizes = dim == 2 ? std::vector<int>{50, 160} : std::vector<int>{14, 20, 31};
+    if (const char* list = std::getenv("GROUT_BENCH_NEWTON_SIZES_3D"); list && dim == 3) {
+      sizes.clear();
+      std::stringstream items(list);
+      for (std::string item; std::getline(items, item, ',');)
+        if (!item.empty()) sizes.push_back(std::stoi(item));
+    }
     if (large) sizes.push_back(dim == 2 ? 500 : 68);
     for (const int n : sizes) {  // per case, built once for all solvers
       for (const std::string& solver : solvers) {

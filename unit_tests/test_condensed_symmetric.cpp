@@ -156,6 +156,20 @@ void check_applies(int dim, ContactKind type, const std::string& label, int k = 
   EXPECT_TRUE(solver.last_solve_symmetric()) << label;
   EXPECT_LT(relative_difference(x_solver, x_full, mc.n_u, false), 1e-10) << label << " (u)";
   EXPECT_LT(relative_difference(x_solver, x_full, mc.n_u, true), 1e-10) << label << " (lambda)";
+
+  // The iterative path takes it too (CG on K̃), and the condensation (GMRES) when told not to;
+  // both to Belos's tolerance 1e-12 of the direct solve's answer.
+  for (const bool reduce : {true, false}) {
+    Teuchos::ParameterList belos = params("belos", true);
+    belos.set("symmetric_reduction", reduce);
+    LinearSolver iterative(belos, "test", pairing_layout(mc.pairing, dim));
+    Vector x_belos(map);
+    iterative.solve(mc.J, *mc.b, x_belos);
+    EXPECT_EQ(iterative.last_solve_symmetric(), reduce) << label;
+    EXPECT_LT(relative_difference(x_belos, x_full, mc.n_u, false), 1e-9) << label << " (u, belos)";
+    EXPECT_LT(relative_difference(x_belos, x_full, mc.n_u, true), 1e-9)
+        << label << " (lambda, belos)";
+  }
   if (map->getComm()->getRank() == 0)
     std::printf(
         "[symmetric] %s: active %d, %d slave nodes, %d eliminated dofs, LDLt %.3g flops, LU "
@@ -252,6 +266,37 @@ TEST(SymmetricCondensation, EqualsTheTripleProduct) {
     check_against_product(dim, ContactKind::frictionless, std::to_string(dim) + "D frictionless");
     check_against_product(dim, ContactKind::tied, std::to_string(dim) + "D tied");
   }
+}
+
+// reuse_preconditioner on the iterative path: a Jacobian equal to the last one value for value
+// (small strain, an unchanged active set: the next Newton iteration, the next load step's
+// first) keeps the whole MueLu hierarchy, no set-up, and gives the same answer bit for bit;
+// one with other values (the symmetric reduction declines a scaled, non-symmetric J: the
+// condensation, other unknowns) builds a new one.
+TEST(SymmetricCondensation, IterativePathKeepsTheHierarchyForTheSameSystem) {
+  Case mc;
+  build(mc, 3, ContactKind::frictionless, 0.0, ContactGeometry::reference, 2);
+  const auto map = mc.J->getRowMap();
+  Teuchos::ParameterList p = params("belos", true);
+  p.set("reuse_preconditioner", true);
+  p.sublist("MueLu").set("coarse: max size", 50);  // a multilevel hierarchy
+  LinearSolver solver(p, "test", pairing_layout(mc.pairing, 3));
+  Vector x1(map), x2(map), x_full(map);
+  LinearSolver full(params("amesos2", false), "test", {});
+  full.solve(mc.J, *mc.b, x_full);
+  const int first = solver.solve(mc.J, *mc.b, x1);
+  EXPECT_TRUE(solver.last_solve_symmetric());
+  EXPECT_EQ(solver.kept_hierarchies(), 0);
+  const auto J_copy = Teuchos::rcp(new Matrix(*mc.J, Teuchos::Copy));
+  const int second = solver.solve(J_copy, *mc.b, x2);
+  EXPECT_EQ(solver.reused_hierarchies(), 1);
+  EXPECT_EQ(solver.kept_hierarchies(), 1);
+  EXPECT_EQ(first, second);
+  Vector d(map);
+  d.update(1.0, x1, -1.0, x2, 0.0);
+  EXPECT_EQ(d.normInf(), 0.0);
+  EXPECT_LT(relative_difference(x2, x_full, mc.n_u, false), 1e-9);
+  EXPECT_LT(relative_difference(x2, x_full, mc.n_u, true), 1e-9);
 }
 
 TEST(SymmetricCondensation, Frictionless2D) {

@@ -60,6 +60,7 @@ TEST(SolverSettings, DefaultsAreTheSolversDefaults) {
   EXPECT_EQ(s.linear.muelu.numParams(), 0);
   EXPECT_FALSE(s.linear.condense_multipliers.has_value());
   EXPECT_FALSE(s.linear.reuse_preconditioner);
+  EXPECT_TRUE(s.linear.symmetric_reduction);
   EXPECT_EQ(s.linear.where, "case.yaml: grout/solver/Linear Solver");
 }
 
@@ -80,6 +81,7 @@ TEST(SolverSettings, ReadsEveryKeyTyped) {
       type: belos
       condense_multipliers: false
       reuse_preconditioner: true
+      symmetric_reduction: false
       MUMPS: {ordering: amd, gather: true, symmetric: false}
       Belos: {Solver Type: GMRES, Maximum Iterations: 50, Convergence Tolerance: 1.0e-9}
       MueLu:
@@ -105,6 +107,7 @@ TEST(SolverSettings, ReadsEveryKeyTyped) {
   EXPECT_EQ(s.linear.type, LinearSolverType::belos);
   EXPECT_EQ(s.linear.condense_multipliers, std::optional<bool>(false));
   EXPECT_TRUE(s.linear.reuse_preconditioner);
+  EXPECT_FALSE(s.linear.symmetric_reduction);
   EXPECT_EQ(s.linear.mumps.ordering, "amd");
   EXPECT_TRUE(s.linear.mumps.gather);
   EXPECT_TRUE(s.linear.mumps_given);
@@ -143,12 +146,12 @@ TEST(SolverSettings, LinearSolverShapeAndType) {
 TEST(SolverSettings, MisspeltKeysAreNamedWithASuggestion) {
   expect_error("{Linear Solver: {typ: mumps}}",
                "case.yaml: grout/solver/Linear Solver: unknown key 'typ' (expected one of: type, "
-               "condense_multipliers, reuse_preconditioner, MUMPS, Belos, MueLu); did you mean "
-               "'type'?");
+               "condense_multipliers, reuse_preconditioner, symmetric_reduction, MUMPS, Belos, "
+               "MueLu); did you mean 'type'?");
   expect_error("{Linear Solver: {condense_multiplier: true}}",
                "case.yaml: grout/solver/Linear Solver: unknown key 'condense_multiplier' (expected "
-               "one of: type, condense_multipliers, reuse_preconditioner, MUMPS, Belos, MueLu); "
-               "did you mean 'condense_multipliers'?");
+               "one of: type, condense_multipliers, reuse_preconditioner, symmetric_reduction, "
+               "MUMPS, Belos, MueLu); did you mean 'condense_multipliers'?");
   expect_error("{Linear Solver: {MUMPS: {orderin: amd}}}",
                "case.yaml: grout/solver/Linear Solver/MUMPS: unknown key 'orderin' (expected one "
                "of: ordering, symmetric, gather); did you mean 'ordering'?");
