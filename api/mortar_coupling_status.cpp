@@ -13,49 +13,11 @@
 #include <limits>
 #include <string>
 
+#include "kernels/face_node_weight.hpp"
 #include "kernels/face_normal.hpp"
 #include "mortar_coupling_impl.hpp"
 
 namespace grout {
-
-namespace {
-
-/// ∫ N_a dA over one face (x: its nodes' coordinates): LINE2 L/2, TRI3 A/3, QUAD4 by a 3 × 3
-/// Gauss rule of N_a |x_ξ × x_η| (exact for parallelograms).
-double node_weight(int dim, int n, const double x[][3], int a) {
-  const auto norm = [](const double v[3]) {
-    return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  };
-  if (dim == 2) {
-    const double d[3] = {x[1][0] - x[0][0], x[1][1] - x[0][1], 0.0};
-    return 0.5 * norm(d);
-  }
-  if (n == 3) {
-    double u[3], v[3], c[3];
-    for (int d = 0; d < 3; ++d) u[d] = x[1][d] - x[0][d], v[d] = x[2][d] - x[0][d];
-    cross_product(u, v, c);
-    return norm(c) / 6.0;
-  }
-  static const double xi_node[4] = {-1.0, 1.0, 1.0, -1.0}, eta_node[4] = {-1.0, -1.0, 1.0, 1.0};
-  static const double g[3] = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)},
-                      wg[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
-  double w = 0.0;
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 3; ++k) {
-      double t1[3] = {0.0, 0.0, 0.0}, t2[3] = {0.0, 0.0, 0.0}, c[3];
-      for (int b = 0; b < 4; ++b)
-        for (int d = 0; d < 3; ++d) {
-          t1[d] += 0.25 * xi_node[b] * (1.0 + eta_node[b] * g[k]) * x[b][d];
-          t2[d] += 0.25 * eta_node[b] * (1.0 + xi_node[b] * g[i]) * x[b][d];
-        }
-      cross_product(t1, t2, c);
-      const double N = 0.25 * (1.0 + xi_node[a] * g[i]) * (1.0 + eta_node[a] * g[k]);
-      w += wg[i] * wg[k] * N * norm(c);
-    }
-  return w;
-}
-
-}  // namespace
 
 void MortarCoupling::Impl::fill_row_status() {
   const std::size_t n_rows = slave.n_nodes;
@@ -74,7 +36,7 @@ void MortarCoupling::Impl::fill_row_status() {
         const int i = position_of(surface.slave.nodes[f][b]);
         for (int d = 0; d < dim; ++d) xf[b][d] = options.derivatives ? x[i][d] : coords(i, d);
       }
-      w += node_weight(dim, n, xf, a);
+      w += face_node_weight(dim, n, xf, a);
     }
     cw[2 * r] = c, cw[2 * r + 1] = w;
   }

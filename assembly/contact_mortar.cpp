@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "kernels/coarse_search.hpp"
+#include "kernels/face_node_weight.hpp"
 #include "kernels/face_normal.hpp"
 #include "kernels/mortar_pair_gradient.hpp"
 #include "kernels/slave_frames.hpp"
@@ -77,7 +78,7 @@ bool shares_node(const ContactSurface& s, int f, int g) {
 }
 
 // ... their element normals face each other at positions x, n_f·n_g < 0 (the two flanks of a
-// fold pair, neighbours round a bend do not) ...
+// fold pair, neighbours round a bend do not; for two bodies too: see find_candidates) ...
 bool faces_face(const ContactSurface& s, int f, int g,
                 const std::vector<std::array<double, 3>>& x) {
   const auto normal = [&](const SurfaceFaces& faces, int i, double n[3]) {
@@ -127,13 +128,19 @@ Candidates find_candidates(const ContactSurface& s, const std::vector<std::array
     auto& m = c.masters[k];
     std::sort(m.begin(), m.end());
     m.erase(std::unique(m.begin(), m.end()), m.end());
-    if (!s.self) continue;
+    if (s.type == ContactKind::tied) continue;
     const int f = c.evaluated[k];
+    // Contact pairs face each other (self-contact and two bodies alike): a master face whose
+    // normal does not oppose the slave face's lies behind it or beside it (through the slave's
+    // own wall: the crossed tubes' upper flank paired with the lower tube under it, README of
+    // inputs/self_contact). Its projected overlap vanishes as it turns edge-on (n_f·n_g = 0),
+    // so dropping it there leaves D and M continuous.
     m.erase(std::remove_if(m.begin(), m.end(),
                            [&](int g) {
                              const bool facing = faces_face(s, f, g, x) ||
                                                  (search_x && faces_face(s, f, g, *search_x));
-                             return !facing || shares_node(s, f, g) || !on_sides(s, f, g);
+                             return !facing ||
+                                    (s.self && (shares_node(s, f, g) || !on_sides(s, f, g)));
                            }),
             m.end());
   }
@@ -297,6 +304,24 @@ void add_pairs(const ContactSurface& s, const Candidates& candidates,
   }
 }
 
+// w_j = Σ_e ∫_e N¹_j dA over the faces of slave node j (index in s.slave_nodes) at positions x
+// (dA = 2π r ds when axisymmetric).
+double slave_node_weight(const ContactSurface& s, int j,
+                         const std::vector<std::array<double, 3>>& x, bool axisymmetric) {
+  double w = 0.0;
+  for (int f : s.slave_node_faces[j]) {
+    double p[max_face_nodes][3] = {};
+    int a = -1;
+    for (int b = 0; b < s.slave.num_nodes[f]; ++b) {
+      const std::array<double, 3>& xb = x[position_of(s, s.slave.nodes[f][b])];
+      for (int d = 0; d < 3; ++d) p[b][d] = xb[d];
+      if (s.slave.nodes[f][b] == s.slave_nodes[j]) a = b;
+    }
+    if (a >= 0) w += face_node_weight(s.dimension, s.slave.num_nodes[f], p, a, axisymmetric);
+  }
+  return w;
+}
+
 }  // namespace
 
 ContactMortar evaluate_contact_mortar(const ContactSurface& s,
@@ -319,6 +344,8 @@ ContactMortar evaluate_contact_mortar(const ContactSurface& s,
     if (is_framed[j]) framed.push_back(j);
   const auto coords = on_device(coordinate_view(s, x));
   evaluate_frames(s, framed, coords, options.derivatives, result.frames);
+  result.W.assign(n_slave_nodes, 0.0);
+  for (int j : framed) result.W[j] = slave_node_weight(s, j, x, options.mortar.axisymmetric);
 
   // Pairs in (slave face, master face) order: the master faces are in id order, so every
   // sum over pairs runs in the same order however the faces are distributed.

@@ -39,11 +39,32 @@ struct ContactMortarOptions {
 };
 
 struct ContactMortar {
-  std::vector<SlaveFrame> frames;                        ///< per slave node
-  std::vector<MortarValue> D;                            ///< D_jj per slave node
+  std::vector<SlaveFrame> frames;  ///< per slave node
+  std::vector<MortarValue> D;      ///< D_jj per slave node
+  /// w_j = ∫ N¹_j dA over the slave node's faces (face_node_weight), per slave node: D_jj = w_j
+  /// when the faces are fully covered (0 for nodes of no evaluated face).
+  std::vector<double> W;
   std::map<std::pair<int, GlobalIndex>, MortarValue> M;  ///< (slave node index, master node)
   int pairs = 0;                                         ///< pairs with a non-empty overlap
 };
+
+/// Dual coverage a slave node needs to count as paired in the contact rows (has_master).
+constexpr double min_dual_coverage = 0.5;
+
+/// \brief Whether slave node j has a master whose nodal gap g_j = g̃_j / D_jj the contact rows
+/// may use: D_jj > D_tol (the driver's "no master" tolerance) and, for contact (`coverage`
+/// true; tied rows pass false), D_jj ≥ min_dual_coverage · w_j. With dual multipliers a node
+/// whose faces a master covers only in part has D_jj = ∫_cov Φ_j dA, and Φ_j changes sign on
+/// each face, so g̃_j / D_jj is not a mean of the gap over the covered part: where the gap
+/// varies across a small covered part it is an extrapolation that can lie far outside the
+/// gap's range (a false penetration; docs/embedding.md, "Partly covered rows"). The crossed
+/// tubes' flank nodes, covered by slivers of the lower tube's steep faces, closed this way
+/// 4 cm clear of it (inputs/self_contact/README.md, "Step control on this path"). Fully
+/// covered nodes (D_jj = w_j) are unaffected.
+inline bool has_master(const ContactMortar& m, int j, double D_tol, bool coverage) {
+  const double D = m.D[j].value;
+  return D > D_tol && (!coverage || D >= min_dual_coverage * m.W[j]);
+}
 
 /// Sorts g by dof and sums the entries of each dof (in their order in g, so the result is
 /// deterministic), dropping exact zeros: each dof then appears once.

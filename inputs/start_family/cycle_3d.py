@@ -9,13 +9,16 @@ partly covered slave face and shows a false penetration (g = -6.7e-3, from the d
 the partly covered face): closed, it pulls (lambda_n = -165) and loses its master; open, it
 penetrates again. Without the active-set policy's cycle rule (nonlinear/active_set_cycles.hpp)
 the step cycled 52 <-> 53 active nodes for 25 iterations, then 25 more with the line search,
-and converged only after a cut-back (4 steps, 63 Newton iterations).
+and converged only after a cut-back (4 steps, 63 Newton iterations); with the rule it fixed node
+517 open at iterate 5 of step 2. Since the partly covered node rule (docs/design.md, "Rows with
+nothing to hold": a contact node with D_jj < 0.5 of its faces' integral of N_j has no master;
+node 517 has 7.6e-5 of about 1e-3) node 517 has no master there, and nothing cycles.
 
 Pass:
 - the run exits 0 with the input's 3 steps (no cut-back) and no retry with the line search;
-- the rule fixed one slave node, and at that step its true clearance z + u_z above the block
-  (whose top is z = 0) is positive: the fixed state, open, is the physical one;
-- at every converged step every other slave node satisfies the contact conditions to the
+- the cycle rule fixes no node, and node 517 is open at step 2 with a positive true clearance
+  z + u_z above the block (whose top is z = 0);
+- at every converged step every slave node satisfies the contact conditions to the
   Newton tolerance: closed nodes have |g| <= 1e-10 h, open ones |lambda_n| <= 1e-10 max lambda_n
   and g >= -1e-10 h;
 - the support reaction equals the load to 1e-6 and Hertz' a is within 5 % (p0 is printed:
@@ -56,20 +59,18 @@ def check(v, d, h, area):
     if "retrying with line search" in log:
         failures.append("a step was retried with the line search")
     fixed = re.findall(r"contact: (\d+) slave node\(s\) cycling.*?; node (\d+) fixed (\w+)", log)
-    if len(fixed) != 1 or fixed[0][0] != "1":
-        failures.append("expected the cycle rule to fix one node once, got %r" % (fixed,))
+    if fixed:
+        failures.append("the cycle rule fixed %r: node 517's false penetration is back" % (fixed,))
     res = Results(os.path.join(d, "out", "result.e"))
     s = cc.side_set_nodes(res, "upper_contact")
     xyz = res.coordinates()
-    fixed_node = int(fixed[0][1]) - 1 if len(fixed) == 1 else -1
+    fixed_node = 517 - 1  # the node that cycled before the partly covered node rule
     for step in range(len(res.times())):
         status = res.nodal("contact_status", step)
         gap = res.nodal("normal_gap", step)
         pressure = res.nodal("contact_pressure", step)
         p_tol = 1e-10 * np.abs(pressure[s]).max()
         for n in s:
-            if n == fixed_node:
-                continue
             bad = (abs(gap[n]) > GAP_TOL * h if status[n] != 0
                    else abs(pressure[n]) > p_tol or gap[n] < -GAP_TOL * h)
             if bad:
@@ -78,13 +79,13 @@ def check(v, d, h, area):
     if fixed_node >= 0:
         step = 1  # step 2 cycles
         clearance = xyz[2, fixed_node] + res.nodal("displ_z", step)[fixed_node]
-        print("fixed node %d at step 2: status %g, pressure %g, gap %.3g, clearance z + u_z %.3g"
-              % (fixed_node + 1, res.nodal("contact_status", step)[fixed_node],
-                 res.nodal("contact_pressure", step)[fixed_node],
+        status = res.nodal("contact_status", step)[fixed_node]
+        print("node %d at step 2: status %g, pressure %g, gap %.3g, clearance z + u_z %.3g"
+              % (fixed_node + 1, status, res.nodal("contact_pressure", step)[fixed_node],
                  res.nodal("normal_gap", step)[fixed_node], clearance))
-        if fixed[0][2] != "open" or not clearance > 0.0:
-            failures.append("node %d fixed %s with clearance %.3g" % (
-                fixed_node + 1, fixed[0][2], clearance))
+        if status != 0 or not clearance > 0.0:
+            failures.append("node %d status %g with clearance %.3g" % (
+                fixed_node + 1, status, clearance))
     ea, ep, em, er, n_in, a_fe, p0_fe = s3.check_3d(
         v, os.path.join(d, "out", "result.e"), "upper_contact", "lower_bottom_nodes", area)
     print("a %.4g (err %.2f %%), p0 %.4g (err %.2f %%), |R| - F %.1e, %d slave nodes in contact, "
