@@ -303,6 +303,10 @@ void run(const std::string& input_path, const std::string& output_dir, bool time
   } else {
     solve_load_steps(problem, linear, newton, stepping, write_step);
   }
+  if (timers) {  // collective: after the solve, with the contact nodes it reached
+    const std::string held = problem.describe_prescribed_holdings();
+    if (root) std::printf("%s", held.c_str());
+  }
   if (root) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

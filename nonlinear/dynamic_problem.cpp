@@ -112,7 +112,6 @@ bool DynamicProblem::residual(const Vector& x, Vector& F) {
 bool DynamicProblem::jacobian(const Vector& x, Teuchos::RCP<Matrix>& J) {
   if (!problem_.jacobian(x, J)) return false;
   const double c = integrator_->mass_factor(dt_), scale = 1.0 - integrator_->alpha_f();
-  const auto& prescribed = problem_.prescribed();
   const auto& row_map = *J->getRowMap();
   J->resumeFill();
   {
@@ -134,7 +133,7 @@ bool DynamicProblem::jacobian(const Vector& x, Teuchos::RCP<Matrix>& J) {
     cols.clear(), vals.clear();
     for (std::size_t k = 0; k < indices.extent(0); ++k) {
       const GO col = mass_cols.getGlobalElement(indices(k));
-      if (!std::isnan(prescribed[col]) || values(k) == 0.0) continue;
+      if (mass_col_fixed_[std::size_t(indices(k))] || values(k) == 0.0) continue;
       cols.push_back(col);
       vals.push_back(c * values(k));
     }
@@ -149,10 +148,15 @@ void DynamicProblem::begin_step(double t, Vector& x) {
   t_next_ = t;
   dt_ = t - t_;
   problem_.begin_step(t, x);
+  // The mass matrix's columns are the solid's (owned and ghost dofs): all held.
   const auto& prescribed = problem_.prescribed();
   const auto& u_map = *mass_->getRowMap();
   for (int i = 0; i < num_owned_u_; ++i)
-    free_[i] = std::isnan(prescribed[u_map.getGlobalElement(i)]) ? 1 : 0;
+    free_[i] = prescribed.fixed(u_map.getGlobalElement(i)) ? 0 : 1;
+  const auto& mass_cols = *mass_->getColMap();
+  mass_col_fixed_.resize(mass_cols.getNodeNumElements());
+  for (std::size_t k = 0; k < mass_col_fixed_.size(); ++k)
+    mass_col_fixed_[k] = prescribed.fixed(mass_cols.getGlobalElement(LO(k))) ? 1 : 0;
 }
 
 void DynamicProblem::start(Vector& x0, LinearSolver& linear) {
@@ -183,7 +187,7 @@ void DynamicProblem::start(Vector& x0, LinearSolver& linear) {
     const auto& cols = *mass_free_->getColMap();
     std::vector<double> delta(cols.getNodeNumElements(), std::numeric_limits<double>::quiet_NaN());
     for (std::size_t k = 0; k < delta.size(); ++k)
-      if (!std::isnan(problem_.prescribed()[cols.getGlobalElement(LO(k))])) delta[k] = 0.0;
+      if (problem_.prescribed().fixed(cols.getGlobalElement(LO(k)))) delta[k] = 0.0;
     apply_dirichlet(*mass_free_, rhs, delta);
   }
   if (rhs.normInf() > 0.0) linear.solve(mass_free_, rhs, *a_);

@@ -90,8 +90,9 @@ class DynamicProblem : public NonlinearProblem {
   double t_ = 0.0, t_next_ = 0.0, dt_ = 0.0;
   int dim_ = 2;
   int num_owned_u_ = 0;
-  std::vector<char> free_;  ///< per owned u dof, at the current step
-  std::vector<int> body_;   ///< per owned u dof: its body (io/mesh_bodies.hpp)
+  std::vector<char> free_;            ///< per owned u dof, at the current step
+  std::vector<char> mass_col_fixed_;  ///< per column of M: a prescribed dof
+  std::vector<int> body_;             ///< per owned u dof: its body (io/mesh_bodies.hpp)
   int num_bodies_ = 0;
   Teuchos::RCP<Vector> u_, v_, a_;   ///< state at t_n (owned u map)
   Teuchos::RCP<Vector> f_static_n_;  ///< static u-row force at t_n (static_force)
