@@ -16,8 +16,6 @@ MeshChoice choose_mesh(const Input& input, const std::function<long long()>& num
     if (c.self) return replicated("self-contact");
     if (c.type == ContactKind::tied) return replicated("tied contact");
   }
-  if (input.output.parallel == OutputParallel::per_rank)
-    return replicated("output/parallel: per_rank");
   // With contact, the iterative path's layout still takes every node's coordinates and body.
   // The unknowns: the displacements, num_nodes * dim; the multipliers come on top, which the
   // driver counts on the distributed mesh (iterative_for_unknowns).
