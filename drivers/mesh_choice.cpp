@@ -11,7 +11,7 @@ MeshChoice choose_mesh(const Input& input, const std::function<long long()>& num
                        bool forced_replicated) {
   const auto replicated = [](std::string reason) { return MeshChoice{false, std::move(reason)}; };
   if (forced_replicated) return replicated("GROUT_MESH=replicated");
-  if (input.dynamics.enabled) return replicated("dynamics");
+  if (input.dynamics.enabled && !input.contact.empty()) return replicated("dynamics with contact");
   for (const ContactInput& c : input.contact) {
     if (c.self) return replicated("self-contact");
     if (c.type == ContactKind::tied) return replicated("tied contact");

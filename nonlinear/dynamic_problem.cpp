@@ -35,7 +35,7 @@ DynamicProblem::DynamicProblem(MechanicsProblem& problem, int dimension,
                                Teuchos::RCP<const Matrix> mass,
                                std::unique_ptr<const TimeIntegrator> integrator,
                                const std::array<double, 3>& gravity, const Vector& v0,
-                               ContactTreatment contact, const std::vector<int>& body_of_node)
+                               ContactTreatment contact, const std::vector<int>& body_of_owned_node)
     : problem_(problem),
       mass_(std::move(mass)),
       integrator_(std::move(integrator)),
@@ -55,12 +55,13 @@ DynamicProblem::DynamicProblem(MechanicsProblem& problem, int dimension,
   }
   mass_->apply(g, *f_gravity_);
   free_.assign(num_owned_u_, 1);
-  // Bodies: the connected components of the mesh (io/mesh_bodies.hpp), u dof = node · dim + d.
+  // Bodies: the connected components of the mesh (io/mesh_bodies.hpp); owned u dof i is
+  // component i % dim of owned node i / dim (the solid's owned map).
   body_.assign(num_owned_u_, -1);
   int local_bodies = 0;
   for (int i = 0; i < num_owned_u_; ++i) {
-    const GO node = u_map->getGlobalElement(i) / dim_;
-    if (node < GO(body_of_node.size())) body_[i] = body_of_node[node];
+    const std::size_t node = std::size_t(i / dim_);
+    if (node < body_of_owned_node.size()) body_[i] = body_of_owned_node[node];
     local_bodies = std::max(local_bodies, body_[i] + 1);
   }
   Teuchos::reduceAll(*u_map->getComm(), Teuchos::REDUCE_MAX, local_bodies,

@@ -39,11 +39,12 @@ struct EnergyBalance {
 class DynamicProblem : public NonlinearProblem {
  public:
   /// M on the solid's owned map (assemble_mass_matrix); v0 the initial velocity there;
-  /// body_of_node the body of every global node (node_bodies, io/mesh_bodies.hpp).
+  /// body_of_owned_node the body of each owned node of the solid, in its owned order
+  /// (io/mesh_bodies.hpp; on a distributed mesh parallel/distributed_bodies.hpp).
   DynamicProblem(MechanicsProblem& problem, int dimension, Teuchos::RCP<const Matrix> mass,
                  std::unique_ptr<const TimeIntegrator> integrator,
                  const std::array<double, 3>& gravity, const Vector& v0, ContactTreatment contact,
-                 const std::vector<int>& body_of_node);
+                 const std::vector<int>& body_of_owned_node);
   ~DynamicProblem() override;
   DynamicProblem(const DynamicProblem&) = delete;
   DynamicProblem& operator=(const DynamicProblem&) = delete;
