@@ -493,7 +493,9 @@ void SolidProblem::external_force(double t, Vector& f_ext) const {
 }
 
 std::vector<double> SolidProblem::prescribed_displacements(double t) const {
-  std::vector<double> value(num_nodes_ * dim_, std::numeric_limits<double>::quiet_NaN());
+  std::vector<double> value(column_map_->getNodeNumElements(),
+                            std::numeric_limits<double>::quiet_NaN());
+  const LO invalid = Teuchos::OrdinalTraits<LO>::invalid();
   for (const DirichletInput* bc : dirichlet_) {
     const NodeSet* set = mesh_.find_node_set(bc->node_set);
     if (!set) {
@@ -504,7 +506,9 @@ std::vector<double> SolidProblem::prescribed_displacements(double t) const {
       double x[3] = {0.0, 0.0, 0.0};
       for (int d = 0; d < dim_; ++d) x[d] = mesh_.coordinates[n * dim_ + d];
       const GlobalIndex global = node_gid_.empty() ? n : node_gid_[n];
-      value[global * dim_ + bc->component] = bc->value(t, x[0], x[1], x[2]);
+      const LO k = column_map_->getLocalElement(GO(global) * dim_ + bc->component);
+      if (k == invalid) continue;  // a node of no local element (replicated mesh: another rank's)
+      value[std::size_t(k)] = bc->value(t, x[0], x[1], x[2]);
     }
   }
   return value;

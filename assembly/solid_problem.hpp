@@ -98,8 +98,8 @@ class SolidProblem {
   /// Consistent nodal forces of the pressure/traction loads at time t (owned rows).
   void external_force(double t, Vector& f_ext) const;
 
-  /// Prescribed displacement per global dof at time t (NaN where free), on every rank; from
-  /// a mesh part, of its nodes only (owned and ghost: every column of the solid's rows).
+  /// Prescribed displacement at time t of each dof of the column map (owned and ghost: every
+  /// column of the solid's rows), by its local index; NaN where free.
   std::vector<double> prescribed_displacements(double t) const;
 
   /// Volume-averaged stress of this rank's own elements in the order of stress_names() (the

@@ -200,6 +200,36 @@ SystemLayout distributed_layout(const MechanicsProblem& problem, const Distribut
   return layout;
 }
 
+/// The body of each owned node of the solid, in its owned order (DynamicProblem): from the
+/// replicated mesh's layout (every node's body), or labelled across the ranks on the
+/// distributed mesh (parallel/distributed_bodies.hpp). Collective.
+std::vector<int> owned_node_bodies(const SolidProblem& solid, const DistributedMesh* distributed,
+                                   const SystemLayout& layout, const Comm& comm) {
+  std::vector<int> bodies(std::size_t(solid.num_owned_nodes()), 0);
+  if (distributed) {
+    const DistributedBodies all = distributed_node_bodies(comm, *distributed);
+    for (int k = 0; k < solid.num_owned_nodes(); ++k)
+      bodies[k] = all.owned_node_body[std::size_t(distributed->local_node(solid.column_node(k)))];
+  } else {
+    for (int k = 0; k < solid.num_owned_nodes(); ++k)
+      bodies[k] = layout.node_bodies[std::size_t(solid.column_node(k))];
+  }
+  return bodies;
+}
+
+/// The mass matrix's layout on the distributed mesh: each rank's owned nodes with their
+/// coordinates (the iterative path's near-null space; a direct solver reads the dimension).
+SystemLayout distributed_mass_layout(const DistributedMesh& mesh) {
+  SystemLayout layout;
+  const std::size_t owned = std::size_t(mesh.num_owned_nodes), dim = mesh.local.dimension;
+  layout.dim = mesh.local.dimension;
+  layout.nodes.assign(mesh.node_gid.begin(), mesh.node_gid.begin() + owned);
+  layout.coordinates.assign(mesh.local.coordinates.begin(),
+                            mesh.local.coordinates.begin() + owned * dim);
+  layout.num_global_nodes = mesh.global_num_nodes;
+  return layout;
+}
+
 void run(const std::string& input_path, const std::string& output_dir, bool timers,
          const Teuchos::RCP<const Comm>& comm) {
   const bool root = comm->getRank() == 0;
@@ -301,13 +331,18 @@ void run(const std::string& input_path, const std::string& output_dir, bool time
                            assemble_mass_matrix(solid, input.dynamics.mass == MassKind::lumped),
                            make_time_integrator(input.dynamics), input.gravity,
                            *initial_velocity(solid, mesh, input), input.dynamics.contact_treatment,
-                           layout.node_bodies);
+                           owned_node_bodies(solid, distributed, layout, *comm));
     LinearSolverSettings mass_settings;  // type: auto
     mass_settings.where = input.file + ": mass matrix";
-    LinearSolver mass_solver(mass_settings, mass_matrix_layout(mesh));
+    LinearSolver mass_solver(mass_settings, distributed ? distributed_mass_layout(*distributed)
+                                                        : mass_matrix_layout(mesh));
     solve_time_steps(dynamic, linear, mass_solver, newton, stepping, write_step);
   } else {
     solve_load_steps(problem, linear, newton, stepping, write_step);
+  }
+  if (timers) {  // collective: after the solve, with the contact nodes it reached
+    const std::string held = problem.describe_prescribed_holdings();
+    if (root) std::printf("%s", held.c_str());
   }
   if (root) {
     const double seconds =

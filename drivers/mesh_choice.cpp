@@ -13,13 +13,11 @@ MeshChoice choose_mesh(const Input& input, const std::function<long long()>& num
                        bool forced_replicated) {
   const auto replicated = [](std::string reason) { return MeshChoice{false, std::move(reason)}; };
   if (forced_replicated) return replicated("GROUT_MESH=replicated");
-  if (input.dynamics.enabled) return replicated("dynamics");
+  if (input.dynamics.enabled && !input.contact.empty()) return replicated("dynamics with contact");
   for (const ContactInput& c : input.contact) {
     if (c.self) return replicated("self-contact");
     if (c.type == ContactKind::tied) return replicated("tied contact");
   }
-  if (input.output.parallel == OutputParallel::per_rank)
-    return replicated("output/parallel: per_rank");
   // With contact, the iterative path's layout still takes every node's coordinates and body.
   // The unknowns: the displacements, num_nodes * dim; the multipliers come on top, which the
   // driver counts on the distributed mesh (iterative_for_unknowns).

@@ -3,8 +3,11 @@
 // mesh (parallel/distributed_mesh.hpp) when every piece the run uses has its distributed form,
 // the replicated mesh (every rank holds all of it) otherwise.
 //
-// Distributed so far: a static run (load stepping), without contact or with frictionless and
-// frictional pairs, with one Exodus file (`output/parallel: single`) and the CSV summaries.
+// Distributed so far: a dynamic run without contact (initial velocities and the bodies from the
+// solid's part, the mass matrix's layout from the owned nodes), and a static run (load
+// stepping) without contact or with frictionless and frictional pairs; with one Exodus file
+// (`output/parallel: single`) or one per rank (`per_rank`, each rank's piece cut from its
+// part) and the CSV summaries.
 // Without contact on any linear solver (MUMPS, KLU2 or Belos + MueLu, named or chosen by `type:
 // auto`; the iterative path takes its rows' nodes' coordinates and the bodies labelled across
 // the ranks, parallel/distributed_bodies.hpp); with contact on a direct solver (MUMPS or KLU2):
@@ -12,8 +15,7 @@
 // replicated mesh instead where they take the unknowns to the iterative solver. What keeps the
 // replicated mesh: self-contact (the sides are chosen over the whole surface) and tied contact
 // (not yet compared), contact on the iterative solver (MueLu's layout then takes every node's
-// coordinates and body), dynamics (initial velocities, the mass matrix's layout),
-// `output/parallel: per_rank` (its pieces are cut from the whole mesh).
+// coordinates and body), dynamics with contact (not yet compared).
 //
 // The environment variable GROUT_MESH=replicated keeps the replicated mesh for any run (to
 // compare the two paths: tools/compare_results, the ctests */mesh_paths/*).

@@ -86,7 +86,8 @@ std::vector<std::vector<int>> sharers(const SolidProblem& solid,
 
 }  // namespace
 
-OutputPiece make_output_piece(const Mesh& mesh, const SolidProblem& solid) {
+OutputPiece make_output_piece(const Mesh& mesh, const SolidProblem& solid,
+                              const DistributedMesh* distributed) {
   const Comm& comm = *solid.comm();
   const int dim = solid.dimension();
   OutputPiece piece;
@@ -140,12 +141,19 @@ OutputPiece make_output_piece(const Mesh& mesh, const SolidProblem& solid) {
     piece.mesh.blocks.push_back(std::move(block));
   }
 
-  // Sets: the entries of this piece; whole-mesh sizes from the entries each rank owns.
+  // Sets: the entries of this piece; whole-mesh sizes from the entries each rank owns. A
+  // part's sets hold the file's entries of its local entities, in the file's order.
+  const auto global_element = [&](GlobalIndex e) {
+    return distributed ? distributed->element_gid[std::size_t(e)] : e;
+  };
+  const auto global_node = [&](GlobalIndex n) {
+    return distributed ? distributed->node_gid[std::size_t(n)] : n;
+  };
   std::vector<GlobalIndex> set_counts;
   for (const SideSet& set : mesh.side_sets) {
     SideSet s{set.name, set.id, {}, {}};
     for (std::size_t i = 0; i < set.elements.size(); ++i) {
-      const auto it = local_element.find(set.elements[i]);
+      const auto it = local_element.find(global_element(set.elements[i]));
       if (it == local_element.end()) continue;
       s.elements.push_back(it->second);
       s.sides.push_back(set.sides[i]);
@@ -157,7 +165,8 @@ OutputPiece make_output_piece(const Mesh& mesh, const SolidProblem& solid) {
   for (const NodeSet& set : mesh.node_sets) {
     NodeSet s{set.name, set.id, {}};
     GlobalIndex owned = 0;
-    for (GlobalIndex node : set.nodes) {
+    for (GlobalIndex local_node : set.nodes) {
+      const GlobalIndex node = global_node(local_node);
       const long long i = position(ex.node_ids, node);
       if (i >= 0) s.nodes.push_back(i);
       owned += owned_map->isNodeGlobalElement(GO(node) * dim) ? 1 : 0;

@@ -5,6 +5,7 @@
 
 #include "assembly/solid_problem.hpp"
 #include "io/exodus.hpp"
+#include "parallel/distributed_mesh.hpp"
 
 namespace grout {
 
@@ -18,6 +19,10 @@ struct OutputPiece {
 /// node is in some file); side-set entries of its elements and node-set entries of its
 /// nodes. A node is a border node when another rank's file holds it too (found by asking
 /// each node's owner who holds it); an element is a border element when it uses one.
-OutputPiece make_output_piece(const Mesh& mesh, const SolidProblem& solid);
+/// `mesh`: the replicated mesh, or this rank's part of `distributed` (its sets' entries in
+/// local numbers, taken to global ones by the part's maps; both give the same piece for the
+/// same partition).
+OutputPiece make_output_piece(const Mesh& mesh, const SolidProblem& solid,
+                              const DistributedMesh* distributed = nullptr);
 
 }  // namespace grout

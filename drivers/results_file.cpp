@@ -11,8 +11,6 @@ ResultsFile::ResultsFile(const Mesh& mesh, const SolidProblem& solid, bool per_r
                          const DistributedMesh* distributed)
     : mesh_(mesh), comm_(*solid.comm()), per_rank_(per_rank), distributed_(distributed) {
   const Comm& comm = comm_;
-  if (per_rank && distributed)  // make_output_piece cuts its pieces from the whole mesh
-    throw std::logic_error("ResultsFile: output/parallel: per_rank needs the replicated mesh");
   for (int k = 0; k < solid.num_owned_nodes(); ++k) owned_nodes_.push_back(solid.column_node(k));
   if (!per_rank) {
     nodes_to_root_ = std::make_unique<RootGather>(comm, owned_nodes_, solid.num_global_nodes());
@@ -20,7 +18,7 @@ ResultsFile::ResultsFile(const Mesh& mesh, const SolidProblem& solid, bool per_r
         std::make_unique<RootGather>(comm, solid.owned_elements(), solid.num_global_elements());
     return;
   }
-  piece_ = std::make_unique<OutputPiece>(make_output_piece(mesh, solid));
+  piece_ = std::make_unique<OutputPiece>(make_output_piece(mesh, solid, distributed));
   const std::vector<GO> owned(owned_nodes_.begin(), owned_nodes_.end());
   const std::vector<GO> file_nodes(piece_->exodus.node_ids.begin(), piece_->exodus.node_ids.end());
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
@@ -47,7 +45,7 @@ void ResultsFile::open(const std::string& path, const ResultsFileNames& names,
 }
 
 void ResultsFile::write_mesh() {
-  if (!distributed_) return;
+  if (!distributed_ || per_rank_) return;  // a piece is written whole by open()
   const DistributedMesh& mesh = *distributed_;
   for (int d = 0; d < mesh.local.dimension; ++d) {
     const std::vector<double> x = gather_coordinates(comm_, mesh, d);

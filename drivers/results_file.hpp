@@ -3,8 +3,9 @@
 // `output/parallel`): `single`, one file that rank 0 writes, receiving one variable at a
 // time (RootGather); `per_rank`, one file per rank with its own elements and their nodes
 // (make_output_piece), node values brought from their owners by a Tpetra Import. From the
-// distributed mesh (`single` only) rank 0 writes the mesh too as it receives it, one array at
-// a time (drivers/gathered_geometry.hpp).
+// distributed mesh under `single` rank 0 writes the mesh too as it receives it, one array at
+// a time (drivers/gathered_geometry.hpp); under `per_rank` each rank cuts its piece from its
+// part.
 //
 // Every call is collective. A file error on one rank is kept and thrown by end_step() after
 // the step's last collective call, so that no rank waits in a gather (agree_on_errors).
@@ -29,8 +30,8 @@ struct ResultsFileNames {
 class ResultsFile {
  public:
   /// Collective: what each rank contributes, and under per_rank its piece of the mesh.
-  /// `distributed`: `mesh` is this rank's part of that mesh (`single` only; it must outlive
-  /// write_mesh()); nullptr: `mesh` is the replicated mesh.
+  /// `distributed`: `mesh` is this rank's part of that mesh (it must outlive write_mesh());
+  /// nullptr: `mesh` is the replicated mesh.
   ResultsFile(const Mesh& mesh, const SolidProblem& solid, bool per_rank,
               const DistributedMesh* distributed = nullptr);
   /// Not collective: creates the file this rank writes (`path`, a temporary name; under

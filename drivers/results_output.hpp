@@ -22,7 +22,7 @@ namespace grout {
 class ResultsOutput {
  public:
   /// Collective. `distributed`: `mesh` is this rank's part of that mesh (both must outlive the
-  /// ResultsOutput; output/parallel: single); nullptr: the replicated mesh.
+  /// ResultsOutput); nullptr: the replicated mesh.
   ResultsOutput(const Mesh& mesh, const Input& input, const SolidProblem& solid,
                 const MechanicsProblem& problem, const DistributedMesh* distributed = nullptr);
   void write(const ConvergedStep& step);

@@ -123,6 +123,11 @@ void ContactInterface::append_base_dofs(std::vector<GO>& base) const {
       for (int d = 0; d < dim_; ++d) base.push_back(owned_master_.nodes[f][a] * dim_ + d);
 }
 
+void ContactInterface::append_surface_dofs(std::vector<GO>& dofs) const {
+  for (GlobalIndex n : surface_.nodes)
+    for (int d = 0; d < dim_; ++d) dofs.push_back(GO(n) * dim_ + d);
+}
+
 std::vector<GlobalIndex> ContactInterface::owned_slave_nodes() const {
   std::vector<GlobalIndex> nodes;
   for (int j : owned_) nodes.push_back(surface_.slave_nodes[j]);

@@ -32,6 +32,7 @@
 #include "kernels/contact_law.hpp"
 #include "nonlinear/active_set_policy.hpp"
 #include "nonlinear/multiplier_rows.hpp"
+#include "nonlinear/prescribed_values.hpp"
 
 namespace grout {
 
@@ -69,6 +70,9 @@ class ContactInterface {
   void append_owned_multipliers(std::vector<GO>& gids) const;
   /// The displacement dofs of the nodes of this rank's slave faces and owned master faces.
   void append_base_dofs(std::vector<GO>& dofs) const;
+  /// The displacement dofs of every node of the local surface (slave faces and the master
+  /// faces of the last search): those the rows of write_rows read.
+  void append_surface_dofs(std::vector<GO>& dofs) const;
   /// Slave nodes this rank owns (global node indices).
   std::vector<GlobalIndex> owned_slave_nodes() const;
   /// Mean size of the slave side's faces (longest edges, summed in side-set order).
@@ -98,10 +102,9 @@ class ContactInterface {
   /// Stage 4 (local), at Newton iterate `iterate` of the step (its phase: newton_phase): the
   /// rows of the owned slave nodes: force terms and Jacobian entries in `terms`, multiplier
   /// rows added to F (owned rows of F's map). `global` are the summed closure counts (ignored
-  /// unless holds_back(phase)); `prescribed` the prescribed value of every global
-  /// displacement dof (NaN where free).
+  /// unless holds_back(phase)); `prescribed` must hold every dof of append_surface_dofs.
   ContactRowSums write_rows(int iterate, const ClosureCounts& global,
-                            const std::vector<double>& prescribed, ContactTerms& terms, Vector& F);
+                            const PrescribedValues& prescribed, ContactTerms& terms, Vector& F);
 
   /// Accept the last evaluation as the converged state (slip history, committed active set).
   void commit_step();
@@ -146,7 +149,7 @@ class ContactInterface {
   void build_stencil(const ContactMortar& m);
   LambdaRow declared_kind(const ContactLawResult& law, int r) const;
   // The pieces of write_rows per owned slave node q (contact_rows.cpp).
-  void law_inputs(int q, int iterate, const std::vector<double>& prescribed, ContactLawNode& in,
+  void law_inputs(int q, int iterate, const PrescribedValues& prescribed, ContactLawNode& in,
                   double* slip, SparseGradient* dslip);
   void add_contact_forces(int q, ContactTerms& terms) const;
   void record_node(int q, const ContactLawNode& in, const ContactLawResult& r, const double* slip);

@@ -81,8 +81,8 @@ ClosureCounts ContactInterface::prepare_active_set(const Vector& x, NewtonPhase 
 }
 
 ContactRowSums ContactInterface::write_rows(int iterate, const ClosureCounts& global,
-                                            const std::vector<double>& prescribed,
-                                            ContactTerms& terms, Vector& F) {
+                                            const PrescribedValues& prescribed, ContactTerms& terms,
+                                            Vector& F) {
   const int dim = dim_;
   const int n_owned = int(owned_.size());
   const bool tied = input_.type == ContactKind::tied;
@@ -182,7 +182,7 @@ ContactInterface::SlaveRow ContactInterface::slave_row(int q) const {
 // or the gap as prepare_active_set measured it at these positions and, with Coulomb, the
 // weighted slip ū_k (objective on the current geometry, assembly/weighted_slip.hpp) and its
 // gradient.
-void ContactInterface::law_inputs(int q, int iterate, const std::vector<double>& prescribed,
+void ContactInterface::law_inputs(int q, int iterate, const PrescribedValues& prescribed,
                                   ContactLawNode& in, double* slip, SparseGradient* dslip) {
   const SlaveRow sr = slave_row(q);
   const double D = sr.D.value;
@@ -213,10 +213,10 @@ void ContactInterface::law_inputs(int q, int iterate, const std::vector<double>&
   }
   in.held_back = held_back_[q];
   for (int a = 0; a < dim; ++a) {  // held components: prescribed slave dof, free masters' share
-    in.prescribed[a] = !std::isnan(prescribed[sr.node * dim + a]);
+    in.prescribed[a] = prescribed.fixed(GO(sr.node) * dim + a);
     double free_sum = 0.0;
     for (const MasterTerm* t = sr.begin; t != sr.end; ++t)
-      if (std::isnan(prescribed[t->node * dim + a])) free_sum += std::abs(t->M->value);
+      if (!prescribed.fixed(GO(t->node) * dim + a)) free_sum += std::abs(t->M->value);
     in.free_share[a] = free_sum / D;
   }
   if (tied) {

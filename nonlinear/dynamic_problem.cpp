@@ -35,7 +35,7 @@ DynamicProblem::DynamicProblem(MechanicsProblem& problem, int dimension,
                                Teuchos::RCP<const Matrix> mass,
                                std::unique_ptr<const TimeIntegrator> integrator,
                                const std::array<double, 3>& gravity, const Vector& v0,
-                               ContactTreatment contact, const std::vector<int>& body_of_node)
+                               ContactTreatment contact, const std::vector<int>& body_of_owned_node)
     : problem_(problem),
       mass_(std::move(mass)),
       integrator_(std::move(integrator)),
@@ -55,12 +55,13 @@ DynamicProblem::DynamicProblem(MechanicsProblem& problem, int dimension,
   }
   mass_->apply(g, *f_gravity_);
   free_.assign(num_owned_u_, 1);
-  // Bodies: the connected components of the mesh (io/mesh_bodies.hpp), u dof = node · dim + d.
+  // Bodies: the connected components of the mesh (io/mesh_bodies.hpp); owned u dof i is
+  // component i % dim of owned node i / dim (the solid's owned map).
   body_.assign(num_owned_u_, -1);
   int local_bodies = 0;
   for (int i = 0; i < num_owned_u_; ++i) {
-    const GO node = u_map->getGlobalElement(i) / dim_;
-    if (node < GO(body_of_node.size())) body_[i] = body_of_node[node];
+    const std::size_t node = std::size_t(i / dim_);
+    if (node < body_of_owned_node.size()) body_[i] = body_of_owned_node[node];
     local_bodies = std::max(local_bodies, body_[i] + 1);
   }
   Teuchos::reduceAll(*u_map->getComm(), Teuchos::REDUCE_MAX, local_bodies,
@@ -112,7 +113,6 @@ bool DynamicProblem::residual(const Vector& x, Vector& F) {
 bool DynamicProblem::jacobian(const Vector& x, Teuchos::RCP<Matrix>& J) {
   if (!problem_.jacobian(x, J)) return false;
   const double c = integrator_->mass_factor(dt_), scale = 1.0 - integrator_->alpha_f();
-  const auto& prescribed = problem_.prescribed();
   const auto& row_map = *J->getRowMap();
   J->resumeFill();
   {
@@ -134,7 +134,7 @@ bool DynamicProblem::jacobian(const Vector& x, Teuchos::RCP<Matrix>& J) {
     cols.clear(), vals.clear();
     for (std::size_t k = 0; k < indices.extent(0); ++k) {
       const GO col = mass_cols.getGlobalElement(indices(k));
-      if (!std::isnan(prescribed[col]) || values(k) == 0.0) continue;
+      if (mass_col_fixed_[std::size_t(indices(k))] || values(k) == 0.0) continue;
       cols.push_back(col);
       vals.push_back(c * values(k));
     }
@@ -149,10 +149,15 @@ void DynamicProblem::begin_step(double t, Vector& x) {
   t_next_ = t;
   dt_ = t - t_;
   problem_.begin_step(t, x);
+  // The mass matrix's columns are the solid's (owned and ghost dofs): all held.
   const auto& prescribed = problem_.prescribed();
   const auto& u_map = *mass_->getRowMap();
   for (int i = 0; i < num_owned_u_; ++i)
-    free_[i] = std::isnan(prescribed[u_map.getGlobalElement(i)]) ? 1 : 0;
+    free_[i] = prescribed.fixed(u_map.getGlobalElement(i)) ? 0 : 1;
+  const auto& mass_cols = *mass_->getColMap();
+  mass_col_fixed_.resize(mass_cols.getNodeNumElements());
+  for (std::size_t k = 0; k < mass_col_fixed_.size(); ++k)
+    mass_col_fixed_[k] = prescribed.fixed(mass_cols.getGlobalElement(LO(k))) ? 1 : 0;
 }
 
 void DynamicProblem::start(Vector& x0, LinearSolver& linear) {
@@ -183,7 +188,7 @@ void DynamicProblem::start(Vector& x0, LinearSolver& linear) {
     const auto& cols = *mass_free_->getColMap();
     std::vector<double> delta(cols.getNodeNumElements(), std::numeric_limits<double>::quiet_NaN());
     for (std::size_t k = 0; k < delta.size(); ++k)
-      if (!std::isnan(problem_.prescribed()[cols.getGlobalElement(LO(k))])) delta[k] = 0.0;
+      if (problem_.prescribed().fixed(cols.getGlobalElement(LO(k)))) delta[k] = 0.0;
     apply_dirichlet(*mass_free_, rhs, delta);
   }
   if (rhs.normInf() > 0.0) linear.solve(mass_free_, rhs, *a_);

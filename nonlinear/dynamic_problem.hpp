@@ -39,11 +39,12 @@ struct EnergyBalance {
 class DynamicProblem : public NonlinearProblem {
  public:
   /// M on the solid's owned map (assemble_mass_matrix); v0 the initial velocity there;
-  /// body_of_node the body of every global node (node_bodies, io/mesh_bodies.hpp).
+  /// body_of_owned_node the body of each owned node of the solid, in its owned order
+  /// (io/mesh_bodies.hpp; on a distributed mesh parallel/distributed_bodies.hpp).
   DynamicProblem(MechanicsProblem& problem, int dimension, Teuchos::RCP<const Matrix> mass,
                  std::unique_ptr<const TimeIntegrator> integrator,
                  const std::array<double, 3>& gravity, const Vector& v0, ContactTreatment contact,
-                 const std::vector<int>& body_of_node);
+                 const std::vector<int>& body_of_owned_node);
   ~DynamicProblem() override;
   DynamicProblem(const DynamicProblem&) = delete;
   DynamicProblem& operator=(const DynamicProblem&) = delete;
@@ -90,8 +91,9 @@ class DynamicProblem : public NonlinearProblem {
   double t_ = 0.0, t_next_ = 0.0, dt_ = 0.0;
   int dim_ = 2;
   int num_owned_u_ = 0;
-  std::vector<char> free_;  ///< per owned u dof, at the current step
-  std::vector<int> body_;   ///< per owned u dof: its body (io/mesh_bodies.hpp)
+  std::vector<char> free_;            ///< per owned u dof, at the current step
+  std::vector<char> mass_col_fixed_;  ///< per column of M: a prescribed dof
+  std::vector<int> body_;             ///< per owned u dof: its body (io/mesh_bodies.hpp)
   int num_bodies_ = 0;
   Teuchos::RCP<Vector> u_, v_, a_;   ///< state at t_n (owned u map)
   Teuchos::RCP<Vector> f_static_n_;  ///< static u-row force at t_n (static_force)

@@ -35,6 +35,12 @@ FreeRotationLimit::FreeRotationLimit(const ContactMesh& mesh, const Input& input
       for (GlobalIndex b : bodies_of(contact_side_sets(ci, master))) held.insert(b);
   }
   const Mesh& local = mesh.mesh();
+  // The prescribed components of the local nodes: the input's Dirichlet sets (a missing set
+  // is reported by the solid at the first step).
+  std::vector<std::array<char, 3>> fixed(std::size_t(local.num_nodes()), {0, 0, 0});
+  for (const DirichletInput& bc : input.dirichlet)
+    if (const NodeSet* set = local.find_node_set(bc.node_set))
+      for (GlobalIndex n : set->nodes) fixed[std::size_t(n)][bc.component] = 1;
   for (std::size_t i = 0; i < input.contact.size(); ++i) {
     const ContactInput& ci = input.contact[i];
     if (ci.type != ContactKind::frictionless || ci.self) continue;
@@ -53,6 +59,7 @@ FreeRotationLimit::FreeRotationLimit(const ContactMesh& mesh, const Input& input
       std::array<double, 3> X{0.0, 0.0, 0.0};
       for (int c = 0; c < dim_; ++c) X[c] = local.coordinates[n * dim_ + c];
       body.X.push_back(X);
+      body.fixed.push_back(fixed[std::size_t(n)]);
     }
     // X0 = Σ X / count, L² = Σ |X − X0|² / count over the body's nodes.
     double sums[4] = {0.0, 0.0, 0.0, double(body.nodes.size())}, all[4];
@@ -94,8 +101,7 @@ FreeRotationLimit::FreeRotationLimit(const Mesh& mesh, const Input& input,
                                      Teuchos::RCP<const Map> map)
     : FreeRotationLimit(ContactMesh(mesh), input, std::move(map), slave_face_sizes(mesh, input)) {}
 
-double FreeRotationLimit::limit(const std::vector<double>& prescribed,
-                                const std::vector<std::vector<ContactNode>>& active,
+double FreeRotationLimit::limit(const std::vector<std::vector<ContactNode>>& active,
                                 const std::vector<std::vector<ContactNode>>& owned_slave,
                                 Vector& step) const {
   double worst = 0.0;
@@ -106,23 +112,22 @@ double FreeRotationLimit::limit(const std::vector<double>& prescribed,
     double global = 0.0;
     Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
     const auto& contact = global > 0.0 ? active[body.pair] : owned_slave[body.pair];
-    worst = std::max(worst, limit_body(body, prescribed, contact, step));
+    worst = std::max(worst, limit_body(body, contact, step));
   }
   return worst;
 }
 
-double FreeRotationLimit::limit_body(const Body& body, const std::vector<double>& prescribed,
-                                     const std::vector<ContactNode>& contact, Vector& step) const {
+double FreeRotationLimit::limit_body(const Body& body, const std::vector<ContactNode>& contact,
+                                     Vector& step) const {
   const int dim = dim_, n = rigid_mode_count(dim);
   // G and P over the body's dofs (replicated data: the same on every rank; a distributed
   // part's owned nodes, summed over the ranks).
   double G[max_rigid_modes][max_rigid_modes] = {}, P[max_rigid_modes][max_rigid_modes] = {};
   for (std::size_t k = 0; k < body.nodes.size(); ++k) {
-    const GlobalIndex node = body.nodes[k];
     double r[max_rigid_modes][3];
     for (int a = 0; a < n; ++a) rigid_mode_value(dim, a, body.X[k].data(), body.X0, body.L, r[a]);
     for (int c = 0; c < dim; ++c) {
-      const bool fixed = !std::isnan(prescribed[node * dim + c]);
+      const bool fixed = body.fixed[k][c] != 0;
       for (int a = 0; a < n; ++a)
         for (int b = 0; b < n; ++b) {
           G[a][b] += r[a][c] * r[b][c];
@@ -227,7 +232,7 @@ double FreeRotationLimit::limit_body(const Body& body, const std::vector<double>
     double v[3];
     rigid_motion_value(dim, w, body.X[k].data(), body.X0, body.L, v);
     for (int c = 0; c < dim; ++c)
-      if (std::isnan(prescribed[node * dim + c])) s(lid(node, c), 0) -= cut * v[c];
+      if (!body.fixed[k][c]) s(lid(node, c), 0) -= cut * v[c];
   }
   return slide_all / body.h;
 }

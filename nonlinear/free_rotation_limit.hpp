@@ -61,12 +61,12 @@ class FreeRotationLimit {
   /// The same on the replicated mesh, with the slave face sizes of its side sets.
   FreeRotationLimit(const Mesh& mesh, const Input& input, Teuchos::RCP<const Map> map);
 
-  /// Limits `step` (the Newton step, on the problem's map) with `prescribed` the value of
-  /// every global u dof (NaN where free) and, per contact pair of the input, the active slave
-  /// nodes this rank owns (`active`) and all slave nodes it owns (`owned_slave`). Collective.
-  /// Returns the largest slide s/h over the bodies before the limit (0: no free rotation).
-  double limit(const std::vector<double>& prescribed,
-               const std::vector<std::vector<ContactNode>>& active,
+  /// Limits `step` (the Newton step, on the problem's map) with, per contact pair of the
+  /// input, the active slave nodes this rank owns (`active`) and all slave nodes it owns
+  /// (`owned_slave`). Collective. The prescribed dofs are those of the input's Dirichlet sets
+  /// (whatever their values). Returns the largest slide s/h over the bodies before the limit
+  /// (0: no free rotation).
+  double limit(const std::vector<std::vector<ContactNode>>& active,
                const std::vector<std::vector<ContactNode>>& owned_slave, Vector& step) const;
 
   /// The largest slide per Newton step, in units of the mean slave face size.
@@ -76,15 +76,15 @@ class FreeRotationLimit {
 
  private:
   struct Body {
-    int pair = 0;                          ///< index in the input's contact list
-    std::vector<GlobalIndex> nodes;        ///< sorted (on a distributed part: the owned ones)
-    std::vector<std::array<double, 3>> X;  ///< their reference coordinates
-    double X0[3] = {0.0, 0.0, 0.0};        ///< centroid of the nodes
-    double L = 1.0;                        ///< RMS distance of the nodes from X0
-    double h = 0.0;                        ///< mean slave face size
+    int pair = 0;                            ///< index in the input's contact list
+    std::vector<GlobalIndex> nodes;          ///< sorted (on a distributed part: the owned ones)
+    std::vector<std::array<double, 3>> X;    ///< their reference coordinates
+    std::vector<std::array<char, 3>> fixed;  ///< their prescribed components (Dirichlet sets)
+    double X0[3] = {0.0, 0.0, 0.0};          ///< centroid of the nodes
+    double L = 1.0;                          ///< RMS distance of the nodes from X0
+    double h = 0.0;                          ///< mean slave face size
   };
-  double limit_body(const Body& body, const std::vector<double>& prescribed,
-                    const std::vector<ContactNode>& contact, Vector& step) const;
+  double limit_body(const Body& body, const std::vector<ContactNode>& contact, Vector& step) const;
 
   int dim_ = 2;
   bool distributed_ = false;

@@ -29,7 +29,6 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
   const auto comm = solid.comm();
   raw_comm_ = raw_mpi_comm(*comm);
   const ContactMesh contact_mesh = part ? ContactMesh(mesh, *part, raw_comm_) : ContactMesh(mesh);
-  gather_prescribed_ = part && !input.contact.empty();
   num_owned_u_ = int(owned_u.getNodeNumElements());
   std::vector<GO> owned;
   for (int i = 0; i < num_owned_u_; ++i) owned.push_back(owned_u.getGlobalElement(i));
@@ -78,7 +77,8 @@ MechanicsProblem::MechanicsProblem(const SolidProblem& solid, const Mesh& mesh, 
   f_ext_ = solid.create_vector();
   reaction_ = solid.create_vector();
   K_solid_ = solid.create_matrix();
-  prescribed_.assign(num_u_, std::numeric_limits<double>::quiet_NaN());
+  prescribed_ = std::make_unique<PrescribedValues>(solid.owned_map(), solid.column_map());
+  owned_fixed_.assign(num_owned_u_, 0);
   // Only a contact pair's slave body can turn freely.
   if (!input.contact.empty()) {
     std::vector<double> slave_face_size;
@@ -99,7 +99,7 @@ void MechanicsProblem::limit_step(const Vector& /*x*/, Vector& step) {
       slave[i].push_back(node);
       if (r.status != 0.0) active[i].push_back(node);
     }
-  last_rotation_slide_ = rotation_limit_->limit(prescribed_, active, slave, step);
+  last_rotation_slide_ = rotation_limit_->limit(active, slave, step);
 }
 
 MechanicsProblem::~MechanicsProblem() = default;
@@ -109,26 +109,18 @@ void MechanicsProblem::begin_step(double t, Vector& x) {
   for (auto& c : interfaces_) c->begin_step();
   // The load expressions are evaluated on each rank's own faces: a value that is not finite
   // on one rank stops every rank.
+  std::vector<double> column_values;  // the solid's column map: owned and ghost dofs
   agree_on_errors(*solid_.comm(), [&] {
-    prescribed_ = solid_.prescribed_displacements(t);
+    column_values = solid_.prescribed_displacements(t);
     solid_.external_force(t, *f_ext_);
   });
-  if (gather_prescribed_) {
-    // A distributed mesh's part knows the values of its local nodes; the contact rows and the
-    // Jacobian's columns reach master nodes beyond the ghost layer: every rank gets every
-    // value (minimum over the ranks, free = +inf; the ranks that hold a node agree on it).
-    const double inf = std::numeric_limits<double>::infinity();
-    for (double& v : prescribed_)
-      if (std::isnan(v)) v = inf;
-    MPI_Allreduce(MPI_IN_PLACE, prescribed_.data(), int(prescribed_.size()), MPI_DOUBLE, MPI_MIN,
-                  raw_comm_);
-    for (double& v : prescribed_)
-      if (v == inf) v = std::numeric_limits<double>::quiet_NaN();
-  }
+  // The dofs held beyond the column map (contact nodes) get their owners' values.
+  prescribed_->set(column_values);
   auto xv = x.getLocalViewHost(Tpetra::Access::ReadWrite);
   for (int i = 0; i < num_owned_u_; ++i) {
-    const double value = prescribed_[map_->getGlobalElement(i)];
-    if (!std::isnan(value)) xv(i, 0) = value;
+    const double value = prescribed_->value(map_->getGlobalElement(i));
+    owned_fixed_[i] = !std::isnan(value);
+    if (owned_fixed_[i]) xv(i, 0) = value;
   }
 }
 
@@ -188,10 +180,15 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
     }
     if (holds_back)  // the same on every rank: the same input and phase
       Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 2 * n, counts.data(), counts_all.data());
+    // The rows read the prescribed flags of the surfaces' nodes: master nodes beyond the ghost
+    // layer are brought in (collective; only when the search found new ones).
+    std::vector<GO> surface_dofs;
+    for (auto& c : interfaces_) c->append_surface_dofs(surface_dofs);
+    prescribed_->cover(std::move(surface_dofs));
     ContactRowSums sums;
     for (int i = 0; i < n; ++i) {
       const ContactRowSums s = interfaces_[i]->write_rows(
-          iterate_, {counts_all[2 * i], counts_all[2 * i + 1]}, prescribed_, terms_, F);
+          iterate_, {counts_all[2 * i], counts_all[2 * i + 1]}, *prescribed_, terms_, F);
       sums.active += s.active, sums.changes += s.changes, sums.floor2 += s.floor2;
       sums.newly_fixed += s.newly_fixed;
       if (s.fixed.violation > sums.fixed.violation) sums.fixed = s.fixed;
@@ -224,7 +221,7 @@ bool MechanicsProblem::residual(const Vector& x, Vector& F) {
     auto Fv = F.getLocalViewHost(Tpetra::Access::ReadWrite);
     auto rv = reaction_->getLocalViewHost(Tpetra::Access::OverwriteAll);
     for (int i = 0; i < num_owned_u_; ++i) {
-      const bool fixed = !std::isnan(prescribed_[map_->getGlobalElement(i)]);
+      const bool fixed = owned_fixed_[i] != 0;
       rv(i, 0) = fixed ? Fv(i, 0) : 0.0;
       if (fixed) Fv(i, 0) = 0.0;
     }
@@ -271,12 +268,20 @@ bool MechanicsProblem::jacobian(const Vector&, Teuchos::RCP<Matrix>& J) {
   // number of ranks.
   J = jacobian_matrix(*K_solid_, map_, entries);
 
-  // Prescribed dofs: rows and columns eliminated, diagonal kept (their update is zero).
+  // Prescribed dofs: rows and columns eliminated, diagonal kept (their update is zero). The
+  // contact entries' columns (other ranks' slave and master nodes in this rank's master rows)
+  // may lie beyond the held dofs: brought in (collective).
   const auto& jc = *J->getColMap();
+  std::vector<GO> u_columns;
+  for (std::size_t c = 0; c < jc.getNodeNumElements(); ++c) {
+    const GO g = jc.getGlobalElement(LO(c));
+    if (g < num_u_) u_columns.push_back(g);
+  }
+  prescribed_->cover(u_columns);
   std::vector<double> delta(jc.getNodeNumElements(), std::numeric_limits<double>::quiet_NaN());
   for (std::size_t c = 0; c < delta.size(); ++c) {
     const GO g = jc.getGlobalElement(LO(c));
-    if (g < num_u_ && !std::isnan(prescribed_[g])) delta[c] = 0.0;
+    if (g < num_u_ && prescribed_->fixed(g)) delta[c] = 0.0;
   }
   Vector rhs(map_);
   apply_dirichlet(*J, rhs, delta);

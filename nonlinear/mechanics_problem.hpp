@@ -35,6 +35,7 @@
 #include "nonlinear/contact_interface.hpp"
 #include "nonlinear/free_rotation_limit.hpp"
 #include "nonlinear/nonlinear_problem.hpp"
+#include "nonlinear/prescribed_values.hpp"
 
 namespace grout {
 
@@ -120,8 +121,10 @@ class MechanicsProblem : public NonlinearProblem {
   /// set_solid_step_start: the solid's step force 2 f_algo − f_int(u_n) in place of f_int).
   const Vector& internal_force() const { return *f_int_; }
   const Vector& external_force() const { return *f_ext_; }
-  /// Prescribed value of each global displacement dof at the current step (NaN where free).
-  const std::vector<double>& prescribed() const { return prescribed_; }
+  /// Prescribed values at the current step of the displacement dofs this rank reaches (owned,
+  /// ghost, and the contact nodes of the last residual evaluation and Jacobian columns beyond
+  /// the ghost layer; NaN where free).
+  const PrescribedValues& prescribed() const { return *prescribed_; }
   /// Global displacement dofs (the u part of the map: GIDs 0 .. num_u − 1, owned first locally).
   GO num_displacement_dofs() const { return num_u_; }
   /// Contact results at the last residual evaluation at this rank's slave nodes (empty
@@ -136,6 +139,10 @@ class MechanicsProblem : public NonlinearProblem {
   /// Collective: on rank 0 one line per interface and rank, what the rank holds of it
   /// (ContactInterface::Holdings); empty on the other ranks and without contact.
   std::string describe_contact_holdings() const;
+  /// Collective: on rank 0 one line per rank, the prescribed values it holds (PrescribedValues:
+  /// its solid's column map, and the contact nodes beyond it the run reached so far); empty on
+  /// the other ranks.
+  std::string describe_prescribed_holdings() const;
 
  private:
   void report_fixed_nodes(int count, const ContactRowSums& local) const;
@@ -160,9 +167,9 @@ class MechanicsProblem : public NonlinearProblem {
   Teuchos::RCP<Vector> u_, f_int_, f_ext_, reaction_;
   Teuchos::RCP<Matrix> K_solid_;
   const Vector* solid_step_start_ = nullptr;  ///< set_solid_step_start
-  bool K_solid_constant_ = false;   ///< K_solid_ assembled and independent of u (small strain)
-  std::vector<double> prescribed_;  ///< per global u dof, NaN where free
-  bool gather_prescribed_ = false;  ///< contact on a distributed part: the ranks' values merged
+  bool K_solid_constant_ = false;  ///< K_solid_ assembled and independent of u (small strain)
+  std::unique_ptr<PrescribedValues> prescribed_;  ///< of the dofs this rank reaches
+  std::vector<char> owned_fixed_;                 ///< per owned u dof: prescribed
   int active_size_ = 0, active_changes_ = 0;
   double residual_floor_ = 0.0;
   int iterate_ = 0;  ///< the Newton iterate of the next residual evaluation (newton_phase)

@@ -26,7 +26,9 @@ struct Blocks {
   std::vector<double> prescribed;
   std::vector<std::vector<ContactNode>> active{1}, slave{1};
 
-  explicit Blocks(bool hold_top_y) {
+  bool hold_top_y = false;
+
+  explicit Blocks(bool hold_top_y_) : hold_top_y(hold_top_y_) {
     const auto comm = Tpetra::getDefaultComm();
     const GO nodes = mesh.num_nodes();
     std::vector<GO> owned;
@@ -49,6 +51,15 @@ struct Blocks {
       slave[0].push_back(node);
       if (x > 0.2 && x < 0.8) active[0].push_back(node);
     }
+  }
+  /// The pair, with the Dirichlet sets of `prescribed` (the limit's prescribed dofs).
+  Input input(ContactKind type, double mu) const {
+    Input in = two_block_bodies(2, type, mu, ContactGeometry::reference);
+    add_dirichlet(in, "lower_bottom", 0, "0");
+    add_dirichlet(in, "lower_bottom", 1, "0");
+    add_dirichlet(in, "upper_top", 0, "0");
+    if (hold_top_y) add_dirichlet(in, "upper_top", 1, "0");
+    return in;
   }
   bool is_upper_node(GlobalIndex n) const {
     for (GlobalIndex m : mesh.find_block("upper")->connectivity)
@@ -81,13 +92,11 @@ double max_difference(const Vector& a, const Vector& b) {
 
 TEST(FreeRotationLimit, TurnBeyondOneFaceIsCutToOneFace) {
   Blocks s(false);
-  const FreeRotationLimit limit(
-      s.mesh, two_block_bodies(2, ContactKind::frictionless, 0.0, ContactGeometry::reference),
-      s.map);
+  const FreeRotationLimit limit(s.mesh, s.input(ContactKind::frictionless, 0.0), s.map);
   ASSERT_EQ(limit.num_bodies(), 1);
   const double theta = 0.5, h = 0.125;
   Vector step = s.turn(theta);
-  const double slide = limit.limit(s.prescribed, s.active, s.slave, step);
+  const double slide = limit.limit(s.active, s.slave, step);
   EXPECT_NEAR(slide, theta * std::sqrt(1.0 + 0.0625) / h, 1e-12);
   // The limited step is θ' e_z × (X − (0.5, 2)) plus what the cut left: at every upper node
   // u = θ e_z × (X − (0.3, 2)) − 0.01 e_y − (θ − θ') e_z × (X − (0.5, 2)).
@@ -107,30 +116,26 @@ TEST(FreeRotationLimit, TurnBeyondOneFaceIsCutToOneFace) {
 }
 
 TEST(FreeRotationLimit, SmallTurnHeldBodyAndFrictionAreLeftAlone) {
-  const Input frictionless =
-      two_block_bodies(2, ContactKind::frictionless, 0.0, ContactGeometry::reference);
   {
     Blocks s(false);
-    const FreeRotationLimit limit(s.mesh, frictionless, s.map);
+    const FreeRotationLimit limit(s.mesh, s.input(ContactKind::frictionless, 0.0), s.map);
     Vector step = s.turn(0.01), before = s.turn(0.01);  // slides by 0.0103 < h/10 = 0.0125
-    EXPECT_LT(limit.limit(s.prescribed, s.active, s.slave, step), 0.1);
+    EXPECT_LT(limit.limit(s.active, s.slave, step), 0.1);
     EXPECT_EQ(max_difference(step, before), 0.0);
     // No active node: the slave nodes stand for the contact (mean x = 0.5 again).
     std::vector<std::vector<ContactNode>> none(1);
     Vector big = s.turn(0.5);
-    EXPECT_NEAR(limit.limit(s.prescribed, none, s.slave, big), 0.5 * std::sqrt(1.25) / 0.125,
-                1e-12);
+    EXPECT_NEAR(limit.limit(none, s.slave, big), 0.5 * std::sqrt(1.25) / 0.125, 1e-12);
   }
   {
     Blocks s(true);  // held in x and y on the top edge: no free rotation
-    const FreeRotationLimit limit(s.mesh, frictionless, s.map);
+    const FreeRotationLimit limit(s.mesh, s.input(ContactKind::frictionless, 0.0), s.map);
     Vector step = s.turn(0.5), before = s.turn(0.5);
-    EXPECT_EQ(limit.limit(s.prescribed, s.active, s.slave, step), 0.0);
+    EXPECT_EQ(limit.limit(s.active, s.slave, step), 0.0);
     EXPECT_EQ(max_difference(step, before), 0.0);
   }
   Blocks s(false);
-  const FreeRotationLimit frictional(
-      s.mesh, two_block_bodies(2, ContactKind::frictional, 0.3, ContactGeometry::reference), s.map);
+  const FreeRotationLimit frictional(s.mesh, s.input(ContactKind::frictional, 0.3), s.map);
   EXPECT_EQ(frictional.num_bodies(), 0);
 }
 

@@ -161,20 +161,38 @@ void check(const Mesh& generated, const std::string& name, StrainKind strain,
   distributed.external_force(1.0, p_d);
   ASSERT_GT(max_abs(p_r), 0.0);
   expect_vectors_agree(p_r, p_d, "f_ext");
+  // Prescribed displacements (per column dof): the owned values agree between the two
+  // partitions, and on each the ghost values are their owners'.
+  const auto owned_part = [](const SolidProblem& s, const std::vector<double>& column) {
+    Vector v(s.owned_map());
+    auto view = v.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (std::size_t i = 0; i < view.extent(0); ++i) view(i, 0) = column.at(i);
+    return v;
+  };
+  const auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
   const std::vector<double> g_r = replicated.prescribed_displacements(1.0);
   const std::vector<double> g_d = distributed.prescribed_displacements(1.0);
-  const int dim = mesh.dimension;
+  ASSERT_EQ(g_r.size(), replicated.column_map()->getNodeNumElements());
+  ASSERT_EQ(g_d.size(), distributed.column_map()->getNodeNumElements());
+  const Vector pv_r = owned_part(replicated, g_r), pv_d = owned_part(distributed, g_d);
   int prescribed = 0;
-  for (int k = 0; k < int(distributed.column_map()->getNodeNumElements()) / dim; ++k) {
-    for (int c = 0; c < dim; ++c) {  // every column dof of the distributed problem
-      const GO g = distributed.column_node(k) * dim + c;
-      if (std::isnan(g_r[g])) {
-        EXPECT_TRUE(std::isnan(g_d[g])) << "dof " << g;
-      } else {
-        EXPECT_EQ(g_r[g], g_d[g]) << "dof " << g;
-        ++prescribed;
-      }
+  {
+    const auto moved = on_map(pv_d, replicated.owned_map());
+    const auto a = pv_r.getLocalViewHost(Tpetra::Access::ReadOnly);
+    const auto b = moved->getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (std::size_t i = 0; i < a.extent(0); ++i) {
+      EXPECT_TRUE(same(a(i, 0), b(i, 0)))
+          << "dof " << replicated.owned_map()->getGlobalElement(LO(i)) << ": " << a(i, 0)
+          << " replicated, " << b(i, 0) << " distributed";
+      prescribed += !std::isnan(a(i, 0));
     }
+  }
+  for (const auto* p : {&replicated, &distributed}) {
+    const std::vector<double>& g = p == &replicated ? g_r : g_d;
+    const auto ghosts = on_map(p == &replicated ? pv_r : pv_d, p->column_map());
+    const auto v = ghosts->getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (std::size_t k = 0; k < g.size(); ++k)
+      EXPECT_TRUE(same(g[k], v(k, 0))) << "column dof " << p->column_map()->getGlobalElement(LO(k));
   }
   int prescribed_all = 0;
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, prescribed, Teuchos::outArg(prescribed_all));

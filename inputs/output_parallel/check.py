@@ -14,10 +14,9 @@ tools/grout_results.py, on 1, 2 and 3 ranks, 2D and 3D:
   not repeatable bit for bit, distributed MUMPS in 3D on 2 or 3 ranks (its rounding follows
   the order in which its fronts finish, docs/performance.md), the values agree to
   SOLVE_REPEAT = 1e-12 of each variable's largest value instead (a misplaced node or element
-  in either layout differs at O(1)). The single file reads the distributed mesh and the
-  per_rank set the replicated one (drivers/mesh_choice.hpp), whose partitions differ on 2 and 3
-  ranks: the converged residual, a norm summed over the ranks' rows, then agrees to
-  SOLVE_REPEAT of the step's load (2D: 6.7e-29 of it on 2 ranks), every other value as above;
+  in either layout differs at O(1)). Both layouts read the distributed mesh
+  (drivers/mesh_choice.hpp), one partition: the converged residual too is bitwise the same
+  (in 3D on 2 and 3 ranks within SOLVE_REPEAT, as every value);
 - the single file of 2 and 3 ranks has the time steps and names of the 1-rank file, and its
   values agree to 1e-8 relative (the solve's round-off on another partition; normal_gap,
   round-off itself where the contact is closed, relative to the displacement).
@@ -157,10 +156,7 @@ def main():
             per = Results("np%d/%s_per_rank.e" % (ranks, case))
             check_pieces(per, single, ranks, what + " per_rank")
             repeat = SOLVE_REPEAT if case.endswith("_3d") and ranks > 1 else 0.0
-            # Two partitions on 2 and 3 ranks (distributed and replicated mesh): the residual's
-            # sum order differs.
-            same_values(per, single, what + ": per_rank set against the single file", repeat,
-                        SOLVE_REPEAT if ranks > 1 else None)
+            same_values(per, single, what + ": per_rank set against the single file", repeat)
             if ranks == 1:
                 continue
             check(np.array_equal(single.times(), reference.times()) and
