@@ -48,22 +48,21 @@ struct ContactMortar {
   int pairs = 0;                                         ///< pairs with a non-empty overlap
 };
 
-/// Dual coverage a slave node needs to count as paired in the contact rows (has_master).
+/// Dual coverage a slave node needs to count as paired in the contact rows (dual_covered).
 constexpr double min_dual_coverage = 0.5;
 
-/// \brief Whether slave node j has a master whose nodal gap g_j = g̃_j / D_jj the contact rows
-/// may use: D_jj > D_tol (the driver's "no master" tolerance) and, for contact (`coverage`
-/// true; tied rows pass false), D_jj ≥ min_dual_coverage · w_j. With dual multipliers a node
-/// whose faces a master covers only in part has D_jj = ∫_cov Φ_j dA, and Φ_j changes sign on
-/// each face, so g̃_j / D_jj is not a mean of the gap over the covered part: where the gap
-/// varies across a small covered part it is an extrapolation that can lie far outside the
-/// gap's range (a false penetration; docs/embedding.md, "Partly covered rows"). The crossed
-/// tubes' flank nodes, covered by slivers of the lower tube's steep faces, closed this way
-/// 4 cm clear of it (inputs/self_contact/README.md, "Step control on this path"). Fully
-/// covered nodes (D_jj = w_j) are unaffected.
-inline bool has_master(const ContactMortar& m, int j, double D_tol, bool coverage) {
-  const double D = m.D[j].value;
-  return D > D_tol && (!coverage || D >= min_dual_coverage * m.W[j]);
+/// \brief Whether slave node j's faces are covered enough for the contact rows to use its
+/// nodal gap g_j = g̃_j / D_jj: D_jj ≥ min_dual_coverage · w_j (the driver applies it to
+/// contact, not to tied rows, and decides it once per step: ContactInterface::paired). With
+/// dual multipliers a node whose faces a master covers only in part has D_jj = ∫_cov Φ_j dA,
+/// and Φ_j changes sign on each face, so g̃_j / D_jj is not a mean of the gap over the covered
+/// part: where the gap varies across a small covered part it is an extrapolation that can lie
+/// far outside the gap's range (a false penetration; docs/embedding.md, "Partly covered
+/// rows"). The crossed tubes' flank nodes, covered by slivers of the lower tube's steep faces,
+/// closed this way 4 cm clear of it (inputs/self_contact/README.md, "Step control on this
+/// path"). Fully covered nodes (D_jj = w_j) are unaffected.
+inline bool dual_covered(const ContactMortar& m, int j) {
+  return m.D[j].value >= min_dual_coverage * m.W[j];
 }
 
 /// Sorts g by dof and sums the entries of each dof (in their order in g, so the result is

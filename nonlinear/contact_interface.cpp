@@ -101,6 +101,7 @@ ContactInterface::ContactInterface(const ContactMesh& mesh, const Input& input,
   step_energy_.assign(n_owned, 0.0);
   closing_.assign(n_owned, 0);
   candidates_.assign(n_owned, {});
+  covered_.assign(n_owned, 1);
   weighted_.assign(n_owned, {});
   row_kinds_.assign(n_owned, {LambdaRow::identity, LambdaRow::identity, LambdaRow::identity});
   slip_increment_.assign(n_owned, {0.0, 0.0, 0.0});
@@ -283,6 +284,17 @@ void ContactInterface::update_geometry(const Vector& u_base, const Vector& u_old
   current_ = current_geometry_ ? evaluate_contact_mortar(s, positions_, options_) : ContactMortar();
   const ContactMortar& m = current_geometry_ ? current_ : reference_;
   build_stencil(m);
+  // The partly covered node rule within a step: a node counts as covered from the step's first
+  // evaluation at which its faces are (dual_covered) to the step's end. Re-decided at each
+  // iterate, a node whose coverage hovers about min_dual_coverage switches its row between the
+  // contact law and λ_j = 0 from one iterate to the next (the 3D press fit's leading nodes
+  // sliding onto the channel's edge stalled at any step size so); decided only at the step's
+  // start, a node that a master reaches within the step would get no row (the Hertz spheres).
+  if (input_.type != ContactKind::tied) {
+    for (int q = 0; q < int(owned_.size()); ++q)
+      covered_[q] = (coverage_set_ && covered_[q]) || dual_covered(m, owned_[q]);
+    coverage_set_ = true;
+  }
   const int n_owned = int(owned_.size());
   for (int q = 0; q < n_owned; ++q)
     for (int k = 0; k < dim - 1; ++k)

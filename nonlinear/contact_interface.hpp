@@ -82,10 +82,11 @@ class ContactInterface {
   void set_base_map(const Teuchos::RCP<const Map>& base_map);
 
   /// A new step: the active-set policy's per-step memory is reset; self-contact chooses its
-  /// slave and master faces afresh at the next update_geometry.
+  /// slave and master faces, and contact its covered nodes, afresh at the next update_geometry.
   void begin_step() {
     policy_.begin_step();
     choose_sides_ = true;
+    coverage_set_ = false;
   }
   /// Stage 1 (collective): the master faces the slave faces can touch, and D, M, frames at
   /// the displacements u_base (and u_old_base, the last converged step) on the base map.
@@ -180,7 +181,16 @@ class ContactInterface {
   double hold_ = 0.0;              ///< Newton step's tangential hold per unit D_jj: κ E/h
   double D_tol_ = 0.0;             ///< D_jj at most this: the node has no master
   bool choose_sides_ = true;       ///< self-contact: choose the sides afresh at the next evaluation
-  GlobalIndex self_faces_ = 0;     ///< self-contact: faces of the side set
+  /// Per owned slave node: its faces covered by at least min_dual_coverage (dual_covered) at
+  /// some evaluation of this step (contact only; see update_geometry).
+  std::vector<char> covered_;
+  bool coverage_set_ = false;  ///< covered_ holds this step's evaluations
+  /// Whether owned slave node q has a master for its rows in the ContactMortar m in use:
+  /// D_jj above the "no master" tolerance and, for contact, covered_[q].
+  bool paired(int q, const ContactMortar& m) const {
+    return m.D[owned_[q]].value > D_tol_ && (input_.type == ContactKind::tied || covered_[q]);
+  }
+  GlobalIndex self_faces_ = 0;  ///< self-contact: faces of the side set
   ActiveSetPolicy policy_;
   ContactMortarOptions options_;
   bool current_geometry_ = false;  ///< normals, D, M on the current configuration

@@ -63,7 +63,7 @@ ClosureCounts ContactInterface::prepare_active_set(const Vector& x, NewtonPhase 
     const int j = owned_[q];
     ClosureCandidate& node = candidates_[q];
     node = ClosureCandidate();
-    node.paired = has_master(m, j, D_tol_, true);  // the rule for partly covered nodes
+    node.paired = paired(q, m);  // with the step's rule for partly covered nodes
     if (!node.paired) continue;
     node.was_active = active_[q] != 0;
     double v_old[3];
@@ -193,8 +193,7 @@ void ContactInterface::law_inputs(int q, int iterate, const PrescribedValues& pr
     in.n[a] = sr.frame.n[a];
     for (int k = 0; k < dim - 1; ++k) in.t[k][a] = sr.frame.t[k][a];
   }
-  in.paired = has_master(current_geometry_ ? current_ : reference_, sr.j, D_tol_,
-                         input_.type != ContactKind::tied);
+  in.paired = paired(q, current_geometry_ ? current_ : reference_);
   double lambda_n = 0.0;
   for (int a = 0; a < dim; ++a) lambda_n += sr.frame.n[a] * lambda_[q][a];
   // The cycle rule (active_set_cycles.hpp) on the status the law gives the node with the start
