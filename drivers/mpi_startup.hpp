@@ -24,12 +24,12 @@
 //   only
 // The same components do the same work, so nothing else changes (the selections above are
 // Open MPI 4.1's, Debian 12's; with them a singleton's MPI start-up takes 0.02 s:
-// docs/performance.md, "Running in parallel: Open MPI settings").
+// docs/performance.md, "Process start-up and Open MPI settings").
 // Under Open MPI's mpirun with every rank on this machine (OMPI_COMM_WORLD_LOCAL_SIZE equal
 // to OMPI_COMM_WORLD_SIZE, both set by mpirun for each rank) the first two are set as well:
 // the ranks need no network transport, and a plain `mpirun -np 2` then starts in 0.22 s
 // instead of 0.44 s (bare MPI_Init + MPI_Finalize, 2 ranks, this 2-core machine under load;
-// docs/performance.md, "Running in parallel: Open MPI settings"). Under any other launcher
+// docs/performance.md, "Process start-up and Open MPI settings"). Under any other launcher
 // (srun, a PMI/PMIx environment) and for ranks on several machines nothing is set: a run
 // over several machines needs its network transports. tools/local_mpi_env does the same for
 // local mpirun.
@@ -101,7 +101,7 @@ inline bool is_loopback(const sockaddr_storage& address) {
 /// for the fence's answer: Nagle's algorithm holds the last one back until the server's delayed
 /// ACK, 40 ms on Linux, in every run (measured: MPI_Finalize 45 ms, 2.5 ms with TCP_NODELAY;
 /// a 2-rank MPI_Init + MPI_Finalize under tools/local_mpi_env 90 -> 48 ms; docs/performance.md,
-/// "Running in parallel: Open MPI settings"). Sets TCP_NODELAY on the process's TCP
+/// "Process start-up and Open MPI settings"). Sets TCP_NODELAY on the process's TCP
 /// sockets whose peer is a loopback address: the shared-memory transports (the settings above)
 /// open no other, and on loopback the option only changes when small messages leave. Returns
 /// the number of sockets set.
