@@ -243,8 +243,9 @@ def plot_tubes(r, sets, inner, path):
     nodes = np.unique(inner)
     outer = np.unique(sets["upper_outer"])
     lower = np.unique(sets["lower_outer"])
-    for ax, (title, cut) in zip(axes, (("section x = 0 (the crossing)", 0.0),
-                                       ("section x = 0.025", 0.025))):
+    sections = (("section x = 0 (the crossing)", 0.0), ("section x = 0.025", 0.025))
+    shown = []  # (ax, z, y) of every plotted point: the axes fit all of them
+    for ax, (title, cut) in zip(axes, sections):
         for which, ns, style in (("inner (self-contact)", nodes, "o"),
                                  ("upper outer", outer, "."), ("lower outer", lower, ".")):
             sel = ns[np.abs(X[ns, 0] - cut) < 1e-6] if which != "lower outer" else \
@@ -252,11 +253,18 @@ def plot_tubes(r, sets, inner, path):
             ax.scatter(x[sel, 2], x[sel, 1], s=10, marker=style,
                        c=np.where(status[sel] > 0, "tab:red", "tab:blue") if which != "lower outer"
                        else "0.6", label=which)
+            if which != "lower outer":
+                shown.append((x[sel, 2], x[sel, 1]))
         ax.set_title(title + ", t = %g" % r.times()[-1])
         ax.set_xlabel("z")
         ax.set_ylabel("y")
-        ax.set_xlim(0.025, 0.075)
-        ax.set_ylim(-0.002, 0.038)
+    # The same limits on both sections: the upper tube's nodes with a margin of 2 mm (the lower
+    # tube's crown below them stays in view; its far side is left out).
+    z = np.concatenate([a for a, _ in shown])
+    y = np.concatenate([b for _, b in shown])
+    for ax in axes:
+        ax.set_xlim(z.min() - 0.002, z.max() + 0.002)
+        ax.set_ylim(y.min() - 0.004, y.max() + 0.002)
         ax.set_aspect("equal")
     axes[0].legend(fontsize=7, loc="upper left")
     fig.suptitle("Crossed tubes on Kratos' coarse mesh: deformed nodes (red: active contact)")
