@@ -53,7 +53,7 @@ constexpr double min_dual_coverage = 0.5;
 
 /// \brief Whether slave node j's faces are covered enough for the contact rows to use its
 /// nodal gap g_j = g̃_j / D_jj: D_jj ≥ min_dual_coverage · w_j (the driver applies it to
-/// contact, not to tied rows, and decides it once per step: ContactInterface::paired). With
+/// contact, not to tied rows, and holds it within a step: ContactInterface::paired). With
 /// dual multipliers a node whose faces a master covers only in part has D_jj = ∫_cov Φ_j dA,
 /// and Φ_j changes sign on each face, so g̃_j / D_jj is not a mean of the gap over the covered
 /// part: where the gap varies across a small covered part it is an extrapolation that can lie

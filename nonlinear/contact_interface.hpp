@@ -182,14 +182,9 @@ class ContactInterface {
   double D_tol_ = 0.0;             ///< D_jj at most this: the node has no master
   bool choose_sides_ = true;       ///< self-contact: choose the sides afresh at the next evaluation
   /// Per owned slave node: its faces covered by at least min_dual_coverage (dual_covered) at
-  /// some evaluation of this step (contact only; see update_geometry).
+  /// some evaluation of this step (see update_geometry); tied rows keep 1 throughout.
   std::vector<char> covered_;
-  bool coverage_set_ = false;  ///< covered_ holds this step's evaluations
-  /// Whether owned slave node q has a master for its rows in the ContactMortar m in use:
-  /// D_jj above the "no master" tolerance and, for contact, covered_[q].
-  bool paired(int q, const ContactMortar& m) const {
-    return m.D[owned_[q]].value > D_tol_ && (input_.type == ContactKind::tied || covered_[q]);
-  }
+  bool coverage_set_ = false;   ///< covered_ holds this step's evaluations
   GlobalIndex self_faces_ = 0;  ///< self-contact: faces of the side set
   ActiveSetPolicy policy_;
   ContactMortarOptions options_;
@@ -222,6 +217,11 @@ class ContactInterface {
     const MasterTerm* end;
   };
   SlaveRow slave_row(int q) const;
+  /// Whether owned slave node q has a master for its rows in the ContactMortar m in use: D_jj
+  /// above the "no master" tolerance, and its faces covered (covered_; always for tied rows).
+  bool paired(int q, const ContactMortar& m) const {
+    return m.D[owned_[q]].value > D_tol_ && covered_[q];
+  }
   // Per owned slave node: results of the last evaluation and the slip history.
   std::vector<double> pressure_, gap_;
   std::vector<double> iterate_gap_;  ///< g_j at the last evaluation (if gap_known_)

@@ -244,7 +244,7 @@ def plot_tubes(r, sets, inner, path):
     outer = np.unique(sets["upper_outer"])
     lower = np.unique(sets["lower_outer"])
     sections = (("section x = 0 (the crossing)", 0.0), ("section x = 0.025", 0.025))
-    shown = []  # (ax, z, y) of every plotted point: the axes fit all of them
+    shown = []  # (z, y) of the upper tube's plotted nodes: both sections' axes fit them all
     for ax, (title, cut) in zip(axes, sections):
         for which, ns, style in (("inner (self-contact)", nodes, "o"),
                                  ("upper outer", outer, "."), ("lower outer", lower, ".")):
