@@ -7,11 +7,11 @@
 // contact, Jacobian, linear solve; min/mean/max over ranks) and, before the first step,
 // which mesh the run reads and what each rank holds of it.
 //
-// The mesh: a static run without contact or with frictionless or frictional contact, with one
-// results file, reads the distributed mesh (each rank its part, drivers/mesh_choice.hpp; with
-// contact on a direct solver; the slave faces' elements partitioned apart, so that every rank
-// evaluates its share of them; GROUT_PARTITION picks another partition); any other run the
-// replicated mesh. GROUT_MESH=replicated keeps the replicated mesh for every run.
+// The mesh: a static run without contact or with frictionless or frictional contact, and a
+// dynamic run without contact, read the distributed mesh (each rank its part,
+// drivers/mesh_choice.hpp; with contact, the slave faces' elements partitioned apart, so that
+// every rank evaluates its share of them; GROUT_PARTITION picks another partition); any other
+// run the replicated mesh. GROUT_MESH=replicated keeps the replicated mesh for every run.
 //
 // Exit codes: 0 done, 2 bad input (message names the file and key or mesh entity; also an
 // output that cannot be written), 3 a step did not converge (every earlier step is already
@@ -84,6 +84,9 @@ struct RunMesh {
   std::optional<DistributedMesh> distributed;
   std::string replicated_reason;  ///< why not the distributed mesh (drivers/mesh_choice.hpp)
   std::string partition;          ///< the distributed mesh's partition, in words
+  /// On the distributed mesh: whether the run solves on Belos + MueLu (iterative_solver_chosen
+  /// with the contact's slave nodes counted), whose layout then takes the owned nodes.
+  bool iterative = false;
 
   const Mesh& mesh() const { return distributed ? distributed->local : *replicated; }
   GlobalIndex num_nodes() const {
@@ -131,8 +134,7 @@ GlobalIndex contact_slave_nodes(const DistributedMesh& mesh, const Input& input,
 /// against it; every rank agrees on the outcome.
 RunMesh read_mesh(const Input& input, bool forced_replicated,
                   const Teuchos::RCP<const Comm>& comm) {
-  const MeshChoice choice = choose_mesh(
-      input, [&] { return read_mesh_header(*comm, input.mesh_file).num_nodes; }, forced_replicated);
+  const MeshChoice choice = choose_mesh(input, forced_replicated);
   RunMesh run_mesh;
   if (!choice.distributed) {
     run_mesh.replicated_reason = choice.reason;
@@ -157,18 +159,12 @@ RunMesh read_mesh(const Input& input, bool forced_replicated,
                                 x_max_all};
   agree_on_errors(*comm, [&] { check_input_against_mesh(input, mesh.local, numbers); });
   // With contact under `type: auto` the multipliers count too (dim per slave node, as
-  // ContactInterface numbers them): where they take the unknowns to the iterative solver the
-  // run reads the replicated mesh after all.
-  if (!input.contact.empty() &&
-      iterative_for_unknowns(input,
-                             (mesh.global_num_nodes + contact_slave_nodes(mesh, input, *comm)) *
-                                 mesh.local.dimension)) {
-    run_mesh.distributed.reset();
-    run_mesh.replicated_reason = "contact on the iterative linear solver";
-    run_mesh.replicated =
-        read_and_broadcast_mesh(*comm, [&] { return read_exodus(input.mesh_file); });
-    agree_on_errors(*comm, [&] { check_input_against_mesh(input, *run_mesh.replicated); });
-  }
+  // ContactInterface numbers them).
+  const GlobalIndex slave_nodes =
+      input.contact.empty() || input.solver.linear.type != LinearSolverType::automatic
+          ? 0
+          : contact_slave_nodes(mesh, input, *comm);
+  run_mesh.iterative = iterative_solver_chosen(input, mesh.global_num_nodes, slave_nodes);
   return run_mesh;
 }
 
@@ -187,9 +183,9 @@ SystemLayout direct_solver_layout(const MechanicsProblem& problem, int dim) {
 /// bodies, labelled across the ranks (parallel/distributed_bodies.hpp; none when the mesh is
 /// one body). Collective.
 SystemLayout distributed_layout(const MechanicsProblem& problem, const DistributedMesh& mesh,
-                                const Input& input, const Comm& comm) {
+                                bool iterative, const Comm& comm) {
   SystemLayout layout = direct_solver_layout(problem, mesh.local.dimension);
-  if (!iterative_solver_chosen(input, mesh.global_num_nodes)) return layout;
+  if (!iterative) return layout;
   const std::size_t owned = std::size_t(mesh.num_owned_nodes), dim = mesh.local.dimension;
   layout.nodes.assign(mesh.node_gid.begin(), mesh.node_gid.begin() + owned);
   layout.coordinates.assign(mesh.local.coordinates.begin(),
@@ -299,8 +295,9 @@ void run(const std::string& input_path, const std::string& output_dir, bool time
   }
   const NewtonOptions& newton = input.solver.newton;
   // The replicated mesh's layout also has every node's coordinates and body (iterative path).
-  const SystemLayout layout = distributed ? distributed_layout(problem, *distributed, input, *comm)
-                                          : system_layout(problem, mesh);
+  const SystemLayout layout =
+      distributed ? distributed_layout(problem, *distributed, run_mesh.iterative, *comm)
+                  : system_layout(problem, mesh);
   LinearSolver linear(input.solver.linear, layout);
   std::unique_ptr<ResultsOutput> output;
   agree_on_errors(*comm, [&] {

@@ -3,24 +3,19 @@
 // mesh (parallel/distributed_mesh.hpp) when every piece the run uses has its distributed form,
 // the replicated mesh (every rank holds all of it) otherwise.
 //
-// Distributed so far: a dynamic run without contact (initial velocities and the bodies from the
-// solid's part, the mass matrix's layout from the owned nodes), and a static run (load
-// stepping) without contact or with frictionless and frictional pairs; with one Exodus file
-// (`output/parallel: single`) or one per rank (`per_rank`, each rank's piece cut from its
-// part) and the CSV summaries.
-// Without contact on any linear solver (MUMPS, KLU2 or Belos + MueLu, named or chosen by `type:
-// auto`; the iterative path takes its rows' nodes' coordinates and the bodies labelled across
-// the ranks, parallel/distributed_bodies.hpp); with contact on a direct solver (MUMPS or KLU2):
-// under `type: auto` the driver counts the multipliers on the distributed mesh and reads the
-// replicated mesh instead where they take the unknowns to the iterative solver. What keeps the
-// replicated mesh: self-contact (the sides are chosen over the whole surface) and tied contact
-// (not yet compared), contact on the iterative solver (MueLu's layout then takes every node's
-// coordinates and body), dynamics with contact (not yet compared).
+// Distributed: every run but self-contact. Static (load stepping) and dynamic runs, without
+// contact or with frictionless, frictional (Coulomb) and tied pairs; on any linear solver
+// (MUMPS, KLU2 or Belos + MueLu, named or chosen by `type: auto`): the iterative path takes its
+// rows' nodes' coordinates and the bodies labelled across the ranks
+// (parallel/distributed_bodies.hpp); with contact its rows are the displacements' (the
+// multipliers condensed), so the same owned nodes serve. One Exodus file (`output/parallel:
+// single`) or one per rank (`per_rank`, each rank's piece cut from its part), and the CSV
+// summaries. Self-contact keeps the replicated mesh (every rank holds all of it): each face's
+// side is chosen over the whole surface.
 //
 // The environment variable GROUT_MESH=replicated keeps the replicated mesh for any run (to
 // compare the two paths: tools/compare_results, the ctests */mesh_paths/*).
 
-#include <functional>
 #include <string>
 
 #include "io/input.hpp"
@@ -33,20 +28,18 @@ struct MeshChoice {
   std::string reason;  ///< why the replicated mesh (empty when distributed)
 };
 
-/// The choice for `input`; `num_nodes()` gives the mesh's node count (from the file's header),
-/// asked only under `type: auto`, which picks its solver by the unknown count;
-/// `forced_replicated`: GROUT_MESH=replicated.
-MeshChoice choose_mesh(const Input& input, const std::function<long long()>& num_nodes,
-                       bool forced_replicated);
+/// The choice for `input`; `forced_replicated`: GROUT_MESH=replicated.
+MeshChoice choose_mesh(const Input& input, bool forced_replicated);
 
 /// Whether `type: auto` picks the iterative solver for `unknowns` (false for a named type).
 bool iterative_for_unknowns(const Input& input, long long unknowns);
 
-/// Whether a run without contact on a mesh of `num_nodes` nodes solves its systems with Belos +
-/// MueLu: `type: belos`, or `auto` at or above its threshold (nonlinear/linear_solver.hpp; the
-/// unknowns are num_nodes × dimension). Only then does the distributed mesh's layout carry
-/// the nodes' coordinates and bodies.
-bool iterative_solver_chosen(const Input& input, long long num_nodes);
+/// Whether a run on a mesh of `num_nodes` nodes, `slave_nodes` of them on contact slave sides,
+/// solves its systems with Belos + MueLu: `type: belos`, or `auto` at or above its threshold
+/// (nonlinear/linear_solver.hpp; the unknowns are (num_nodes + slave_nodes) × dimension, a
+/// multiplier per slave dof, as ContactInterface numbers them). Only then does the distributed
+/// mesh's layout carry the nodes' coordinates and bodies.
+bool iterative_solver_chosen(const Input& input, long long num_nodes, long long slave_nodes);
 
 /// \brief How the distributed mesh's elements are partitioned for `input`: with contact, the
 /// slave side sets of its pairs are the contact surface, and the elements with a face on it are
