@@ -7,11 +7,10 @@
 // contact, Jacobian, linear solve; min/mean/max over ranks) and, before the first step,
 // which mesh the run reads and what each rank holds of it.
 //
-// The mesh: a static run without contact or with frictionless or frictional contact, and a
-// dynamic run without contact, read the distributed mesh (each rank its part,
-// drivers/mesh_choice.hpp; with contact, the slave faces' elements partitioned apart, so that
-// every rank evaluates its share of them; GROUT_PARTITION picks another partition); any other
-// run the replicated mesh. GROUT_MESH=replicated keeps the replicated mesh for every run.
+// The mesh: every run reads the distributed mesh (each rank its part, drivers/mesh_choice.hpp;
+// with contact, the slave faces' elements partitioned apart, so that every rank evaluates its
+// share of them; GROUT_PARTITION picks another partition). GROUT_MESH=replicated makes every
+// rank read the whole mesh instead.
 //
 // Exit codes: 0 done, 2 bad input (message names the file and key or mesh entity; also an
 // output that cannot be written), 3 a step did not converge (every earlier step is already

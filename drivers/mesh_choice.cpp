@@ -12,8 +12,6 @@ namespace grout {
 MeshChoice choose_mesh(const Input& input, bool forced_replicated) {
   const auto replicated = [](std::string reason) { return MeshChoice{false, std::move(reason)}; };
   if (forced_replicated) return replicated("GROUT_MESH=replicated");
-  for (const ContactInput& c : input.contact)
-    if (c.self) return replicated("self-contact");
   return {true, ""};
 }
 
@@ -30,8 +28,12 @@ bool iterative_for_unknowns(const Input& input, long long unknowns) {
 DistributionOptions distribution_options(const Input& input) {
   DistributionOptions options;
   options.skip_missing_sets = true;  // check_input_against_mesh names them with their key
+  // A self-contact surface is partitioned with the rest of its body: it is much of the body
+  // (the S profile's folds: half its elements), and cut apart from the other elements it left
+  // each of 2 ranks ghosting the whole mesh, against 53.5 % with the plain cut, for the same
+  // slave faces evaluated per rank.
   for (const ContactInput& c : input.contact)
-    for (const std::string& set : contact_side_sets(c, false))
+    for (const std::string& set : c.self ? std::vector<std::string>() : contact_side_sets(c, false))
       if (std::find(options.contact_side_sets.begin(), options.contact_side_sets.end(), set) ==
           options.contact_side_sets.end())
         options.contact_side_sets.push_back(set);

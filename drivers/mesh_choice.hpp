@@ -1,20 +1,17 @@
 #pragma once
 // Which mesh a run reads (docs/design.md, "The distributed mesh", stage 3): the distributed
-// mesh (parallel/distributed_mesh.hpp) when every piece the run uses has its distributed form,
-// the replicated mesh (every rank holds all of it) otherwise.
+// mesh (parallel/distributed_mesh.hpp), each rank its part, for every run: static (load
+// stepping) and dynamic, without contact or with frictionless, frictional (Coulomb), tied and
+// self-contact pairs; on any linear solver (MUMPS, KLU2 or Belos + MueLu, named or chosen by
+// `type: auto`): the iterative path takes its rows' nodes' coordinates and the bodies
+// labelled across the ranks (parallel/distributed_bodies.hpp); with contact its rows are the
+// displacements' (the multipliers condensed), so the same owned nodes serve. One Exodus file
+// (`output/parallel: single`) or one per rank (`per_rank`, each rank's piece cut from its
+// part), and the CSV summaries.
 //
-// Distributed: every run but self-contact. Static (load stepping) and dynamic runs, without
-// contact or with frictionless, frictional (Coulomb) and tied pairs; on any linear solver
-// (MUMPS, KLU2 or Belos + MueLu, named or chosen by `type: auto`): the iterative path takes its
-// rows' nodes' coordinates and the bodies labelled across the ranks
-// (parallel/distributed_bodies.hpp); with contact its rows are the displacements' (the
-// multipliers condensed), so the same owned nodes serve. One Exodus file (`output/parallel:
-// single`) or one per rank (`per_rank`, each rank's piece cut from its part), and the CSV
-// summaries. Self-contact keeps the replicated mesh (every rank holds all of it): each face's
-// side is chosen over the whole surface.
-//
-// The environment variable GROUT_MESH=replicated keeps the replicated mesh for any run (to
-// compare the two paths: tools/compare_results, the ctests */mesh_paths/*).
+// The environment variable GROUT_MESH=replicated makes a run read the replicated mesh instead
+// (every rank holds all of it), to compare the two paths: tools/compare_results, the ctests
+// mesh_paths/*.
 
 #include <string>
 
