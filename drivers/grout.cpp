@@ -81,8 +81,7 @@ void redirect_outputs(Input& input, const std::string& dir, bool root) {
 struct RunMesh {
   std::optional<Mesh> replicated;
   std::optional<DistributedMesh> distributed;
-  std::string replicated_reason;  ///< why not the distributed mesh (drivers/mesh_choice.hpp)
-  std::string partition;          ///< the distributed mesh's partition, in words
+  std::string partition;  ///< the distributed mesh's partition, in words
   /// On the distributed mesh: whether the run solves on Belos + MueLu (iterative_solver_chosen
   /// with the contact's slave nodes counted), whose layout then takes the owned nodes.
   bool iterative = false;
@@ -129,14 +128,13 @@ GlobalIndex contact_slave_nodes(const DistributedMesh& mesh, const Input& input,
   return count;
 }
 
-/// Collective. Reads the mesh the run can use (drivers/mesh_choice.hpp) and checks the input
-/// against it; every rank agrees on the outcome.
+/// Collective. Reads the distributed mesh, or the replicated one under GROUT_MESH=replicated
+/// (`forced_replicated`; drivers/mesh_choice.hpp), and checks the input against it; every rank
+/// agrees on the outcome.
 RunMesh read_mesh(const Input& input, bool forced_replicated,
                   const Teuchos::RCP<const Comm>& comm) {
-  const MeshChoice choice = choose_mesh(input, forced_replicated);
   RunMesh run_mesh;
-  if (!choice.distributed) {
-    run_mesh.replicated_reason = choice.reason;
+  if (forced_replicated) {
     run_mesh.replicated =
         read_and_broadcast_mesh(*comm, [&] { return read_exodus(input.mesh_file); });
     agree_on_errors(*comm, [&] { check_input_against_mesh(input, *run_mesh.replicated); });
@@ -277,9 +275,9 @@ void run(const std::string& input_path, const std::string& output_dir, bool time
                   run_mesh.partition.c_str(), mesh_held.c_str(), held.c_str());
     else if (root)
       std::printf(
-          "grout: mesh: replicated (every rank holds all %lld nodes and %lld elements; %s)\n%s",
-          run_mesh.num_nodes(), run_mesh.num_elements(), run_mesh.replicated_reason.c_str(),
-          held.c_str());
+          "grout: mesh: replicated (every rank holds all %lld nodes and %lld elements; "
+          "GROUT_MESH=replicated)\n%s",
+          run_mesh.num_nodes(), run_mesh.num_elements(), held.c_str());
   }
   // Contact on the distributed mesh: global numbers, set positions and bodies (collective).
   std::optional<ContactMeshPart> contact_part;

@@ -9,12 +9,6 @@
 
 namespace grout {
 
-MeshChoice choose_mesh(const Input& input, bool forced_replicated) {
-  const auto replicated = [](std::string reason) { return MeshChoice{false, std::move(reason)}; };
-  if (forced_replicated) return replicated("GROUT_MESH=replicated");
-  return {true, ""};
-}
-
 bool iterative_solver_chosen(const Input& input, long long num_nodes, long long slave_nodes) {
   return input.solver.linear.type == LinearSolverType::belos ||
          iterative_for_unknowns(input, (num_nodes + slave_nodes) * input.model.dimension);
@@ -32,11 +26,13 @@ DistributionOptions distribution_options(const Input& input) {
   // (the S profile's folds: half its elements), and cut apart from the other elements it left
   // each of 2 ranks ghosting the whole mesh, against 53.5 % with the plain cut, for the same
   // slave faces evaluated per rank.
-  for (const ContactInput& c : input.contact)
-    for (const std::string& set : c.self ? std::vector<std::string>() : contact_side_sets(c, false))
+  for (const ContactInput& c : input.contact) {
+    if (c.self) continue;
+    for (const std::string& set : contact_side_sets(c, false))
       if (std::find(options.contact_side_sets.begin(), options.contact_side_sets.end(), set) ==
           options.contact_side_sets.end())
         options.contact_side_sets.push_back(set);
+  }
   const char* env = std::getenv("GROUT_PARTITION");
   const std::string value = env ? env : "";
   const auto bad = [&] {

@@ -20,14 +20,6 @@
 
 namespace grout {
 
-struct MeshChoice {
-  bool distributed = false;
-  std::string reason;  ///< why the replicated mesh (empty when distributed)
-};
-
-/// The choice for `input`; `forced_replicated`: GROUT_MESH=replicated.
-MeshChoice choose_mesh(const Input& input, bool forced_replicated);
-
 /// Whether `type: auto` picks the iterative solver for `unknowns` (false for a named type).
 bool iterative_for_unknowns(const Input& input, long long unknowns);
 
