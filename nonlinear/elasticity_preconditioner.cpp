@@ -131,14 +131,27 @@ void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ran
   set_default("multigrid algorithm", std::string("sa"));
   set_default("aggregation: type", std::string("uncoupled"));
   set_default("transpose: use implicit", true);
-  if (!muelu.isParameter("smoother: type")) {  // rank-local (elasticity_preconditioner.hpp)
+  const bool smoother_given =
+      muelu.isParameter("smoother: type") || muelu.isParameter("smoother: pre type") ||
+      muelu.isParameter("smoother: post type") || muelu.isSublist("smoother: pre params") ||
+      muelu.isSublist("smoother: post params");
+  if (!smoother_given) {  // rank-local (elasticity_preconditioner.hpp)
     if (multipliers) {
       muelu.set("smoother: type", std::string("RILUK"));  // ILU(0)
     } else if (!muelu.isSublist("smoother: params")) {
-      muelu.set("smoother: type", std::string("RELAXATION"));
-      Teuchos::ParameterList& relaxation = muelu.sublist("smoother: params");
-      relaxation.set("relaxation: type", std::string("Symmetric Gauss-Seidel"));
-      relaxation.set("relaxation: sweeps", 1);
+      // Forward Gauss-Seidel before the coarse correction, backward after: the post-smoother
+      // is the pre-smoother's adjoint, so the V-cycle stays symmetric for CG, at half the
+      // sweeps of symmetric Gauss-Seidel on both sides.
+      const auto gauss_seidel = [&](const char* when, bool backward) {
+        muelu.set(std::string("smoother: ") + when + " type", std::string("RELAXATION"));
+        Teuchos::ParameterList& relaxation =
+            muelu.sublist(std::string("smoother: ") + when + " params");
+        relaxation.set("relaxation: type", std::string("Gauss-Seidel"));
+        relaxation.set("relaxation: sweeps", 1);
+        relaxation.set("relaxation: backward mode", backward);
+      };
+      gauss_seidel("pre", false);
+      gauss_seidel("post", true);
     }
   }
   // MueLu's default is 2000 rows. 500: the coarse KLU2 solve stays negligible, a system of
@@ -150,12 +163,16 @@ void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ran
   if (num_ranks > 1 && !muelu.isParameter("coarse: type") &&
       !muelu.isParameter("repartition: enable") && !node_coordinates.is_null() &&
       null_space->getGlobalLength() > std::size_t(coarse_max_size)) {
-    // Never KLU2 on a multi-rank communicator: every coarse level moves to one rank (a
-    // subcommunicator), where the coarsest is factored by KLU2 as on one rank.
+    // Never KLU2 on a multi-rank communicator: the coarse levels move to fewer ranks (a
+    // subcommunicator), the coarsest to one, where it is factored by KLU2 as on one rank.
     muelu.set("repartition: enable", true);
     muelu.set("repartition: partitioner", std::string("zoltan2"));
     muelu.set("repartition: start level", 1);
-    muelu.set("repartition: min rows per proc", 1000000000);
+    // A level moves when a rank would hold fewer rows, onto ⌊rows / this⌋ ranks (at least
+    // one): the coarsest (at most `coarse: max size` rows) always onto one, where KLU2 is
+    // exact; a level of 4000 rows or more stays spread (the first coarse level has 1/13 of
+    // the rows and a quarter of the nonzeros: on one rank the others waited).
+    set_default("repartition: min rows per proc", std::max(2000, coarse_max_size + 1));
     muelu.set("repartition: max imbalance", 1.2);
     muelu.set("repartition: use subcommunicators", true);
     muelu.sublist("repartition: params").set("algorithm", std::string("multijagged"));

@@ -18,13 +18,18 @@
 //   multipliers (condensed): there it needs fewer iterations than symmetric Gauss–Seidel or
 //   Chebyshev, whose counts grow more with the mesh (3D stacked blocks, 5.1e4 unknowns:
 //   one Newton iteration of 18 GMRES iterations against two of 293 in all for one sweep of
-//   SGS); one sweep of symmetric Gauss–Seidel
-//   on a displacement-only system, whose set-up is the diagonal only: ILU(0)'s set-up was 44 %
-//   of MueLu's, and one SGS sweep takes 17–23 % less CPU for the whole run and 18 % less
-//   memory at 2–5e5 unknowns in 3D for 2–3 more CG iterations (docs/performance.md,
-//   "Iterative solver"); a user's `smoother: type` replaces either;
+//   SGS); Gauss–Seidel on a displacement-only system, whose set-up is the diagonal only
+//   (ILU(0)'s set-up was 44 % of MueLu's; one sweep of symmetric Gauss–Seidel took 17–23 %
+//   less CPU for the whole run and 18 % less memory at 2–5e5 unknowns in 3D for 2–3 more CG
+//   iterations): one forward sweep before the coarse correction and one backward sweep
+//   after, the V-cycle symmetric as CG needs (the backward sweep is the forward one's
+//   adjoint), half the sweeps of symmetric Gauss–Seidel on both sides; at 1e6 unknowns on
+//   2 ranks 36–37 CG iterations instead of 29, the Krylov phase 0.74× (docs/performance.md,
+//   "Iterative solver"). A user's `smoother: type` (or `smoother: pre type` and `post type`)
+//   replaces either;
 // - coarse solve: KLU2 on one rank. On more ranks the coarse levels are repartitioned
-//   (Zoltan2 multi-jagged on the node coordinates) onto one rank with a subcommunicator,
+//   (Zoltan2 multi-jagged on the node coordinates) onto ⌊rows / 2000⌋ ranks (at least one, so
+//   the coarsest always onto one) with a subcommunicator,
 //   where KLU2 is exact (Debian's KLU2 is wrong on a multi-rank communicator, docs/design.md,
 //   "Toolchain notes"; relaxation as the coarse solve lets GMRES stall on the condensed 3D
 //   systems). A system no larger than `coarse: max size` (Grout's default 500, MueLu's 2000) has no
@@ -72,7 +77,8 @@ bool is_nodal_displacement_map(const Map& map, int dim, long long num_nodes);
 /// near-null space and the coordinates in `user data` (`muelu` is modified).
 /// `separate_bodies`: the coordinates keep the bodies apart (node_coordinates), and the
 /// aggregation drops the links between them. `multipliers`: the system holds contact or tie
-/// multiplier rows (condensed), smoothed by ILU(0); without, symmetric Gauss–Seidel.
+/// multiplier rows (condensed), smoothed by ILU(0); without, forward Gauss–Seidel before
+/// the coarse correction and backward after.
 void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ranks,
                              const Teuchos::RCP<MultiVector>& null_space,
                              const Teuchos::RCP<MultiVector>& node_coordinates,

@@ -26,7 +26,8 @@ struct LinearSolver::Impl {
   // that each keeps its analysis while its pattern does not change.
   std::unique_ptr<MumpsSolver> mumps_symmetric;
   bool last_symmetric = false;
-  MumpsOptions gathered_options;  // settings.mumps for the gathered solves (ordering: amd)
+  double relative_tolerance = 0.0;  // set_relative_tolerance; 0: settings.belos's own
+  MumpsOptions gathered_options;    // settings.mumps for the gathered solves (ordering: amd)
   // Rank 0's 1-rank communicator for the gathered direct solves (split from `parent` once:
   // MUMPS keeps its analysis per communicator).
   Teuchos::RCP<const Comm> parent, self;
@@ -165,6 +166,10 @@ bool LinearSolver::last_solve_symmetric() const {
   return impl_->last_symmetric;
 }
 
+void LinearSolver::set_relative_tolerance(double tolerance) {
+  impl_->relative_tolerance = tolerance;
+}
+
 int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
                         const MultiplierRows* rows) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("grout: linear solve"));
@@ -188,10 +193,11 @@ int LinearSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Ve
   // stiffness it gives a symmetric positive (semi)definite K̃. MUMPS factorises it as LDLᵀ
   // with about half the flops of the LU of the condensed system (docs/performance.md,
   // "Condensed, symmetric and Schur-updated direct solves"); Belos solves it with CG and MueLu
-  // with the smoother of a system without multipliers (one sweep of symmetric Gauss–Seidel,
-  // no factorisation to set up: elasticity_preconditioner.hpp), where the condensed system
-  // needs GMRES and ILU(0) (docs/performance.md, "Iterative solver"). Anything else (slip,
-  // geometry: current) fails its checks and takes the condensation below.
+  // with the smoother of a system without multipliers (Gauss–Seidel, forward before the
+  // coarse correction and backward after, no factorisation to set up:
+  // elasticity_preconditioner.hpp), where the condensed system needs GMRES and ILU(0)
+  // (docs/performance.md, "Iterative solver"). Anything else (slip, geometry: current) fails its
+  // checks and takes the condensation below.
   const bool symmetric_path =
       impl_->settings.symmetric_reduction &&
       ((type == "mumps" && !impl_->settings.mumps.gather) || type == "belos");
@@ -277,7 +283,12 @@ int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector
   }
 
   // Belos + MueLu, in the module grout_iterative (loaded here at the first iterative solve).
-  const IterativeSettings settings{impl_->settings.belos,
+  // A forcing term (set_relative_tolerance) replaces the tolerance for this solve; on a
+  // reduced or condensed system it is relative to that system's right-hand side.
+  Teuchos::ParameterList belos = impl_->settings.belos;
+  if (impl_->relative_tolerance > 0.0)
+    belos.set("Convergence Tolerance", impl_->relative_tolerance);
+  const IterativeSettings settings{belos,
                                    impl_->settings.muelu,
                                    impl_->settings.reuse_preconditioner,
                                    impl_->layout.dim,

@@ -48,7 +48,7 @@
 //                            (symmetric_condensation.hpp) is tried first: frictionless, tied or
 //                            sticking contact on the reference geometry gives a symmetric K̃,
 //                            factorised as LDLᵀ by a MumpsSolver of its own, or solved by CG
-//                            with MueLu smoothed by symmetric Gauss–Seidel (as a system without
+//                            with MueLu smoothed by Gauss–Seidel (as a system without
 //                            contact); any other system falls back to the condensation and LU
 //                            or GMRES with ILU(0).
 // --- end condensed multipliers ---
@@ -102,6 +102,11 @@ class LinearSolver {
   /// default for the configured type); without pairs the system is solved as given.
   bool condenses_multipliers() const;
   // --- end condensed multipliers ---
+
+  /// The iterative path's relative tolerance (Belos `Convergence Tolerance`) for the solves
+  /// that follow: an inexact Newton step's forcing term (nonlinear/nox_group.cpp). 0 (the
+  /// default): the `Belos` settings' own. Direct solves ignore it.
+  void set_relative_tolerance(double tolerance);
 
   /// Solves that reused a MueLu hierarchy (`reuse_preconditioner: true`), since construction.
   int reused_hierarchies() const;

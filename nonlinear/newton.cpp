@@ -168,6 +168,17 @@ std::string nox_settings_summary(const NewtonOptions& options) {
   return text + ")";
 }
 
+/// Whether the input turns NOX's forcing term on (`Direction/Newton/Forcing Term Method`:
+/// `Type 1` or `Type 2`, not `Constant`): inexact Newton on the iterative path.
+bool forcing_term_on(const NewtonOptions& options) {
+  if (!options.nox.isSublist("Direction")) return false;
+  const Teuchos::ParameterList& direction = options.nox.sublist("Direction");
+  if (!direction.isSublist("Newton")) return false;
+  const Teuchos::ParameterList& newton = direction.sublist("Newton");
+  return newton.isType<std::string>("Forcing Term Method") &&
+         newton.get<std::string>("Forcing Term Method") != "Constant";
+}
+
 Teuchos::RCP<Teuchos::ParameterList> nox_parameters(const NewtonOptions& options, int rank,
                                                     const Teuchos::RCP<NOX::Observer>& observer) {
   auto params = Teuchos::rcp(new Teuchos::ParameterList("NOX"));
@@ -197,6 +208,7 @@ NewtonReport solve_newton(NonlinearProblem& problem, Vector& x, LinearSolver& li
   const int rank = problem.map()->getComm()->getRank();
   NewtonReport report;
   auto context = Teuchos::rcp(new NewtonContext(problem, linear));
+  context->forcing = forcing_term_on(options);
   auto group = Teuchos::rcp(new NoxGroup(context, x));
 
   // converged = (|F| <= abs OR |F|/|F0| < rel OR |F| <= floor_factor * round-off estimate)

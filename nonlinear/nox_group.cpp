@@ -152,18 +152,29 @@ NOX::Abstract::Group::ReturnType NoxGroup::computeGradient() {
   return status;
 }
 
-NOX::Abstract::Group::ReturnType NoxGroup::computeNewton(Teuchos::ParameterList& /*params*/) {
+NOX::Abstract::Group::ReturnType NoxGroup::computeNewton(Teuchos::ParameterList& params) {
   if (is_newton_) return Ok;
   if (!is_f_ || !is_jacobian_) return BadDependency;
   grout::Vector rhs(f_->tpetra().getMap());
   rhs.update(-1.0, f_->tpetra(), 0.0);
   newton_->init(0.0);
+  // Inexact Newton (Eisenstat and Walker, SIAM J. Sci. Comput. 17 (1996) 16-32): NOX's
+  // forcing term η_k asks for |J s + F| <= η_k |F|; the iterative solve takes η_k as its
+  // relative tolerance, a direct solve is exact anyway. Without a forcing term NOX's own
+  // default `Tolerance` (1e-10) is not the solver's: the `Linear Solver` settings stand.
+  const double tolerance = context_->forcing && params.isType<double>("Tolerance")
+                               ? params.get<double>("Tolerance")
+                               : 0.0;
   try {
+    context_->linear.set_relative_tolerance(tolerance);
     context_->last_linear_iterations =
         context_->linear.solve(jacobian_, rhs, newton_->tpetra(), rows_.get());
+    context_->linear.set_relative_tolerance(0.0);
   } catch (const ExitCodeError&) {
+    context_->linear.set_relative_tolerance(0.0);
     throw;  // e.g. the iterative module cannot be loaded: no smaller step cures that
   } catch (const std::exception& e) {
+    context_->linear.set_relative_tolerance(0.0);
     context_->failure = std::string("linear solve failed: ") + e.what();
     return Failed;
   }

@@ -26,6 +26,9 @@ struct NewtonContext {
   long evaluated_x_tag = -1;
   int last_linear_iterations = 0;
   int total_linear_iterations = 0;
+  /// NOX's forcing term is on (`Direction/Newton/Forcing Term Method` other than `Constant`):
+  /// each Newton step's linear solve takes NOX's `Linear Solver/Tolerance` η_k.
+  bool forcing = false;
   std::string failure;  ///< why the last Jacobian or Newton-step computation failed
 };
 

@@ -628,8 +628,8 @@ TEST(CondensedSolve, MechanicsMultilevel3D) {
 // (α = −0.06); 3D 14, 19, 32 (α = 0.24); docs/performance.md,
 // "Iterative solver", has whole Newton solves. A coarse grid of at most 100 rows gives every
 // mesh a multilevel hierarchy, as at full size.
-// `symmetric_reduction`: frictionless contact takes the symmetric reduction (CG on K̃ with one
-// sweep of symmetric Gauss–Seidel, linear_solver.hpp) unless told not to; false: GMRES and
+// `symmetric_reduction`: frictionless contact takes the symmetric reduction (CG on K̃ with
+// Gauss–Seidel sweeps, linear_solver.hpp) unless told not to; false: GMRES and
 // ILU(0) on the condensed system.
 void check_iteration_growth(int dim, ContactKind type, double mu, const std::vector<int>& levels,
                             const std::string& label, bool symmetric_reduction = true) {

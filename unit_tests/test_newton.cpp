@@ -202,6 +202,40 @@ TEST(Newton, ConvergesQuadraticallyToTheRoot) {
   EXPECT_GE(checked, 1);
 }
 
+// NOX's forcing term reaches the iterative solve (inexact Newton, nonlinear/nox_group.cpp):
+// each step is solved to η_k only, so the same root costs fewer Krylov iterations in all;
+// without it every step is solved to Belos's own tolerance, whatever NOX's default.
+TEST(Newton, ForcingTermLoosensTheIterativeSolves) {
+  Teuchos::ParameterList params;
+  params.set("type", "belos");
+  params.sublist("Belos").set("Solver Type", "CG");
+  const auto run = [&](bool forcing, int& newton_iterations) {
+    CubicProblem problem(4000);
+    Vector x(problem.map());  // x0 = 0
+    NewtonOptions options = quiet_options();
+    options.relative_tolerance = 1e-12;
+    if (forcing) {
+      Teuchos::ParameterList& newton = options.nox.sublist("Direction").sublist("Newton");
+      newton.set("Forcing Term Method", "Type 2");
+      newton.set("Forcing Term Initial Tolerance", 1e-2);
+      newton.set("Forcing Term Maximum Tolerance", 1e-2);
+      newton.set("Forcing Term Minimum Tolerance", 1e-12);
+    }
+    LinearSolver linear(params, "test", {});
+    const NewtonReport report = solve_newton(problem, x, linear, options, "  test");
+    EXPECT_TRUE(report.converged) << report.reason;
+    EXPECT_LT(distance(x, problem.root()), 1e-10);
+    newton_iterations = report.iterations;
+    return report.linear_iterations;
+  };
+  int exact_newton = 0, inexact_newton = 0;
+  const int exact = run(false, exact_newton);
+  const int inexact = run(true, inexact_newton);
+  EXPECT_LT(inexact, exact) << "Newton iterations " << inexact_newton << " against "
+                            << exact_newton;
+  EXPECT_GE(inexact_newton, exact_newton);
+}
+
 TEST(Newton, JacobianGraphMayChangeEveryIteration) {
   CubicProblem problem;
   problem.changing_graph = true;
