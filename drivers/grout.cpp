@@ -143,6 +143,15 @@ RunMesh read_mesh(const Input& input, bool forced_replicated,
   // With contact, the partition shares the slave faces as well as the elements.
   DistributionOptions options;
   agree_on_errors(*comm, [&] { options = distribution_options(input); });
+  // The iterative path reads the plain cut: cut apart from the rest, the contact elements left
+  // MueLu's rank-local smoothers with parts that CG did not converge on (the gmsh hemispheres
+  // on 2 ranks, 5.7 k-33 k nodes; docs/performance.md, "Iterative solver"). The header's node
+  // count settles the choice before reading but where the multipliers tip `type: auto` over
+  // its threshold; that case reads the mesh again, below.
+  const bool plain_if_iterative = comm->getSize() > 1 && separate_partition_by_default(options);
+  if (plain_if_iterative &&
+      iterative_solver_chosen(input, read_mesh_header(*comm, input.mesh_file).num_nodes, 0))
+    options.separate_contact = false;
   const auto read = [&] {
     run_mesh.partition = describe_partition(options);
     const DistributedMesh& mesh =
@@ -167,11 +176,7 @@ RunMesh read_mesh(const Input& input, bool forced_replicated,
           ? 0
           : contact_slave_nodes(*mesh, input, *comm);
   run_mesh.iterative = iterative_solver_chosen(input, mesh->global_num_nodes, slave_nodes);
-  if (run_mesh.iterative && separate_partition_by_default(options) && comm->getSize() > 1) {
-    // The iterative path reads the plain cut again: cut apart from the rest, the contact
-    // elements left MueLu's rank-local smoothers with parts that CG did not converge on (the
-    // 33 k-node gmsh hemispheres on 2 ranks: no convergence in 2000 iterations, against 22-30
-    // per Newton iteration with the plain cut; docs/performance.md, "Iterative solver").
+  if (run_mesh.iterative && plain_if_iterative && options.separate_contact) {
     options.separate_contact = false;
     read();
   }
