@@ -143,43 +143,25 @@ RunMesh read_mesh(const Input& input, bool forced_replicated,
   // With contact, the partition shares the slave faces as well as the elements.
   DistributionOptions options;
   agree_on_errors(*comm, [&] { options = distribution_options(input); });
-  // The iterative path reads the plain cut: cut apart from the rest, the contact elements left
-  // MueLu's rank-local smoothers with parts that CG did not converge on (the gmsh hemispheres
-  // on 2 ranks, 5.7 k-33 k nodes; docs/performance.md, "Iterative solver"). The header's node
-  // count settles the choice before reading but where the multipliers tip `type: auto` over
-  // its threshold; that case reads the mesh again, below.
-  const bool plain_if_iterative = comm->getSize() > 1 && separate_partition_by_default(options);
-  if (plain_if_iterative &&
-      iterative_solver_chosen(input, read_mesh_header(*comm, input.mesh_file).num_nodes, 0))
-    options.separate_contact = false;
-  const auto read = [&] {
-    run_mesh.partition = describe_partition(options);
-    const DistributedMesh& mesh =
-        run_mesh.distributed.emplace(read_distributed_mesh(*comm, input.mesh_file, options));
-    double x_max = 0.0, x_max_all = 0.0;  // the axisymmetric check's extent in x
-    for (GlobalIndex n = 0; n < mesh.num_owned_nodes; ++n)
-      x_max =
-          std::max(x_max, std::abs(mesh.local.coordinates[std::size_t(n * mesh.local.dimension)]));
-    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, x_max, Teuchos::outArg(x_max_all));
-    const MeshPartNumbers numbers{
-        mesh.node_gid, mesh.element_gid,          mesh.element_owner,
-        mesh.rank,     mesh.side_set_global_size, mesh.node_set_global_size,
-        x_max_all};
-    agree_on_errors(*comm, [&] { check_input_against_mesh(input, mesh.local, numbers); });
-    return &mesh;
-  };
-  const DistributedMesh* mesh = read();
+  run_mesh.partition = describe_partition(options);
+  const DistributedMesh& mesh =
+      run_mesh.distributed.emplace(read_distributed_mesh(*comm, input.mesh_file, options));
+  double x_max = 0.0, x_max_all = 0.0;  // the axisymmetric check's extent in x
+  for (GlobalIndex n = 0; n < mesh.num_owned_nodes; ++n)
+    x_max =
+        std::max(x_max, std::abs(mesh.local.coordinates[std::size_t(n * mesh.local.dimension)]));
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, x_max, Teuchos::outArg(x_max_all));
+  const MeshPartNumbers numbers{mesh.node_gid, mesh.element_gid,          mesh.element_owner,
+                                mesh.rank,     mesh.side_set_global_size, mesh.node_set_global_size,
+                                x_max_all};
+  agree_on_errors(*comm, [&] { check_input_against_mesh(input, mesh.local, numbers); });
   // With contact under `type: auto` the multipliers count too (dim per slave node, as
   // ContactInterface numbers them).
   const GlobalIndex slave_nodes =
       input.contact.empty() || input.solver.linear.type != LinearSolverType::automatic
           ? 0
-          : contact_slave_nodes(*mesh, input, *comm);
-  run_mesh.iterative = iterative_solver_chosen(input, mesh->global_num_nodes, slave_nodes);
-  if (run_mesh.iterative && plain_if_iterative && options.separate_contact) {
-    options.separate_contact = false;
-    read();
-  }
+          : contact_slave_nodes(mesh, input, *comm);
+  run_mesh.iterative = iterative_solver_chosen(input, mesh.global_num_nodes, slave_nodes);
   return run_mesh;
 }
 

@@ -55,11 +55,6 @@ DistributionOptions distribution_options(const Input& input) {
   return options;
 }
 
-bool separate_partition_by_default(const DistributionOptions& options) {
-  const char* env = std::getenv("GROUT_PARTITION");
-  return options.separate_contact && (env == nullptr || std::string(env).empty());
-}
-
 std::string describe_partition(const DistributionOptions& options) {
   if (options.contact_side_sets.empty()) return "RCB, weights 1";
   std::string sets;

@@ -40,10 +40,6 @@ bool iterative_solver_chosen(const Input& input, long long num_nodes, long long 
 /// value is an input error naming it.
 DistributionOptions distribution_options(const Input& input);
 
-/// Whether `options` cut the contact elements apart because no GROUT_PARTITION chose a
-/// partition: a run on the iterative solver then reads the plain cut instead (drivers/grout.cpp).
-bool separate_partition_by_default(const DistributionOptions& options);
-
 /// The partition `options` make, in words, for the --timers report.
 std::string describe_partition(const DistributionOptions& options);
 

@@ -159,6 +159,15 @@ void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ran
   // 71 iterations on 2 ranks against 1 on one rank in 3D), and the stacked study's meshes
   // all get multilevel hierarchies (docs/performance.md, "Iterative solver").
   set_default("coarse: max size", 500);
+  // A coarse operator R A P with an empty row (an aggregate whose prolongator columns are
+  // zero: seen on level 1 of the 5.7 k-node gmsh hemispheres cut with the contact elements
+  // apart, 6 rows on rank 0) gets 1 on its diagonal. Without it the row's unknowns are missing
+  // from the column map that Tpetra builds from the entries, while Gauss-Seidel
+  // (CrsMatrix::gaussSeidelCopy) takes the column map to start with the domain map's owned
+  // entries: a shorter column map threw on one rank (the other waited in the V-cycle's
+  // export), and a longer one would misalign the smoother's values without a word. The check
+  // is one pass over the diagonal per level.
+  set_default("rap: fix zero diagonals", true);
   const int coarse_max_size = muelu.get<int>("coarse: max size");
   if (num_ranks > 1 && !muelu.isParameter("coarse: type") &&
       !muelu.isParameter("repartition: enable") && !node_coordinates.is_null() &&

@@ -14,7 +14,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <iostream>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 
 #include "nonlinear/elasticity_preconditioner.hpp"
@@ -52,6 +54,26 @@ Fingerprint local_fingerprint(const Matrix& K) {
   mix(v, h);
   return {h, v};
 }
+
+// MueLu's preconditioner prints an exception's whole text (source path, "Throw test ...") to
+// std::cerr before it rethrows it, from inside the Krylov solve; its message reaches the user
+// through Grout's error, without the source paths (io/errors.hpp). std::cerr is held back for
+// the solve's duration: passed on when the solve returns, dropped when it throws.
+class HeldErrorStream {
+ public:
+  HeldErrorStream() : saved_(std::cerr.rdbuf(held_.rdbuf())) {}
+  ~HeldErrorStream() { std::cerr.rdbuf(saved_); }
+  HeldErrorStream(const HeldErrorStream&) = delete;
+  HeldErrorStream& operator=(const HeldErrorStream&) = delete;
+  void pass_on() const {
+    std::cerr.rdbuf(saved_);
+    std::cerr << held_.str() << std::flush;
+  }
+
+ private:
+  std::ostringstream held_;
+  std::streambuf* saved_;
+};
 
 class BelosMueLuSolver : public IterativeSolver {
  public:
@@ -219,7 +241,9 @@ int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b
     {
       Teuchos::TimeMonitor krylov_timer(
           *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: Krylov iterations"));
+      const HeldErrorStream held;
       converged = solver->solve();
+      held.pass_on();
     }
     const int iterations = solver->getNumIters();
     bool accepted = converged == Belos::Converged;

@@ -14,6 +14,7 @@
 #include "nonlinear/klu_solve.hpp"
 #include "nonlinear/mumps_solver.hpp"
 #include "nonlinear/symmetric_condensation.hpp"
+#include "nonlinear/timed_agreement.hpp"
 
 namespace grout {
 
@@ -49,6 +50,49 @@ struct LinearSolver::Impl {
   IterativeSolver& iterative_solver() {
     if (!iterative) iterative = create_iterative_solver();
     return *iterative;
+  }
+  // The iterative solve, its outcome agreed over the ranks (timed_agreement.hpp): a rank
+  // whose Krylov solve or MueLu set-up threw while the others wait inside it for this rank
+  // ends the job after stall_limit_seconds(); otherwise every rank throws when any rank
+  // failed, so that every rank cuts the step back, or falls back to the direct solver, alike.
+  // Where the kinds differ, an error with an exit code of its own (no module) or an InputError
+  // ranks above a failed solve: the ranks that hold one rethrow it, the others throw
+  // ErrorOnOtherRank with its code.
+  std::unique_ptr<TimedAgreement> agreement;
+  int agreed_iterative_solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
+                             const std::string& belos_type, const IterativeSettings& settings) {
+    const Comm& comm = *K->getRowMap()->getComm();
+    if (comm.getSize() == 1) return iterative_solver().solve(K, b, x, belos_type, settings);
+    if (!agreement || !agreement->built_on(comm))  // every rank's first iterative solve
+      agreement = std::make_unique<TimedAgreement>(comm);
+    std::exception_ptr error;
+    int iterations = 0;
+    try {
+      iterations = iterative_solver().solve(K, b, x, belos_type, settings);
+    } catch (...) {
+      error = std::current_exception();
+    }
+    // Kind: 2 an error with its own exit code or an InputError, 1 any other (a failed solve).
+    int kind = 0;
+    if (error) {
+      try {
+        std::rethrow_exception(error);
+      } catch (const ExitCodeError&) {
+        kind = 2;
+      } catch (const InputError&) {
+        kind = 2;
+      } catch (...) {
+        kind = 1;
+      }
+    }
+    const int code = error ? exit_code_of(error) : 0;
+    const int highest =
+        agreement->highest(kind * 256 + code, error ? without_source_paths(message_of(error)) : "",
+                           code, stall_limit_seconds());
+    if (highest == 0) return iterations;
+    if (error && kind == highest / 256) std::rethrow_exception(error);
+    if (highest / 256 == 2) throw ErrorOnOtherRank(highest % 256);
+    throw std::runtime_error("the iterative solve failed on another rank");
   }
   std::string last_type;
   // type: auto took the iterative path and it failed: the direct solver from then on.
@@ -298,7 +342,7 @@ int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector
                                    impl_->layout.num_global_nodes,
                                    multipliers && !impl_->layout.multiplier_pairing.empty()};
   try {
-    return impl_->iterative_solver().solve(K, b, x, belos_type, settings);
+    return impl_->agreed_iterative_solve(K, b, x, belos_type, settings);
   } catch (const ExitCodeError&) {  // no module, or an error with its own exit code
     throw;
   } catch (const InputError&) {
