@@ -165,16 +165,21 @@ NOX::Abstract::Group::ReturnType NoxGroup::computeNewton(Teuchos::ParameterList&
   const double tolerance = context_->forcing && params.isType<double>("Tolerance")
                                ? params.get<double>("Tolerance")
                                : 0.0;
+  // The forcing term holds for this solve only, however it ends.
+  struct ToleranceForThisSolve {
+    LinearSolver& linear;
+    ToleranceForThisSolve(LinearSolver& solver, double value) : linear(solver) {
+      linear.set_relative_tolerance(value);
+    }
+    ~ToleranceForThisSolve() { linear.set_relative_tolerance(0.0); }
+  };
   try {
-    context_->linear.set_relative_tolerance(tolerance);
+    const ToleranceForThisSolve forcing(context_->linear, tolerance);
     context_->last_linear_iterations =
         context_->linear.solve(jacobian_, rhs, newton_->tpetra(), rows_.get());
-    context_->linear.set_relative_tolerance(0.0);
   } catch (const ExitCodeError&) {
-    context_->linear.set_relative_tolerance(0.0);
     throw;  // e.g. the iterative module cannot be loaded: no smaller step cures that
   } catch (const std::exception& e) {
-    context_->linear.set_relative_tolerance(0.0);
     context_->failure = std::string("linear solve failed: ") + e.what();
     return Failed;
   }
