@@ -348,6 +348,50 @@ TEST(SymmetricCondensation, DeclinesOnANonSymmetricStiffness) {
   check_declines(mc, 3, "3D frictionless with one K entry off by 1e-6");
 }
 
+// The same across the ranks (2 ranks): rank 0 scales one entry K(i, j) whose column j is a
+// displacement dof another rank owns, so that K(j, i) lies on that rank only. check_symmetric
+// sends each rank's ghost-column entries to the column's owner; a mirror lost on the way
+// would pass the perturbed K.
+TEST(SymmetricCondensation, DeclinesOnAStiffnessNonSymmetricAcrossTheRanks) {
+  Case mc;
+  build(mc, 3, ContactKind::frictionless, 0.0, ContactGeometry::reference);
+  const auto comm = mc.J->getRowMap()->getComm();
+  if (comm->getSize() == 1) GTEST_SKIP() << "needs a second rank";
+  const auto& row_map = *mc.J->getRowMap();
+  // Rank 0's largest such entry (a small one, scaled, could stay within the tolerance, which
+  // is relative to its row's largest entry).
+  int changed = 0;
+  GO best_row = -1, best_col = -1;
+  double best = 0.0;
+  if (comm->getRank() == 0) {
+    for (LO i = 0; i < LO(row_map.getNodeNumElements()); ++i) {
+      const GO row = row_map.getGlobalElement(i);
+      if (row >= mc.n_u) continue;
+      typename Matrix::nonconst_global_inds_host_view_type cols(
+          "c", mc.J->getNumEntriesInGlobalRow(row));
+      typename Matrix::nonconst_values_host_view_type vals("v", cols.extent(0));
+      std::size_t n = 0;
+      mc.J->getGlobalRowCopy(row, cols, vals, n);
+      for (std::size_t e = 0; e < n; ++e)
+        if (cols(e) < mc.n_u && !row_map.isNodeGlobalElement(cols(e)) &&
+            std::abs(vals(e)) > std::abs(best))
+          best_row = row, best_col = cols(e), best = vals(e);
+    }
+  }
+  mc.J->resumeFill();
+  if (best_row >= 0) {
+    const double v = best * (1.0 + 1e-6);
+    mc.J->replaceGlobalValues(best_row, Teuchos::ArrayView<const GO>(&best_col, 1),
+                              Teuchos::ArrayView<const double>(&v, 1));
+    changed = 1;
+  }
+  mc.J->fillComplete(mc.J->getDomainMap(), mc.J->getRangeMap());
+  int anywhere = 0;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, changed, Teuchos::outArg(anywhere));
+  ASSERT_EQ(anywhere, 1) << "rank 0 has no entry in another rank's displacement column";
+  check_declines(mc, 3, "3D frictionless with one K entry across the ranks off by 1e-6");
+}
+
 // The multiplier columns of the master rows scaled by 1 + 1e-6: C N is no longer a multiple
 // of the constraint rows' Gᵀ (the multiplier would not act along the gap's gradient).
 TEST(SymmetricCondensation, DeclinesWhenTheMultiplierColumnsAreNotTheConstraintGradients) {
