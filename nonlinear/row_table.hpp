@@ -21,6 +21,9 @@ using RowTable = std::unordered_map<GO, Row>;
 
 /// The locally stored rows of a fill-complete matrix A (and b), by global row.
 void add_rows(const Matrix& A, const Vector& b, RowTable& table);
+/// Rows `gids` of A and b, each owned by this rank (not collective).
+/// \pre every id in `gids` is in A's row map on this rank (std::out_of_range otherwise).
+void add_owned_rows(const Matrix& A, const Vector& b, const std::vector<GO>& gids, RowTable& table);
 /// Rows `gids` of J and b on this rank (collective; gids may be owned elsewhere).
 void import_rows(const Matrix& J, const Vector& b, std::vector<GO> gids, RowTable& table);
 

@@ -834,7 +834,8 @@ bool SymmetricCondensation::condense(const Matrix& J, const Vector& b,
     m.handled.back().pairs = pairs;
   }
   if (!(m.reason = agree(*comm, why)).empty()) return false;
-  import_rows(J, b, needed, m.rows);
+  // Every handled node's rows are this rank's (checked above): read in place, no transfer.
+  add_owned_rows(J, b, needed, m.rows);
   // The cheapest check first (friction and the current geometry fail it): every multiplier
   // row holds either displacements only or this node's multipliers only.
   for (const NodeData& nd : m.handled) {
