@@ -5,6 +5,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "nonlinear/local_csr_matrix.hpp"
+
 namespace grout {
 
 Teuchos::RCP<Matrix> jacobian_matrix(const Matrix& K_solid, const Teuchos::RCP<const Map>& map,
@@ -127,24 +129,10 @@ Teuchos::RCP<Matrix> jacobian_matrix(const Matrix& K_solid, const Teuchos::RCP<c
     row_ptr[i + 1] = col_ind.size();
   }
 
-  using RowPtr = Matrix::local_graph_device_type::row_map_type::non_const_type;
-  using ColInd = Matrix::local_graph_device_type::entries_type::non_const_type;
-  using Values = Matrix::local_matrix_device_type::values_type;
-  RowPtr ptr(Kokkos::view_alloc("grout::jacobian_row_ptr", Kokkos::WithoutInitializing),
-             row_ptr.size());
-  ColInd ind(Kokkos::view_alloc("grout::jacobian_columns", Kokkos::WithoutInitializing),
-             col_ind.size());
-  Values val(Kokkos::view_alloc("grout::jacobian_values", Kokkos::WithoutInitializing),
-             vals.size());
-  std::copy(row_ptr.begin(), row_ptr.end(), ptr.data());
-  std::copy(col_ind.begin(), col_ind.end(), ind.data());
-  std::copy(vals.begin(), vals.end(), val.data());
   const Teuchos::RCP<const Map> column_map =
       Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(), columns.data(),
                            columns.size(), map->getIndexBase(), map->getComm()));
-  auto J = Teuchos::rcp(new Matrix(map, column_map, ptr, ind, val));
-  J->expertStaticFillComplete(map, map);
-  return J;
+  return local_csr_matrix(map, column_map, row_ptr, col_ind, vals, map, map);
 }
 
 }  // namespace grout
