@@ -28,19 +28,25 @@ DistributionOptions distribution_options(const Input& input) {
   // slave faces evaluated per rank.
   for (const ContactInput& c : input.contact) {
     if (c.self) continue;
-    for (const std::string& set : contact_side_sets(c, false))
-      if (std::find(options.contact_side_sets.begin(), options.contact_side_sets.end(), set) ==
-          options.contact_side_sets.end())
-        options.contact_side_sets.push_back(set);
+    const auto add = [](std::vector<std::string>& sets, const std::string& set) {
+      if (std::find(sets.begin(), sets.end(), set) == sets.end()) sets.push_back(set);
+    };
+    for (const std::string& set : contact_side_sets(c, false)) add(options.contact_side_sets, set);
+    for (const std::string& set : contact_side_sets(c, true)) add(options.master_side_sets, set);
   }
   const char* env = std::getenv("GROUT_PARTITION");
   const std::string value = env ? env : "";
   const auto bad = [&] {
-    return InputError("GROUT_PARTITION=" + value +
-                      ": expected separate (the default), plain, criteria or weight:W (W >= 0)");
+    return InputError(
+        "GROUT_PARTITION=" + value +
+        ": expected separate (the default), separate:positions, plain, criteria or weight:W "
+        "(W >= 0)");
   };
   if (value.empty() || value == "separate") {
     options.separate_contact = true;
+  } else if (value == "separate:positions") {  // without the gap bands
+    options.separate_contact = true;
+    options.master_side_sets.clear();
   } else if (value == "criteria") {
     options.balance_contact = true;
   } else if (value.rfind("weight:", 0) == 0) {
@@ -59,7 +65,12 @@ std::string describe_partition(const DistributionOptions& options) {
   if (options.contact_side_sets.empty()) return "RCB, weights 1";
   std::string sets;
   for (const std::string& set : options.contact_side_sets) sets += (sets.empty() ? "" : ", ") + set;
-  if (options.separate_contact) return "RCB, the elements on " + sets + " apart from the others";
+  std::string masters;
+  for (const std::string& set : options.master_side_sets)
+    masters += (masters.empty() ? "" : ", ") + set;
+  if (options.separate_contact)
+    return "RCB, the elements on " + sets + " apart from the others" +
+           (masters.empty() ? "" : ", in bands of their distance to " + masters);
   if (options.balance_contact) return "two-criteria RCB: elements and elements on " + sets;
   if (options.contact_weight > 0.0) {
     char weight[32];

@@ -36,8 +36,9 @@ bool iterative_solver_chosen(const Input& input, long long num_nodes, long long 
 /// evaluates its share of the slave faces and holds its share of the solid (docs/performance.md,
 /// "Scale: what a rank holds"). The environment variable GROUT_PARTITION picks another
 /// partition, to compare them: `plain` (weights 1, the contact ignored), `weight:W` (contact
-/// elements weigh 1 + W), `criteria` (two-criteria RCB) or `separate` (the default); any other
-/// value is an input error naming it.
+/// elements weigh 1 + W), `criteria` (two-criteria RCB), `separate:positions` (the contact
+/// elements by one RCB, without the gap bands of DistributionOptions::master_side_sets) or
+/// `separate` (the default); any other value is an input error naming it.
 DistributionOptions distribution_options(const Input& input);
 
 /// The partition `options` make, in words, for the --timers report.

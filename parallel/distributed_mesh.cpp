@@ -13,6 +13,7 @@
 
 #include "assembly/agree_on_errors.hpp"
 #include "io/errors.hpp"
+#include "parallel/contact_bands.hpp"
 #include "parallel/directory.hpp"
 #include "parallel/element_partition.hpp"
 #include "parallel/migrate_mesh.hpp"
@@ -67,22 +68,29 @@ std::vector<double> check_and_centroids(const MeshHeader& h, const MeshSlices& s
   return centroids;
 }
 
-/// The indices of the contact side sets among the header's side sets.
-std::vector<std::size_t> contact_sets(const MeshHeader& h, const DistributionOptions& options) {
+/// The indices of the side sets `names` among the header's side sets (`what`: the role named
+/// in the error).
+std::vector<std::size_t> find_side_sets(const MeshHeader& h, const std::vector<std::string>& names,
+                                        bool skip_missing, const char* what) {
   std::vector<std::size_t> sets;
-  if (options.contact_weight == 0.0 && !options.balance_contact && !options.separate_contact)
-    return sets;
-  for (const std::string& name : options.contact_side_sets) {
+  for (const std::string& name : names) {
     std::size_t k = 0;
     while (k < h.side_sets.size() && h.side_sets[k].name != name &&
            name != "id_" + std::to_string(h.side_sets[k].id))
       ++k;
-    if (k == h.side_sets.size() && options.skip_missing_sets) continue;
+    if (k == h.side_sets.size() && skip_missing) continue;
     if (k == h.side_sets.size())
-      throw InputError("mesh '" + h.file + "': no side set '" + name + "' (contact surface)");
+      throw InputError("mesh '" + h.file + "': no side set '" + name + "' (" + what + ")");
     sets.push_back(k);
   }
   return sets;
+}
+
+/// The indices of the contact side sets among the header's side sets.
+std::vector<std::size_t> contact_sets(const MeshHeader& h, const DistributionOptions& options) {
+  if (options.contact_weight == 0.0 && !options.balance_contact && !options.separate_contact)
+    return {};
+  return find_side_sets(h, options.contact_side_sets, options.skip_missing_sets, "contact surface");
 }
 
 /// Collective. Per slice element: 1 when it has a face in one of the side sets `sets` (whose
@@ -114,23 +122,50 @@ std::vector<double> element_weights(const std::vector<char>& contact, double con
   return weights;
 }
 
-/// Collective. The contact elements (contact[i] = 1) and the others partitioned apart, one RCB
-/// each with weights 1 (DistributionOptions::separate_contact).
+/// Collective. The contact elements (band[i] >= 0), each group of contact_gap_bands apart,
+/// and the others (band[i] = -1) partitioned apart, one RCB each with weights 1
+/// (DistributionOptions::separate_contact).
 std::vector<int> partition_separately(const Comm& comm, int dimension,
                                       const std::vector<GlobalIndex>& ids,
                                       const std::vector<double>& centroids,
-                                      const std::vector<char>& contact) {
+                                      const std::vector<int>& band) {
+  int bands = 0, local_bands = 0;
+  for (int b : band) local_bands = std::max(local_bands, b + 1);
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, local_bands, Teuchos::outArg(bands));
+  // Every contact group is first cut across one axis, the widest of group 0 (the slave elements
+  // nearest the other surface, where contact starts): the cuts of neighbouring bands then
+  // nearly meet, and few nodes have contact elements on two parts (each part evaluates the
+  // slave faces with a node it owns, so a ragged cut evaluates more faces twice). On 2 parts
+  // the groups are cut on that coordinate alone; on more, with it stretched twofold, so that
+  // RCB's first cut is across it and the later ones across the group's widest extent (slabs
+  // along one axis would evaluate ever more faces twice as the parts grow).
+  double low[3], high[3], low_all[3], high_all[3];
+  for (int d = 0; d < 3; ++d) low[d] = 1e300, high[d] = -1e300;
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    if (band[i] == 0)
+      for (int d = 0; d < 3; ++d)
+        low[d] = std::min(low[d], centroids[3 * i + d]),
+        high[d] = std::max(high[d], centroids[3 * i + d]);
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, 3, low, low_all);
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 3, high, high_all);
+  int axis = 0;
+  for (int d = 1; d < dimension; ++d)
+    if (high_all[d] - low_all[d] > high_all[axis] - low_all[axis]) axis = d;
   std::vector<int> part(ids.size(), 0);
-  for (char group : {char(1), char(0)}) {
+  for (int group = -1; group < bands; ++group) {
     std::vector<GlobalIndex> group_ids;
     std::vector<double> group_centroids;
     std::vector<std::size_t> at;
     for (std::size_t i = 0; i < ids.size(); ++i) {
-      if (contact[i] != group) continue;
+      if (band[i] != group) continue;
       at.push_back(i);
       group_ids.push_back(ids[i]);
-      group_centroids.insert(group_centroids.end(), centroids.begin() + 3 * i,
-                             centroids.begin() + 3 * i + 3);
+      const bool two = comm.getSize() == 2;
+      for (int d = 0; d < 3; ++d)
+        group_centroids.push_back(group < 0   ? centroids[3 * i + d]
+                                  : d == axis ? (two ? 1.0 : 2.0) * centroids[3 * i + d]
+                                  : two       ? 0.0
+                                              : centroids[3 * i + d]);
     }
     const std::vector<int> group_part =
         partition_elements_rcb(comm, dimension, group_ids, group_centroids,
@@ -211,17 +246,28 @@ DistributedMesh read_distributed_mesh(const Comm& comm, const std::string& path,
     const std::vector<GlobalIndex> nodes = slice_element_nodes(slices);
     const std::vector<double> x = fetch_coordinates(comm, header, slices, nodes);
     std::vector<double> centroids;
-    std::vector<std::size_t> sets;
+    std::vector<std::size_t> sets, master_sets;
     agree_on_errors(comm, [&] {
       centroids = check_and_centroids(header, slices, nodes, x);
       sets = contact_sets(header, options);
+      if (options.separate_contact)
+        master_sets = find_side_sets(header, options.master_side_sets, options.skip_missing_sets,
+                                     "contact master surface");
     });
     contact = contact_marks(comm, header, slices, sets);
     std::vector<GlobalIndex> ids(std::size_t(slices.num_elements()));
     for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = slices.element_begin + GlobalIndex(i);
-    if (options.separate_contact)
-      part = partition_separately(comm, header.dimension, ids, centroids, contact);
-    else
+    if (options.separate_contact) {
+      // With master side sets their elements are contact elements too, all in gap bands; the
+      // same on every rank (the same header and options).
+      const std::vector<char> slave = contact;
+      const std::vector<char> master = master_sets.empty()
+                                           ? std::vector<char>(contact.size(), 0)
+                                           : contact_marks(comm, header, slices, master_sets);
+      for (std::size_t i = 0; i < contact.size(); ++i) contact[i] = slave[i] || master[i];
+      const std::vector<int> band = contact_gap_bands(comm, ids, centroids, slave, master);
+      part = partition_separately(comm, header.dimension, ids, centroids, band);
+    } else
       part = partition_elements_rcb(
           comm, header.dimension, ids, centroids,
           element_weights(contact, options.contact_weight, options.balance_contact),

@@ -10,7 +10,8 @@
 //   2. element centroids: coordinates of the slice elements' nodes fetched from the ranks
 //      whose node slice holds them (a directory keyed by node id);
 //   3. Zoltan2 RCB on the centroids (parallel/element_partition.hpp), with contact side sets
-//      the elements with a face on them weighted or partitioned apart (DistributionOptions);
+//      the elements with a face on them weighted or partitioned apart, in bands of their
+//      distance to the other surface (DistributionOptions, parallel/contact_bands.hpp);
 //   4. node owners (lowest part among the node's elements, as assembly/partition.hpp; with
 //      contact side sets, among its contact elements first, so that the contact work, which
 //      follows the owned slave nodes, follows the contact elements' partition) and
@@ -93,6 +94,13 @@ struct DistributionOptions {
   /// whatever the geometry, at the price of contact elements whose neighbours may lie on
   /// another part (a surface-sized ghost layer).
   bool separate_contact = false;
+  /// With separate_contact: the master side sets of the contact pairs. Their elements are
+  /// contact elements too (partitioned apart, owning their nodes first), and the contact
+  /// elements are sorted by their distance to the other surface, cut into bands of equal
+  /// count, each band partitioned by its own RCB (parallel/contact_bands.hpp): every part gets
+  /// its share of the contact zone on both surfaces, which grows from the closest faces,
+  /// instead of one part all of it.
+  std::vector<std::string> master_side_sets;
 };
 
 /// \brief Collective. Reads the Exodus mesh `path` in slices and distributes it (see the

@@ -11,11 +11,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <set>
 
 #include "io/errors.hpp"
 #include "io/exodus.hpp"
 #include "io/mesh_generators.hpp"
+#include "parallel/contact_bands.hpp"
 #include "parallel/distributed_mesh.hpp"
 
 namespace grout {
@@ -87,6 +89,9 @@ void check_against_replicated(const std::string& path, const DistributionOptions
   std::set<GlobalIndex> contact_elements;
   if (options.contact_weight != 0.0 || options.balance_contact || options.separate_contact)
     for (const std::string& name : options.contact_side_sets)
+      for (GlobalIndex e : file.find_side_set(name)->elements) contact_elements.insert(e);
+  if (options.separate_contact)  // the master elements are contact elements too
+    for (const std::string& name : options.master_side_sets)
       for (GlobalIndex e : file.find_side_set(name)->elements) contact_elements.insert(e);
   std::vector<int> node_owner(std::size_t(N), comm->getSize());
   std::vector<int> contact_owner(std::size_t(N), comm->getSize());
@@ -269,6 +274,128 @@ TEST(DistributedMesh, SeparateContactSharesElementsAndContactFaces) {
       owned_elements_and_faces(read_distributed_mesh(*comm, path, options), "lower_contact");
   EXPECT_LE(std::abs(double(mine_elements) - elements / parts), 0.01 * elements / parts + 1.0);
   EXPECT_LE(std::abs(double(mine_faces) - faces / parts), 0.01 * faces / parts + 1.0);
+}
+
+TEST(DistributedMesh, GmshHemispheresWithGapBandsMatchReplicated) {
+  DistributionOptions options;
+  options.contact_side_sets = {"upper_contact"};
+  options.master_side_sets = {"lower_contact"};
+  options.separate_contact = true;
+  check_against_replicated(gmsh_mesh("hemispheres.exo"), options);
+}
+
+/// Element centroids of `file` (the mean of the nodes), 3 per element.
+std::vector<double> element_centroids(const Mesh& file) {
+  std::vector<double> c(std::size_t(3 * file.num_elements()), 0.0);
+  for (const auto& b : file.blocks)
+    for (GlobalIndex e = 0; e < b.num_elements(); ++e)
+      for (int a = 0; a < b.nodes_per_element; ++a)
+        for (int d = 0; d < file.dimension; ++d)
+          c[std::size_t(3 * (b.first_element + e) + d)] +=
+              file.coordinates[std::size_t(
+                  b.connectivity[std::size_t(e * b.nodes_per_element + a)] * file.dimension + d)] /
+              b.nodes_per_element;
+  return c;
+}
+
+TEST(DistributedMesh, GapBandsShareTheContactZoneOnBothSurfaces) {
+  // The gmsh hemispheres touch at one point. A contact zone is, near enough, the faces within
+  // some distance of the other surface. Brute force: every slave element's distance to the
+  // nearest master element (centroids) and every master element's to the nearest slave
+  // element; the nearest k/K of them (k = 1 .. K-1, K the bands) are a zone of growing size.
+  // Each rank owns its share of each zone, within RCB's 1 % per band (an element more per band
+  // for rounding). The cut by position alone (no master sets: the slave elements apart, the
+  // master elements with the solid) does not share them on 2 ranks.
+  const auto comm = world();
+  const int parts = comm->getSize();
+  const std::string path = gmsh_mesh("hemispheres.exo");
+  const Mesh file = read_exodus(path);
+  const std::vector<double> c = element_centroids(file);
+  const auto elements_of = [&](const char* set) {
+    const auto& e = file.find_side_set(set)->elements;
+    return std::set<GlobalIndex>(e.begin(), e.end());
+  };
+  const std::set<GlobalIndex> slave = elements_of("upper_contact"),
+                              master = elements_of("lower_contact");
+  const auto distance_to = [&](GlobalIndex e, const std::set<GlobalIndex>& other) {
+    double best = std::numeric_limits<double>::infinity();
+    for (GlobalIndex o : other) {
+      double r2 = 0.0;
+      for (int d = 0; d < 3; ++d)
+        r2 += std::pow(c[std::size_t(3 * e + d)] - c[std::size_t(3 * o + d)], 2);
+      if (o != e) best = std::min(best, r2);
+    }
+    return std::sqrt(best);
+  };
+  std::vector<std::pair<double, GlobalIndex>> by_distance;
+  for (GlobalIndex e : slave) by_distance.emplace_back(distance_to(e, master), e);
+  for (GlobalIndex e : master) by_distance.emplace_back(distance_to(e, slave), e);
+  std::sort(by_distance.begin(), by_distance.end());
+  const std::size_t C = by_distance.size();
+  const int K = num_gap_bands(GlobalIndex(C), parts);
+  ASSERT_GE(K, parts > 1 ? 2 : 1) << C << " contact elements";
+
+  const auto owned_share = [&](const DistributedMesh& m, std::size_t count) {
+    std::set<GlobalIndex> mine;
+    for (GlobalIndex e = 0; e < m.num_local_elements(); ++e)
+      if (m.owns_element(e)) mine.insert(m.element_gid[e]);
+    long long n = 0;
+    for (std::size_t k = 0; k < count; ++k) n += mine.count(by_distance[k].second);
+    return double(n);
+  };
+  // The largest excess over the tolerance of any rank's share of any zone (≤ 0: shared).
+  const auto worst_excess = [&](const DistributedMesh& m) {
+    double worst = -std::numeric_limits<double>::infinity();
+    for (int k = 1; k <= K; ++k) {
+      const std::size_t zone = C * std::size_t(k) / std::size_t(K);
+      const double off = std::abs(owned_share(m, zone) - double(zone) / parts);
+      worst = std::max(worst, off - (0.01 * double(zone) / parts + k + 1));
+    }
+    double most = 0.0;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, worst, Teuchos::outArg(most));
+    return most;
+  };
+  DistributionOptions options;
+  options.contact_side_sets = {"upper_contact"};
+  options.master_side_sets = {"lower_contact"};
+  options.separate_contact = true;
+  EXPECT_LE(worst_excess(read_distributed_mesh(*comm, path, options)), 0.0);
+  if (parts == 2) {  // the cut by position alone (the slave elements apart) does not share them
+    options.master_side_sets.clear();
+    EXPECT_GT(worst_excess(read_distributed_mesh(*comm, path, options)), 0.0);
+  }
+}
+
+TEST(ContactBands, NearestDistancesAreTheBruteForceOnes) {
+  // Points on a wavy surface, queries around it; a query never finds its own id.
+  std::vector<double> points, queries;
+  std::vector<GlobalIndex> point_ids, query_ids;
+  unsigned seed = 7;
+  const auto next = [&] { return (seed = seed * 1103515245u + 12345u) / 4294967296.0; };
+  for (int i = 0; i < 400; ++i) {
+    const double x = next(), y = next();
+    points.insert(points.end(), {x, y, 0.1 * std::sin(6.0 * x) * std::cos(5.0 * y)});
+    point_ids.push_back(i);
+  }
+  for (int i = 0; i < 300; ++i) {
+    queries.insert(queries.end(), {1.4 * next() - 0.2, 1.4 * next() - 0.2, 0.6 * next() - 0.3});
+    query_ids.push_back(i < 100 ? i : 1000 + i);  // the first 100 are points' ids
+  }
+  const std::vector<double> d = nearest_distances(points, point_ids, queries, query_ids);
+  for (std::size_t q = 0; q < query_ids.size(); ++q) {
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t p = 0; p < point_ids.size(); ++p) {
+      if (point_ids[p] == query_ids[q]) continue;
+      double r2 = 0.0;
+      for (int k = 0; k < 3; ++k) r2 += std::pow(queries[3 * q + k] - points[3 * p + k], 2);
+      best = std::min(best, r2);
+    }
+    EXPECT_EQ(d[q], std::sqrt(best)) << "query " << q;
+  }
+  EXPECT_TRUE(std::isinf(nearest_distances({}, {}, {0.0, 0.0, 0.0}, {0})[0]));
+  EXPECT_EQ(num_gap_bands(0, 2), 1);
+  EXPECT_EQ(num_gap_bands(400, 2), 3);
+  EXPECT_EQ(num_gap_bands(100000, 2), 8);
 }
 
 TEST(DistributedMesh, EachRankHoldsAtMost55PercentOnTwoOrMoreRanks) {

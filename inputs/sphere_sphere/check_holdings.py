@@ -4,14 +4,22 @@
 - the run read the distributed mesh;
 - each rank owns its share of the elements, within --tol (5 %) of the even share (the mesh
   file's element count over the ranks);
-- each rank evaluates its share of the slave faces, within --face-tol (20 %) of the even share
-  (the slave side set's face count over the ranks): a rank evaluates the faces with a node it
-  owns, so the faces along the cut count on both sides, and together the ranks evaluate every
-  face at least once.
+- every rank evaluates slave faces (a rank evaluates the faces with a node it owns), and
+  together they evaluate every face at least once; the counts are printed against the even
+  share (the slave side set's face count over the ranks);
+- each rank holds its share of the contact zone: the master faces its slave faces found in the
+  search, within --search-tol (30 %) of the even share of their sum.
 On the two hemispheres of sphere_sphere, RCB with weights 1 cuts between the bodies and one
-rank evaluates every slave face.
+rank evaluates every slave face. The slave elements cut apart by position alone
+(GROUT_PARTITION=separate:positions) split the slave faces evenly, but not the zone, which is
+a fraction of the surface round the pole: on level 1 the other rank's faces find no master
+face, on levels 2 and 3 one rank's find 43 % and 38 % more than the even share. The default cuts the contact elements in bands of
+their distance to the other surface (docs/input.md, "Checks against the mesh"): the zone is
+shared, and the faces far from it, which find no master face and cost little, may lean to one
+rank (rank 0 evaluates 24-32 % more than the even share: a node on two parts' contact
+elements goes to the lower part, and the bands' cuts are longer than one cut).
 
-Usage: check_holdings.py MESH.exo SLAVE_SET [--interface NAME] [--tol 0.05] [--face-tol 0.2]
+Usage: check_holdings.py MESH.exo SLAVE_SET [--interface NAME] [--tol 0.05] [--search-tol 0.3]
        -- COMMAND...
 """
 import argparse
@@ -36,7 +44,7 @@ def mesh_counts(path, side_set):
 def main():
     argv = sys.argv[1:]
     if "--" not in argv:
-        sys.exit("usage: check_holdings.py MESH.exo SLAVE_SET [--tol T] [--face-tol T] -- "
+        sys.exit("usage: check_holdings.py MESH.exo SLAVE_SET [--tol T] [--search-tol T] -- "
                  "COMMAND...")
     cut = argv.index("--")
     ap = argparse.ArgumentParser()
@@ -44,7 +52,7 @@ def main():
     ap.add_argument("slave_set")
     ap.add_argument("--interface", default="ball")
     ap.add_argument("--tol", type=float, default=0.05)
-    ap.add_argument("--face-tol", type=float, default=0.2)
+    ap.add_argument("--search-tol", type=float, default=0.3)
     a = ap.parse_args(argv[:cut])
     run = subprocess.run(argv[cut + 1:], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                          text=True)
@@ -66,18 +74,31 @@ def main():
         sys.exit("check_holdings: no holdings report of 2 or more ranks (--timers)\n" +
                  "\n".join(fails))
     for r in range(ranks):
-        evaluated, searched = contact[r]
-        for what, mine, total, tol in (("owned elements", owned[r], elements, a.tol),
-                                       ("evaluated slave faces", evaluated, faces, a.face_tol)):
-            share = total / ranks
-            ok = abs(mine - share) <= tol * share
-            print("rank %d: %s %d of %d, %+.1f %% off the even share %.1f (tolerance %.0f %%): %s"
-                  % (r, what, mine, total, 100 * (mine - share) / share, share, 100 * tol,
-                     "ok" if ok else "FAIL"))
-            if not ok:
-                fails.append("rank %d: %s %d, not within %g %% of %.1f" %
-                             (r, what, mine, 100 * tol, share))
-        print("rank %d: master faces after the search %d" % (r, searched))
+        evaluated = contact[r][0]
+        share = elements / ranks
+        ok = abs(owned[r] - share) <= a.tol * share
+        print("rank %d: owned elements %d of %d, %+.1f %% off the even share %.1f (tolerance "
+              "%.0f %%): %s" % (r, owned[r], elements, 100 * (owned[r] - share) / share, share,
+                                100 * a.tol, "ok" if ok else "FAIL"))
+        if not ok:
+            fails.append("rank %d: owned elements %d, not within %g %% of %.1f" %
+                         (r, owned[r], 100 * a.tol, share))
+        print("rank %d: evaluated slave faces %d of %d, %+.1f %% off the even share %.1f" %
+              (r, evaluated, faces, 100 * (evaluated - faces / ranks) / (faces / ranks),
+               faces / ranks))
+        if evaluated == 0:
+            fails.append("rank %d evaluates no slave face" % r)
+    searched = [contact[r][1] for r in range(ranks)]
+    zone = sum(searched) / ranks
+    for r in range(ranks):
+        ok = abs(searched[r] - zone) <= a.search_tol * zone
+        print("rank %d: master faces after the search %d, %+.1f %% off the even share %.1f of "
+              "the contact zone (tolerance %.0f %%): %s" % (r, searched[r], 100 * (
+                  searched[r] - zone) / max(zone, 1e-300), zone, 100 * a.search_tol,
+                  "ok" if ok else "FAIL"))
+        if not ok:
+            fails.append("rank %d: master faces after the search %d, not within %g %% of %.1f"
+                         % (r, searched[r], 100 * a.search_tol, zone))
     if sum(contact[r][0] for r in range(ranks)) < faces:
         fails.append("the ranks evaluate %d slave faces, the side set has %d" %
                      (sum(contact[r][0] for r in range(ranks)), faces))
