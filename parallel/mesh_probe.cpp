@@ -6,7 +6,9 @@
 // needs before its first solve.
 //
 //   grout_mesh_probe mesh.exo [--replicated] [--solid] [--timers] [--contact <side set> ...]
-//   [--contact-weight w] [--balance-contact] [--separate-contact]
+//   [--contact-weight w] [--balance-contact] [--separate-contact [--master <side set> ...]]
+// (--master: the contact pairs' master side sets, for the gap bands of the driver's default
+// partition, DistributionOptions::master_side_sets)
 
 #include <sys/resource.h>
 
@@ -85,6 +87,8 @@ int main(int argc, char** argv) {
       options.balance_contact = true;
     } else if (arg == "--separate-contact") {
       options.separate_contact = true;
+    } else if (arg == "--master" && i + 1 < argc) {
+      options.master_side_sets.push_back(argv[++i]);
     } else if (arg == "--contact-weight" && i + 1 < argc) {
       options.contact_weight = std::atof(argv[++i]);
     } else if (path.empty() && arg.rfind("-", 0) != 0) {
@@ -100,7 +104,8 @@ int main(int argc, char** argv) {
       std::fprintf(
           stderr,
           "usage: grout_mesh_probe mesh.exo [--replicated] [--solid] [--contact <side set>]"
-          " [--contact-weight w] [--balance-contact] [--separate-contact]\n");
+          " [--contact-weight w] [--balance-contact] [--separate-contact [--master <side "
+          "set>]]\n");
     return 2;
   }
   try {

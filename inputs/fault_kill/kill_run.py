@@ -1,6 +1,10 @@
 """A run killed with SIGKILL in the middle of a multi-step case leaves a readable Exodus file
-that holds exactly the steps its log reported, each still the right solution (Lamé's thick
-cylinder, u_r = t * u_r^Lamé(r) under the pressure 10 t, within the mesh error).
+that holds every step its log reported, at the reported times, and at most one step more, each
+still the right solution (Lamé's thick cylinder, u_r = t * u_r^Lamé(r) under the pressure 10 t,
+within the mesh error). The driver writes and flushes a step before it prints the step's line
+(drivers/grout.cpp, write_step), so that no reported step can be missing from the file; a kill
+between the two leaves the one step written and not yet reported (seen once in CI on a loaded
+machine: 3 steps in the file, 2 in the log).
 
 usage: kill_run.py <ranks> <input.yaml> <driver> [mpiexec and its options]
 
@@ -90,10 +94,10 @@ def main():
         times = results.times()
         print("log: %d steps %s; %s: %d steps %s" % (len(reported), reported, results_file,
                                                      len(times), list(times)))
-        if len(times) != len(reported):
-            failures.append("the file holds %d steps, the log reported %d"
-                            % (len(times), len(reported)))
-        elif not np.allclose(times, reported, rtol=1e-5, atol=0):
+        if not len(reported) <= len(times) <= len(reported) + 1:
+            failures.append("the file holds %d steps, the log reported %d (expected those, and "
+                            "at most the one being reported)" % (len(times), len(reported)))
+        elif not np.allclose(times[:len(reported)], reported, rtol=1e-5, atol=0):
             failures.append("step times differ: file %s, log %s" % (list(times), reported))
         for step, t in enumerate(times):
             r, ur, exact = nodal_radial(results_file, step=step)
