@@ -2,6 +2,7 @@
 
 #include "parallel/contact_bands.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -125,15 +126,19 @@ std::vector<int> contact_gap_bands(const Comm& comm, const std::vector<GlobalInd
       point_ids.push_back(GlobalIndex(all[k + 3]));
     }
   };
+  std::vector<int> band(ids.size(), -1);
+  std::vector<std::size_t> at;
+  long long counts[2] = {0, 0}, totals[2] = {0, 0};  // slave and master elements
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    if (slave[i] || master[i]) at.push_back(i), band[i] = slave[i] ? 0 : 1;
+    counts[0] += slave[i] != 0, counts[1] += master[i] != 0;
+  }
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 2, counts, totals);
+  if (totals[0] == 0 || totals[1] == 0) return band;
   std::vector<double> slave_points, master_points;
   std::vector<GlobalIndex> slave_ids, master_ids;
   surface(slave, slave_points, slave_ids);
   surface(master, master_points, master_ids);
-  std::vector<int> band(ids.size(), -1);
-  std::vector<std::size_t> at;
-  for (std::size_t i = 0; i < ids.size(); ++i)
-    if (slave[i] || master[i]) at.push_back(i), band[i] = slave[i] ? 0 : 1;
-  if (slave_ids.empty() || master_ids.empty()) return band;
   // A slave element's distance to the master surface, a master element's to the slave
   // surface (the smaller for an element on both).
   std::vector<double> d(at.size(), std::numeric_limits<double>::infinity());

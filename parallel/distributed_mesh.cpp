@@ -151,8 +151,13 @@ std::vector<int> partition_separately(const Comm& comm, int dimension,
   int axis = 0;
   for (int d = 1; d < dimension; ++d)
     if (high_all[d] - low_all[d] > high_all[axis] - low_all[axis]) axis = d;
+  const bool two = comm.getSize() == 2;
+  double contact_scale[3];  // per coordinate, for the contact groups
+  for (int d = 0; d < 3; ++d) contact_scale[d] = d == axis ? (two ? 1.0 : 2.0) : (two ? 0.0 : 1.0);
+  const double other_scale[3] = {1.0, 1.0, 1.0};
   std::vector<int> part(ids.size(), 0);
   for (int group = -1; group < bands; ++group) {
+    const double* scale = group < 0 ? other_scale : contact_scale;
     std::vector<GlobalIndex> group_ids;
     std::vector<double> group_centroids;
     std::vector<std::size_t> at;
@@ -160,12 +165,7 @@ std::vector<int> partition_separately(const Comm& comm, int dimension,
       if (band[i] != group) continue;
       at.push_back(i);
       group_ids.push_back(ids[i]);
-      const bool two = comm.getSize() == 2;
-      for (int d = 0; d < 3; ++d)
-        group_centroids.push_back(group < 0   ? centroids[3 * i + d]
-                                  : d == axis ? (two ? 1.0 : 2.0) * centroids[3 * i + d]
-                                  : two       ? 0.0
-                                              : centroids[3 * i + d]);
+      for (int d = 0; d < 3; ++d) group_centroids.push_back(scale[d] * centroids[3 * i + d]);
     }
     const std::vector<int> group_part =
         partition_elements_rcb(comm, dimension, group_ids, group_centroids,
