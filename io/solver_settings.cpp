@@ -68,7 +68,7 @@ LinearSolverSettings read_linear(const Teuchos::ParameterList& list, const std::
   const Section checked(
       list, path, file,
       {Key::choice("type", {"auto", "mumps", "amesos2", "belos"}, "linear solver").defaults("auto"),
-       Key::boolean("condense_multipliers"), Key::boolean("reuse_preconditioner").defaults("false"),
+       Key::boolean("condense_multipliers"), Key::boolean("reuse_preconditioner"),
        Key::boolean("symmetric_reduction").defaults("true"), Key::section("MUMPS"),
        Key::section("Belos"), Key::section("MueLu")});
   LinearSolverSettings settings;
@@ -90,7 +90,8 @@ LinearSolverSettings read_linear(const Teuchos::ParameterList& list, const std::
   settings.muelu = input_schema::read_muelu(checked);
   if (checked.has("condense_multipliers"))
     settings.condense_multipliers = checked.boolean("condense_multipliers");
-  settings.reuse_preconditioner = checked.boolean("reuse_preconditioner");
+  if (checked.has("reuse_preconditioner"))
+    settings.reuse_preconditioner = checked.boolean("reuse_preconditioner");
   settings.symmetric_reduction = checked.boolean("symmetric_reduction");
   return settings;
 }

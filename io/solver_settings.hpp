@@ -58,7 +58,8 @@ struct LinearSolverSettings {
   Teuchos::ParameterList muelu;  ///< the `MueLu` sublist, typed as MueLu takes it
   /// `condense_multipliers`; absent: the solver's default (linear_solver.hpp).
   std::optional<bool> condense_multipliers;
-  bool reuse_preconditioner = false;  ///< `reuse_preconditioner`
+  /// `reuse_preconditioner`; absent: the coarse levels are kept (linear_solver.hpp).
+  std::optional<bool> reuse_preconditioner;
   /// `symmetric_reduction`: condensed solves (distributed MUMPS, Belos) try the symmetric
   /// reduction first (linear_solver.hpp).
   bool symmetric_reduction = true;

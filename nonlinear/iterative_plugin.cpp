@@ -149,9 +149,10 @@ class BelosMueLuSolver : public IterativeSolver {
   Teuchos::RCP<MueLu::TpetraOperator<double, LO, GO, Node>> hierarchy_;
   Teuchos::RCP<const Map> hierarchy_map_;
   Fingerprint hierarchy_print_;  // local_fingerprint of its matrix
-  int fresh_iterations_ = 0;
-  int reused_ = 0;  // solves that reused the hierarchy
-  int kept_ = 0;    // of those, with the same values: no set-up
+  int fresh_iterations_ = 0;     // iterations of the hierarchy's first solve
+  int excess_iterations_ = 0;    // since then, beyond fresh_iterations_ per solve
+  int reused_ = 0;               // solves that reused the hierarchy
+  int kept_ = 0;                 // of those, with the same values: no set-up
 };
 
 int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
@@ -185,20 +186,38 @@ int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b
   // Reuse (Newton iterations after the first): a system equal to the last one, value for
   // value (small strain on the reference geometry with an unchanged active set: the next
   // Newton iteration, the next load step's first), keeps the whole hierarchy, with no set-up.
-  // One with the same unknowns and the same sparsity pattern but other values keeps the last
-  // hierarchy's prolongators and restrictions, with the coarse operators and the smoothers
-  // recomputed from K (MueLu `reuse: type: RP`; RP keeps the coarse matrices' patterns: a
-  // changed active set changes K's). A reused hierarchy that does not converge is rebuilt and
-  // the system solved again; one that needs more than twice the iterations of its fresh build
-  // (+10) is rebuilt at the next solve.
-  const bool reuse_allowed = settings.reuse_preconditioner;
-  if (reuse_allowed && !muelu.isParameter("reuse: type")) muelu.set("reuse: type", "RP");
+  // Otherwise, with the same unknowns:
+  // - HierarchyReuse::prolongators: the same sparsity pattern keeps the last hierarchy's
+  //   prolongators and restrictions, with the coarse operators and the smoothers recomputed
+  //   from K (MueLu `reuse: type: RP`; RP keeps the coarse matrices' patterns: a changed
+  //   active set changes K's);
+  // - HierarchyReuse::coarse_levels: the prolongators, the coarse operators R A P and their
+  //   smoothers stay, the fine-level smoother is rebuilt from K (MueLu `reuse: type: RAP`),
+  //   whatever K's pattern. The V-cycle's fine level (residual and Gauss-Seidel) sees the new
+  //   K, its coarse correction the old one's Galerkin operator: a preconditioner for K that
+  //   stays symmetric positive definite, so CG converges; what changed between Newton
+  //   iterations (the contact rows, a few hundred nodes) costs iterations, not correctness.
+  //   It is rebuilt when the iterations it added since its build, each solve's count less
+  //   its first solve's, exceed twice that first count: the set-up of 1-2 solves'
+  //   iterations (docs/performance.md, "Iterative solver") is then cheaper than the excess,
+  //   so the waste stays within one set-up per build (the rent-or-buy bound).
+  // A reused hierarchy that does not converge is rebuilt and the system solved again; one
+  // that needs more than twice the iterations of its fresh build (+10) is rebuilt at the next
+  // solve.
+  const HierarchyReuse reuse = settings.reuse;
+  const bool reuse_allowed = reuse != HierarchyReuse::none;
+  if (reuse_allowed && !muelu.isParameter("reuse: type"))
+    muelu.set("reuse: type", std::string(reuse == HierarchyReuse::coarse_levels ? "RAP" : "RP"));
   const Fingerprint print = reuse_allowed ? local_fingerprint(*K) : Fingerprint();
   bool may_reuse =
       reuse_allowed && !hierarchy_.is_null() && hierarchy_map_->isSameAs(*K->getRowMap());
+  const std::string reuse_type =
+      reuse_allowed ? muelu.get<std::string>("reuse: type") : std::string("none");
+  // RAP and full keep the coarse operators: K's pattern may change.
+  const bool keeps_coarse = reuse_type == "RAP" || reuse_type == "full";
   bool same_values = false;
   if (may_reuse) {  // MueLu's RP reuse keeps the coarse patterns: K's must not change
-    int same[2] = {print.pattern == hierarchy_print_.pattern ? 1 : 0,
+    int same[2] = {keeps_coarse || print.pattern == hierarchy_print_.pattern ? 1 : 0,
                    print.values == hierarchy_print_.values ? 1 : 0};
     int all_same[2] = {0, 0};
     Teuchos::reduceAll(*K->getRowMap()->getComm(), Teuchos::REDUCE_MIN, 2, same, all_same);
@@ -260,10 +279,15 @@ int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b
       accepted = relative <= std::max(1e-6, 100.0 * params->get<double>("Convergence Tolerance"));
     }
     if (accepted) {
-      if (!reused)
+      if (!reused) {
         fresh_iterations_ = iterations;
-      else if (iterations > 2 * fresh_iterations_ + 10)
-        hierarchy_ = Teuchos::null;  // rebuilt at the next solve
+        excess_iterations_ = 0;
+      } else {
+        if (keeps_coarse) excess_iterations_ += std::max(0, iterations - fresh_iterations_);
+        if (iterations > 2 * fresh_iterations_ + 10 ||
+            (keeps_coarse && excess_iterations_ > 2 * fresh_iterations_))
+          hierarchy_ = Teuchos::null;  // rebuilt at the next solve
+      }
       if (!reuse_allowed) hierarchy_ = Teuchos::null;
       return iterations;
     }

@@ -21,11 +21,19 @@
 
 namespace grout {
 
+/// What of the last MueLu hierarchy the next solve of the same unknowns keeps
+/// (linear_solver.hpp, `reuse_preconditioner`).
+enum class HierarchyReuse {
+  none,           ///< a new hierarchy every solve (`reuse_preconditioner: false`)
+  coarse_levels,  ///< prolongators and coarse levels; the fine smoother rebuilt (the default)
+  prolongators,   ///< prolongators, coarse operators rebuilt (`reuse_preconditioner: true`)
+};
+
 /// What LinearSolver knows of the iterative path's settings (references into its own state).
 struct IterativeSettings {
   const Teuchos::ParameterList& belos;     ///< Belos parameters, without `Solver Type`
   const Teuchos::ParameterList& muelu;     ///< the user's `MueLu` sublist
-  bool reuse_preconditioner;               ///< keep the MueLu hierarchy between solves
+  HierarchyReuse reuse;                    ///< what of the MueLu hierarchy a solve keeps
   int dim;                                 ///< 0: no coordinates
   const std::vector<double>& coordinates;  ///< node-major, every node or those of `nodes`
   const std::vector<int>& bodies;          ///< body per node; empty on every rank: one body
@@ -41,7 +49,7 @@ class IterativeSolver {
   /// Solve K x = b with Belos `belos_type` right-preconditioned by MueLu (smoothed
   /// aggregation for elasticity when the coordinates are given); returns the iterations.
   /// Throws std::runtime_error if it does not converge. Keeps the MueLu hierarchy for the next
-  /// solve when `settings.reuse_preconditioner`.
+  /// solve as `settings.reuse` says.
   virtual int solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
                     const std::string& belos_type, const IterativeSettings& settings) = 0;
   /// Solves that reused a MueLu hierarchy, since construction.
@@ -69,7 +77,7 @@ class IterativeSolver {
 
 /// Bumped whenever IterativeSolver or IterativeSettings change: a module built from other
 /// sources refuses to create a solver (the loader then tries the next directory).
-constexpr int iterative_solver_interface_version = 4;
+constexpr int iterative_solver_interface_version = 5;
 
 }  // namespace grout
 

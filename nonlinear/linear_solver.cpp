@@ -332,15 +332,22 @@ int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector
   Teuchos::ParameterList belos = impl_->settings.belos;
   if (impl_->relative_tolerance > 0.0)
     belos.set("Convergence Tolerance", impl_->relative_tolerance);
+  const bool with_multipliers = multipliers && !impl_->layout.multiplier_pairing.empty();
+  // Not told: a system without multipliers (CG, Gauss-Seidel) keeps the coarse levels; the
+  // condensed system (GMRES, ILU(0)) gets a new hierarchy every solve (linear_solver.hpp).
+  const auto& told = impl_->settings.reuse_preconditioner;
+  const HierarchyReuse reuse = told ? (*told ? HierarchyReuse::prolongators : HierarchyReuse::none)
+                               : with_multipliers ? HierarchyReuse::none
+                                                  : HierarchyReuse::coarse_levels;
   const IterativeSettings settings{belos,
                                    impl_->settings.muelu,
-                                   impl_->settings.reuse_preconditioner,
+                                   reuse,
                                    impl_->layout.dim,
                                    impl_->layout.coordinates,
                                    impl_->layout.node_bodies,
                                    impl_->layout.nodes,
                                    impl_->layout.num_global_nodes,
-                                   multipliers && !impl_->layout.multiplier_pairing.empty()};
+                                   with_multipliers};
   try {
     return impl_->agreed_iterative_solve(K, b, x, belos_type, settings);
   } catch (const ExitCodeError&) {  // no module, or an error with its own exit code

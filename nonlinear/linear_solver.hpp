@@ -27,12 +27,22 @@
 //                            overrides any of these settings.
 //                            In the module grout_iterative, loaded at the first
 //                            iterative solve (nonlinear/iterative_module.hpp).
-//   reuse_preconditioner: true   (default false; type: belos) the hierarchy is kept between
-//                            solves: a system equal to the last one value for value (small
-//                            strain, unchanged active set) keeps all of it, no set-up; one with
-//                            the same unknowns and sparsity pattern reuses its prolongators
-//                            (MueLu `reuse: type: RP`; coarse operators and smoothers
-//                            recomputed).
+//   reuse_preconditioner: true   (type: belos) the hierarchy is kept between solves: a
+//                            system equal to the last one value for value (small strain,
+//                            unchanged active set) keeps all of it, no set-up; one with the
+//                            same unknowns and sparsity pattern reuses its prolongators (MueLu
+//                            `reuse: type: RP`; coarse operators and smoothers recomputed).
+//                            false: a new hierarchy every solve. Not given (the default): a
+//                            system without multipliers (CG on the symmetric reduction or
+//                            without contact) with the last one's unknowns keeps the last
+//                            hierarchy's prolongators, coarse operators and coarse smoothers
+//                            and rebuilds the fine smoother from the new matrix (MueLu
+//                            `reuse: type: RAP`), whatever its pattern: the Newton iterations
+//                            change the contact rows, where the fine smoother acts. A new
+//                            hierarchy is built when the iterations the kept one added since
+//                            its build exceed twice its first solve's (the set-up costs 1-2
+//                            solves' iterations: docs/performance.md, "Iterative solver").
+//                            The condensed system (GMRES) gets a new hierarchy every solve.
 //   symmetric_reduction: true    (default true) condensed solves on the distributed MUMPS path
 //                            and on the iterative path first try the symmetric reduction
 //                            (below); false: always the condensation.

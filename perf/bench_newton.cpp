@@ -19,6 +19,7 @@
 //   jacobian_s, solve_s        the Jacobian; the linear solve with a new solver
 //   analysis_s                 the MUMPS analysis inside solve_s (0 for other solvers)
 //   resolve_s                  the solve with changed values and the same solver object
+//   resolve_condense_s, resolve_muelu_s, resolve_krylov_s   inside resolve_s, as below
 //   iteration_cpu_s, solve_cpu_s, resolve_cpu_s   process CPU time (all threads) of the
 //                              whole iteration / the two solves, max over ranks: on a loaded
 //                              machine closer to the uncontended cost than the wall time
@@ -264,6 +265,7 @@ void newton_benchmark(benchmark::State& state, int dim, std::string solver_type)
   Vector dx(problem.map()), rhs(problem.map());
   double solid = 0, contact = 0, jacobian = 0, solve = 0, analysis = 0, resolve = 0;
   double condense = 0, muelu = 0, krylov = 0;
+  double resolve_condense = 0, resolve_muelu = 0, resolve_krylov = 0;
   const char* resolve_env = std::getenv("GROUT_BENCH_NEWTON_RESOLVE");
   const bool resolve_wanted = !resolve_env || std::string(resolve_env) != "0";
   const bool resolve_same = resolve_env && std::string(resolve_env) == "same";
@@ -314,7 +316,17 @@ void newton_benchmark(benchmark::State& state, int dim, std::string solver_type)
         J2.fillComplete(c.J->getDomainMap(), c.J->getRangeMap());
         Vector dx2(problem.map());
         const auto J2_ptr = Teuchos::rcpFromRef(J2);
+        const double condense1 = timer_seconds("grout: linear solve: condensation") +
+                                 timer_seconds("grout: linear solve: symmetric reduction");
+        const double muelu1 = timer_seconds("grout: linear solve: MueLu set-up");
+        const double krylov1 = timer_seconds("grout: linear solve: Krylov iterations");
         resolve = timed([&] { resolve_iterations = linear.solve(J2_ptr, rhs, dx2); }, &resolve_cpu);
+        resolve_condense =
+            max_over_ranks(timer_seconds("grout: linear solve: condensation") +
+                           timer_seconds("grout: linear solve: symmetric reduction") - condense1);
+        resolve_muelu = max_over_ranks(timer_seconds("grout: linear solve: MueLu set-up") - muelu1);
+        resolve_krylov =
+            max_over_ranks(timer_seconds("grout: linear solve: Krylov iterations") - krylov1);
       }
     } catch (const std::exception& e) {
       ok = false;
@@ -347,6 +359,9 @@ void newton_benchmark(benchmark::State& state, int dim, std::string solver_type)
   state.counters["analysis_s"] = analysis;
   state.counters["resolve_s"] = resolve;
   state.counters["resolve_iterations"] = resolve_iterations;
+  state.counters["resolve_condense_s"] = resolve_condense;
+  state.counters["resolve_muelu_s"] = resolve_muelu;
+  state.counters["resolve_krylov_s"] = resolve_krylov;
   state.counters["condense_s"] = condense;
   state.counters["muelu_s"] = muelu;
   state.counters["krylov_s"] = krylov;

@@ -59,7 +59,7 @@ TEST(SolverSettings, DefaultsAreTheSolversDefaults) {
   EXPECT_EQ(s.linear.belos.numParams(), 2);
   EXPECT_EQ(s.linear.muelu.numParams(), 0);
   EXPECT_FALSE(s.linear.condense_multipliers.has_value());
-  EXPECT_FALSE(s.linear.reuse_preconditioner);
+  EXPECT_FALSE(s.linear.reuse_preconditioner.has_value());  // the coarse levels kept
   EXPECT_TRUE(s.linear.symmetric_reduction);
   EXPECT_EQ(s.linear.where, "case.yaml: grout/solver/Linear Solver");
 }
@@ -106,7 +106,7 @@ TEST(SolverSettings, ReadsEveryKeyTyped) {
       s.newton.nox.sublist("Direction").sublist("Newton").get<bool>("Rescue Bad Newton Solve"));
   EXPECT_EQ(s.linear.type, LinearSolverType::belos);
   EXPECT_EQ(s.linear.condense_multipliers, std::optional<bool>(false));
-  EXPECT_TRUE(s.linear.reuse_preconditioner);
+  EXPECT_EQ(s.linear.reuse_preconditioner, std::optional<bool>(true));
   EXPECT_FALSE(s.linear.symmetric_reduction);
   EXPECT_EQ(s.linear.mumps.ordering, "amd");
   EXPECT_TRUE(s.linear.mumps.gather);
