@@ -259,13 +259,33 @@ double peak_rss_mb() {
   return double(usage.ru_maxrss) / 1024.0;  // KiB on Linux
 }
 
+// The linear solve's phases (seconds): the condensation or symmetric reduction, MueLu's
+// set-up, the Belos iterations.
+struct SolvePhases {
+  double condense = 0, muelu = 0, krylov = 0;
+};
+
+// This rank's timer totals so far.
+SolvePhases solve_phase_totals() {
+  return {timer_seconds("grout: linear solve: condensation") +
+              timer_seconds("grout: linear solve: symmetric reduction"),
+          timer_seconds("grout: linear solve: MueLu set-up"),
+          timer_seconds("grout: linear solve: Krylov iterations")};
+}
+
+// Each phase's time since `start` (solve_phase_totals before the solve), max over ranks.
+SolvePhases solve_phases_since(const SolvePhases& start) {
+  const SolvePhases now = solve_phase_totals();
+  return {max_over_ranks(now.condense - start.condense), max_over_ranks(now.muelu - start.muelu),
+          max_over_ranks(now.krylov - start.krylov)};
+}
+
 void newton_benchmark(benchmark::State& state, int dim, std::string solver_type) {
   NewtonCase& c = newton_case(CaseKey{dim, int(state.range(0))});
   MechanicsProblem& problem = *c.problem;
   Vector dx(problem.map()), rhs(problem.map());
   double solid = 0, contact = 0, jacobian = 0, solve = 0, analysis = 0, resolve = 0;
-  double condense = 0, muelu = 0, krylov = 0;
-  double resolve_condense = 0, resolve_muelu = 0, resolve_krylov = 0;
+  SolvePhases phases, resolve_phases;  // of the first solve, of the second
   const char* resolve_env = std::getenv("GROUT_BENCH_NEWTON_RESOLVE");
   const bool resolve_wanted = !resolve_env || std::string(resolve_env) != "0";
   const bool resolve_same = resolve_env && std::string(resolve_env) == "same";
@@ -277,10 +297,7 @@ void newton_benchmark(benchmark::State& state, int dim, std::string solver_type)
     const double solid0 = timer_seconds("grout: solid assembly");
     const double contact0 = timer_seconds("grout: contact (search, integration, assembly)");
     const double analysis0 = timer_seconds("grout: MUMPS analysis");
-    const double condense0 = timer_seconds("grout: linear solve: condensation") +
-                             timer_seconds("grout: linear solve: symmetric reduction");
-    const double muelu0 = timer_seconds("grout: linear solve: MueLu set-up");
-    const double krylov0 = timer_seconds("grout: linear solve: Krylov iterations");
+    const SolvePhases phases0 = solve_phase_totals();
     iteration_cpu = solve_cpu = resolve_cpu = 0;
     const double t_residual = timed([&] { ok &= problem.residual(*c.x, *c.F); }, &iteration_cpu);
     solid = max_over_ranks(timer_seconds("grout: solid assembly") - solid0);
@@ -303,11 +320,7 @@ void newton_benchmark(benchmark::State& state, int dim, std::string solver_type)
       symmetric = linear.last_solve_symmetric();
       iteration_cpu += solve_cpu;
       analysis = max_over_ranks(timer_seconds("grout: MUMPS analysis") - analysis0);
-      condense =
-          max_over_ranks(timer_seconds("grout: linear solve: condensation") +
-                         timer_seconds("grout: linear solve: symmetric reduction") - condense0);
-      muelu = max_over_ranks(timer_seconds("grout: linear solve: MueLu set-up") - muelu0);
-      krylov = max_over_ranks(timer_seconds("grout: linear solve: Krylov iterations") - krylov0);
+      phases = solve_phases_since(phases0);
       if (resolve_wanted) {
         // The same pattern, other values: a Newton iteration with an unchanged active set.
         Matrix J2(*c.J, Teuchos::Copy);
@@ -316,17 +329,9 @@ void newton_benchmark(benchmark::State& state, int dim, std::string solver_type)
         J2.fillComplete(c.J->getDomainMap(), c.J->getRangeMap());
         Vector dx2(problem.map());
         const auto J2_ptr = Teuchos::rcpFromRef(J2);
-        const double condense1 = timer_seconds("grout: linear solve: condensation") +
-                                 timer_seconds("grout: linear solve: symmetric reduction");
-        const double muelu1 = timer_seconds("grout: linear solve: MueLu set-up");
-        const double krylov1 = timer_seconds("grout: linear solve: Krylov iterations");
+        const SolvePhases phases1 = solve_phase_totals();
         resolve = timed([&] { resolve_iterations = linear.solve(J2_ptr, rhs, dx2); }, &resolve_cpu);
-        resolve_condense =
-            max_over_ranks(timer_seconds("grout: linear solve: condensation") +
-                           timer_seconds("grout: linear solve: symmetric reduction") - condense1);
-        resolve_muelu = max_over_ranks(timer_seconds("grout: linear solve: MueLu set-up") - muelu1);
-        resolve_krylov =
-            max_over_ranks(timer_seconds("grout: linear solve: Krylov iterations") - krylov1);
+        resolve_phases = solve_phases_since(phases1);
       }
     } catch (const std::exception& e) {
       ok = false;
@@ -359,12 +364,12 @@ void newton_benchmark(benchmark::State& state, int dim, std::string solver_type)
   state.counters["analysis_s"] = analysis;
   state.counters["resolve_s"] = resolve;
   state.counters["resolve_iterations"] = resolve_iterations;
-  state.counters["resolve_condense_s"] = resolve_condense;
-  state.counters["resolve_muelu_s"] = resolve_muelu;
-  state.counters["resolve_krylov_s"] = resolve_krylov;
-  state.counters["condense_s"] = condense;
-  state.counters["muelu_s"] = muelu;
-  state.counters["krylov_s"] = krylov;
+  state.counters["resolve_condense_s"] = resolve_phases.condense;
+  state.counters["resolve_muelu_s"] = resolve_phases.muelu;
+  state.counters["resolve_krylov_s"] = resolve_phases.krylov;
+  state.counters["condense_s"] = phases.condense;
+  state.counters["muelu_s"] = phases.muelu;
+  state.counters["krylov_s"] = phases.krylov;
   state.counters["iteration_cpu_s"] = iteration_cpu;
   state.counters["solve_cpu_s"] = solve_cpu;
   state.counters["resolve_cpu_s"] = resolve_cpu;
