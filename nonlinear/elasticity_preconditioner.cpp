@@ -119,6 +119,12 @@ Teuchos::RCP<MultiVector> node_coordinates(const Map& map, int dim,
   return X;
 }
 
+bool smoother_given(const Teuchos::ParameterList& muelu) {
+  return muelu.isParameter("smoother: type") || muelu.isParameter("smoother: pre type") ||
+         muelu.isParameter("smoother: post type") || muelu.isSublist("smoother: pre params") ||
+         muelu.isSublist("smoother: post params");
+}
+
 void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ranks,
                              const Teuchos::RCP<MultiVector>& null_space,
                              const Teuchos::RCP<MultiVector>& node_coordinates,
@@ -131,11 +137,7 @@ void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ran
   set_default("multigrid algorithm", std::string("sa"));
   set_default("aggregation: type", std::string("uncoupled"));
   set_default("transpose: use implicit", true);
-  const bool smoother_given =
-      muelu.isParameter("smoother: type") || muelu.isParameter("smoother: pre type") ||
-      muelu.isParameter("smoother: post type") || muelu.isSublist("smoother: pre params") ||
-      muelu.isSublist("smoother: post params");
-  if (!smoother_given) {  // rank-local (elasticity_preconditioner.hpp)
+  if (!smoother_given(muelu)) {  // rank-local (elasticity_preconditioner.hpp)
     if (multipliers) {
       muelu.set("smoother: type", std::string("RILUK"));  // ILU(0)
     } else if (!muelu.isSublist("smoother: params")) {

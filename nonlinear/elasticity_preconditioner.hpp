@@ -25,7 +25,9 @@
 //   after, the V-cycle symmetric as CG needs (the backward sweep is the forward one's
 //   adjoint), half the sweeps of symmetric Gauss–Seidel on both sides; at 1e6 unknowns on
 //   2 ranks 36–37 CG iterations instead of 29, the Krylov phase 0.74× (docs/performance.md,
-//   "Iterative solver"). A user's `smoother: type` (or `smoother: pre type` and `post type`)
+//   "Iterative solver"). The module replaces that Gauss–Seidel by damped Jacobi, whose
+//   damping it estimates from the matrix (nonlinear/jacobi_smoother.hpp), and keeps it as
+//   the fallback. A user's `smoother: type` (or `smoother: pre type` and `post type`)
 //   replaces either;
 // - coarse solve: KLU2 on one rank. On more ranks the coarse levels are repartitioned
 //   (Zoltan2 multi-jagged on the node coordinates) onto ⌊rows / 2000⌋ ranks (at least one, so
@@ -72,6 +74,10 @@ Teuchos::RCP<MultiVector> rigid_body_modes(const Map& map, int dim,
 /// True if every GID of `map` (all ranks) is a displacement dof of the `num_nodes` nodes and
 /// every rank owns whole nodes in node-major order (collective).
 bool is_nodal_displacement_map(const Map& map, int dim, long long num_nodes);
+
+/// Whether the user's `muelu` chooses the smoother (`smoother: type`, `pre type`, `post type`,
+/// `pre params` or `post params`): Grout's smoother defaults then stay out.
+bool smoother_given(const Teuchos::ParameterList& muelu);
 
 /// Grout's MueLu defaults for elasticity, merged under the user's `muelu` entries, plus the
 /// near-null space and the coordinates in `user data` (`muelu` is modified).

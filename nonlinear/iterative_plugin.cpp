@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <iostream>
 #include <set>
 #include <sstream>
@@ -21,6 +22,7 @@
 
 #include "nonlinear/elasticity_preconditioner.hpp"
 #include "nonlinear/iterative_solver.hpp"
+#include "nonlinear/jacobi_smoother.hpp"
 
 namespace grout {
 namespace {
@@ -81,6 +83,7 @@ class BelosMueLuSolver : public IterativeSolver {
             const std::string& belos_type, const IterativeSettings& settings) override;
   int reused_hierarchies() const override { return reused_; }
   int kept_hierarchies() const override { return kept_; }
+  double jacobi_damping() const override { return jacobi_damping_; }
 
   bool is_belos_solver(const std::string& name) const override {
     return Factory().isSupported(name);
@@ -153,6 +156,8 @@ class BelosMueLuSolver : public IterativeSolver {
   int excess_iterations_ = 0;    // since then, beyond fresh_iterations_ per solve
   int reused_ = 0;               // solves that reused the hierarchy
   int kept_ = 0;                 // of those, with the same values: no set-up
+  double jacobi_damping_ = 0.0;  // the hierarchy's Jacobi damping; 0: not Jacobi
+  bool jacobi_failed_ = false;   // a solve failed with Jacobi: Gauss-Seidel from then on
 };
 
 int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
@@ -173,7 +178,15 @@ int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b
                        Teuchos::outArg(anywhere));
     bodies = anywhere == 1;
   }
-  if (num_nodes > 0 && is_nodal_displacement_map(*K->getRowMap(), dim, num_nodes))
+  const bool elasticity =
+      num_nodes > 0 && is_nodal_displacement_map(*K->getRowMap(), dim, num_nodes);
+  // Damped Jacobi (nonlinear/jacobi_smoother.hpp) in place of the default Gauss-Seidel on a
+  // system without multipliers, unless the user chose a smoother: its damping is estimated
+  // from K at each new hierarchy (the coarse-level reuse keeps it), and a solve that fails
+  // with it is repeated with Gauss-Seidel, which this solver keeps from then on.
+  const bool jacobi = elasticity && !settings.multipliers && !smoother_given(muelu) &&
+                      !muelu.isSublist("smoother: params");
+  if (elasticity)
     set_elasticity_defaults(muelu, dim, num_ranks,
                             rigid_body_modes(*K->getRowMap(), dim, settings.coordinates, nodes),
                             node_coordinates(*K->getRowMap(), dim, settings.coordinates,
@@ -241,7 +254,10 @@ int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b
           MueLu::ReuseTpetraPreconditioner(K_crs, *hierarchy_);
         ++reused_;
       } else {
-        hierarchy_ = MueLu::CreateTpetraPreconditioner(K_op, muelu);
+        Teuchos::ParameterList build = muelu;
+        jacobi_damping_ = jacobi && !jacobi_failed_ ? grout::jacobi_damping(*K) : 0.0;
+        if (jacobi_damping_ > 0.0) set_jacobi_smoother(build, jacobi_damping_);
+        hierarchy_ = MueLu::CreateTpetraPreconditioner(K_op, build);
         hierarchy_map_ = K->getRowMap();
       }
       hierarchy_print_ = print;
@@ -256,18 +272,23 @@ int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b
     problem->setProblem();
     auto solver = factory.create(belos_type, params);
     solver->setProblem(problem);
-    Belos::ReturnType converged;
+    Belos::ReturnType converged = Belos::Unconverged;
+    std::exception_ptr thrown;  // a Krylov breakdown (CG: pᵀAp ≤ 0) throws
     {
       Teuchos::TimeMonitor krylov_timer(
           *Teuchos::TimeMonitor::getNewTimer("grout: linear solve: Krylov iterations"));
-      const HeldErrorStream held;
-      converged = solver->solve();
-      held.pass_on();
+      try {
+        const HeldErrorStream held;
+        converged = solver->solve();
+        held.pass_on();
+      } catch (const std::exception&) {
+        thrown = std::current_exception();
+      }
     }
     const int iterations = solver->getNumIters();
-    bool accepted = converged == Belos::Converged;
+    bool accepted = !thrown && converged == Belos::Converged;
     double relative = 0.0;
-    if (!accepted) {
+    if (!accepted && !thrown) {
       // GMRES may stop on a loss of accuracy (the implicit residual met the tolerance, the
       // explicit one did not): accept an explicit residual within max(100 × the tolerance,
       // 1e-6), an inexact Newton step; Newton's residual test decides convergence.
@@ -293,6 +314,18 @@ int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b
     }
     if (reused) continue;  // once more with a fresh hierarchy
     hierarchy_ = Teuchos::null;
+    if (jacobi_damping_ > 0.0) {  // once more with Gauss-Seidel, for the rest of the run
+      jacobi_failed_ = true;
+      if (K->getRowMap()->getComm()->getRank() == 0) {
+        std::printf(
+            "grout: note: %s with the Jacobi smoother (damping %.3g) failed after %d "
+            "iterations; Gauss-Seidel from now on\n",
+            belos_type.c_str(), jacobi_damping_, iterations);
+        std::fflush(stdout);
+      }
+      continue;
+    }
+    if (thrown) std::rethrow_exception(thrown);
     char message[160];
     std::snprintf(message, sizeof message,
                   "linear solver %s did not converge in %d iterations (|b - A x| / |b| = %.3e%s)",

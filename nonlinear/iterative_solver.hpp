@@ -57,6 +57,9 @@ class IterativeSolver {
   /// Of those, the solves whose system equalled the hierarchy's value for value: the whole
   /// hierarchy kept, no set-up.
   virtual int kept_hierarchies() const = 0;
+  /// The damping of the last built hierarchy's Jacobi smoother (nonlinear/jacobi_smoother.hpp),
+  /// or 0 when it smooths otherwise (Gauss-Seidel, ILU(0) or the user's smoother).
+  virtual double jacobi_damping() const = 0;
 
   /// Belos's solver names (case-insensitive), to check `Belos/Solver Type` against.
   virtual bool is_belos_solver(const std::string& name) const = 0;
@@ -77,7 +80,7 @@ class IterativeSolver {
 
 /// Bumped whenever IterativeSolver or IterativeSettings change: a module built from other
 /// sources refuses to create a solver (the loader then tries the next directory).
-constexpr int iterative_solver_interface_version = 5;
+constexpr int iterative_solver_interface_version = 6;
 
 }  // namespace grout
 

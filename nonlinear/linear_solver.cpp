@@ -202,6 +202,10 @@ int LinearSolver::kept_hierarchies() const {
   return impl_->iterative ? impl_->iterative->kept_hierarchies() : 0;
 }
 
+double LinearSolver::jacobi_damping() const {
+  return impl_->iterative ? impl_->iterative->jacobi_damping() : 0.0;
+}
+
 const std::string& LinearSolver::last_type() const {
   return impl_->last_type;
 }

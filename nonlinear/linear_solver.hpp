@@ -123,6 +123,9 @@ class LinearSolver {
   /// Of those, the solves of a system equal to the last one value for value (the whole
   /// hierarchy kept, no set-up).
   int kept_hierarchies() const;
+  /// The damping of the Jacobi smoother of the last MueLu hierarchy built
+  /// (nonlinear/jacobi_smoother.hpp), 0 when it smooths otherwise or before any iterative solve.
+  double jacobi_damping() const;
   /// The type of the last solve (auto resolved): mumps, mumps_gathered, amesos2 or belos;
   /// empty before any solve.
   const std::string& last_type() const;

@@ -47,6 +47,14 @@ SystemLayout pairing_layout(const MultiplierPairing& pairing, int dim) {
   return layout;
 }
 
+// pairing_layout plus the mesh's coordinates: the iterative path's elasticity defaults
+// (near-null space, aggregation on the nodes, the Jacobi smoother).
+SystemLayout elastic_layout(const MultiplierPairing& pairing, const Mesh& mesh) {
+  SystemLayout layout = pairing_layout(pairing, mesh.dimension);
+  layout.coordinates = mesh.coordinates, layout.dim = mesh.dimension;
+  return layout;
+}
+
 // J and −F at a perturbed state with a mix of active and inactive slave nodes.
 void build(Case& mc, int dim, ContactKind type, double mu, ContactGeometry geometry, int k = 1,
            unsigned seed = 5u) {
@@ -312,11 +320,14 @@ TEST(SymmetricCondensation, IterativePathKeepsTheCoarseLevelsForAnotherActiveSet
   build(next, 3, ContactKind::frictionless, 0.0, ContactGeometry::reference, 2, 11u);
   Teuchos::ParameterList p = params("belos", true);
   p.sublist("MueLu").set("coarse: max size", 50);  // a multilevel hierarchy
-  LinearSolver solver(p, "test", pairing_layout(mc.pairing, 3));
+  LinearSolver solver(p, "test", elastic_layout(mc.pairing, mc.mesh));
   Vector x1(mc.J->getRowMap()), x2(next.J->getRowMap()), x_full(next.J->getRowMap());
   const int first = solver.solve(mc.J, *mc.b, x1);
   ASSERT_TRUE(solver.last_solve_symmetric());
   EXPECT_EQ(solver.reused_hierarchies(), 0);
+  // The default smoother on K~ (no multipliers): damped Jacobi (nonlinear/jacobi_smoother.hpp).
+  EXPECT_GT(solver.jacobi_damping(), 0.0);
+  EXPECT_LT(solver.jacobi_damping(), 1.0);
   const int second = solver.solve(next.J, *next.b, x2);
   ASSERT_TRUE(solver.last_solve_symmetric());
   EXPECT_EQ(solver.reused_hierarchies(), 1);
@@ -328,10 +339,17 @@ TEST(SymmetricCondensation, IterativePathKeepsTheCoarseLevelsForAnotherActiveSet
   EXPECT_LT(relative_difference(x2, x_full, next.n_u, true), 1e-9);
   // reuse_preconditioner: false builds a new hierarchy every solve.
   p.set("reuse_preconditioner", false);
-  LinearSolver fresh(p, "test", pairing_layout(mc.pairing, 3));
+  LinearSolver fresh(p, "test", elastic_layout(mc.pairing, mc.mesh));
   fresh.solve(mc.J, *mc.b, x1);
   const int fresh_second = fresh.solve(next.J, *next.b, x2);
   EXPECT_EQ(fresh.reused_hierarchies(), 0);
+  // A smoother of the user's replaces the Jacobi default; the answer stays the direct one.
+  p.sublist("MueLu").set("smoother: type", "RELAXATION");
+  p.sublist("MueLu").sublist("smoother: params").set("relaxation: type", "Symmetric Gauss-Seidel");
+  LinearSolver chosen(p, "test", elastic_layout(mc.pairing, mc.mesh));
+  chosen.solve(next.J, *next.b, x2);
+  EXPECT_EQ(chosen.jacobi_damping(), 0.0);
+  EXPECT_LT(relative_difference(x2, x_full, next.n_u, false), 1e-9);
   if (Tpetra::getDefaultComm()->getRank() == 0)
     std::printf(
         "[iterations] active sets %d, %d; CG %d, then %d with the coarse levels kept, "

@@ -43,6 +43,7 @@ class FaultySolver : public grout::IterativeSolver {
   }
   int reused_hierarchies() const override { return real_->reused_hierarchies(); }
   int kept_hierarchies() const override { return real_->kept_hierarchies(); }
+  double jacobi_damping() const override { return real_->jacobi_damping(); }
   bool is_belos_solver(const std::string& name) const override {
     return real_->is_belos_solver(name);
   }
