@@ -26,8 +26,7 @@
 //   adjoint), half the sweeps of symmetric Gauss–Seidel on both sides; at 1e6 unknowns on
 //   2 ranks 36–37 CG iterations instead of 29, the Krylov phase 0.74× (docs/performance.md,
 //   "Iterative solver"). The module replaces that Gauss–Seidel by damped Jacobi, whose
-//   damping it estimates from the matrix (nonlinear/jacobi_smoother.hpp), and keeps it as
-//   the fallback. A user's `smoother: type` (or `smoother: pre type` and `post type`)
+//   damping it estimates from the matrix (nonlinear/jacobi_smoother.hpp). A user's `smoother: type` (or `smoother: pre type` and `post type`)
 //   replaces either;
 // - coarse solve: KLU2 on one rank. On more ranks the coarse levels are repartitioned
 //   (Zoltan2 multi-jagged on the node coordinates) onto ⌊rows / 2000⌋ ranks (at least one, so

@@ -157,7 +157,6 @@ class BelosMueLuSolver : public IterativeSolver {
   int reused_ = 0;               // solves that reused the hierarchy
   int kept_ = 0;                 // of those, with the same values: no set-up
   double jacobi_damping_ = 0.0;  // the hierarchy's Jacobi damping; 0: not Jacobi
-  bool jacobi_failed_ = false;   // a solve failed with Jacobi: Gauss-Seidel from then on
 };
 
 int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b, Vector& x,
@@ -182,8 +181,7 @@ int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b
       num_nodes > 0 && is_nodal_displacement_map(*K->getRowMap(), dim, num_nodes);
   // Damped Jacobi (nonlinear/jacobi_smoother.hpp) in place of the default Gauss-Seidel on a
   // system without multipliers, unless the user chose a smoother: its damping is estimated
-  // from K at each new hierarchy (the coarse-level reuse keeps it), and a solve that fails
-  // with it is repeated with Gauss-Seidel, which this solver keeps from then on.
+  // from K at each new hierarchy (the coarse-level reuse keeps it).
   const bool jacobi = elasticity && !settings.multipliers && !smoother_given(muelu) &&
                       !muelu.isSublist("smoother: params");
   if (elasticity)
@@ -214,7 +212,8 @@ int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b
   //   its first solve's, exceed twice that first count: the set-up of 1-2 solves'
   //   iterations (docs/performance.md, "Iterative solver") is then cheaper than the excess,
   //   so the waste stays within one set-up per build (the rent-or-buy bound).
-  // A reused hierarchy that does not converge is rebuilt and the system solved again; one
+  // A reused hierarchy that does not converge (or breaks down) is rebuilt and the system
+  // solved again; one
   // that needs more than twice the iterations of its fresh build (+10) is rebuilt at the next
   // solve.
   const HierarchyReuse reuse = settings.reuse;
@@ -255,7 +254,7 @@ int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b
         ++reused_;
       } else {
         Teuchos::ParameterList build = muelu;
-        jacobi_damping_ = jacobi && !jacobi_failed_ ? grout::jacobi_damping(*K) : 0.0;
+        jacobi_damping_ = jacobi ? grout::jacobi_damping(*K) : 0.0;
         if (jacobi_damping_ > 0.0) set_jacobi_smoother(build, jacobi_damping_);
         hierarchy_ = MueLu::CreateTpetraPreconditioner(K_op, build);
         hierarchy_map_ = K->getRowMap();
@@ -314,17 +313,6 @@ int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b
     }
     if (reused) continue;  // once more with a fresh hierarchy
     hierarchy_ = Teuchos::null;
-    if (jacobi_damping_ > 0.0) {  // once more with Gauss-Seidel, for the rest of the run
-      jacobi_failed_ = true;
-      if (K->getRowMap()->getComm()->getRank() == 0) {
-        std::printf(
-            "grout: note: %s with the Jacobi smoother (damping %.3g) failed after %d "
-            "iterations; Gauss-Seidel from now on\n",
-            belos_type.c_str(), jacobi_damping_, iterations);
-        std::fflush(stdout);
-      }
-      continue;
-    }
     if (thrown) std::rethrow_exception(thrown);
     char message[160];
     std::snprintf(message, sizeof message,

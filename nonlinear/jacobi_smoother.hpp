@@ -14,8 +14,8 @@
 // Rayleigh quotient xᵀAx / xᵀDx after jacobi_power_steps steps of x ← D⁻¹A x (a lower bound
 // of λ_max(D⁻¹A) that converges from below: the generalized eigenproblem A x = λ D x, A and D
 // symmetric positive definite). The coarse levels take the same ω: their λ_max(D⁻¹A) is lower
-// (1.8 and 1.5 under 3.1 on the 40³ box). A solve that still fails with it is repeated with
-// Gauss–Seidel, which the solver then keeps (nonlinear/iterative_plugin.cpp).
+// (1.8 and 1.5 under 3.1 on the 40³ box). Gauss–Seidel, forward and backward, broke down on 2
+// ranks where this converges (HEX8 at ν = 0.45 and 0.49: inputs/nearly_incompressible).
 
 #include <Teuchos_ParameterList.hpp>
 
