@@ -6,7 +6,10 @@
 // symmetric, as CG needs). Gauss–Seidel on several ranks sweeps each rank's rows with the other
 // ranks' last iterate, so 2 ranks needed more CG iterations than 1 (22 against 20 on a 40³
 // HEX8 box, 23 against 20 at twice that size); Jacobi is the same operator on any number of
-// ranks (docs/performance.md, "Two ranks against one in 3D").
+// ranks (docs/performance.md, "Two ranks against one in 3D"). The processor-block
+// Gauss–Seidel's dependence on the partition, and smoothers built from D⁻¹A with a spectral
+// bound that do not have it: Adams, Brezina, Hu & Tuminaro 2003, "Parallel multigrid
+// smoothing: polynomial versus Gauss–Seidel", J. Comput. Phys. 188.
 //
 // Its damping must keep ω λ_max(D⁻¹A) below 2, or the smoother amplifies the highest modes
 // and CG breaks down. λ_max grows with Poisson's ratio (HEX8: 3.1 / 5.1 / 6.2 at ν = 0.3 /
