@@ -119,13 +119,7 @@ Teuchos::RCP<MultiVector> node_coordinates(const Map& map, int dim,
   return X;
 }
 
-bool smoother_given(const Teuchos::ParameterList& muelu) {
-  return muelu.isParameter("smoother: type") || muelu.isParameter("smoother: pre type") ||
-         muelu.isParameter("smoother: post type") || muelu.isSublist("smoother: pre params") ||
-         muelu.isSublist("smoother: post params");
-}
-
-void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ranks,
+bool set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ranks,
                              const Teuchos::RCP<MultiVector>& null_space,
                              const Teuchos::RCP<MultiVector>& node_coordinates,
                              bool separate_bodies, bool multipliers) {
@@ -137,7 +131,12 @@ void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ran
   set_default("multigrid algorithm", std::string("sa"));
   set_default("aggregation: type", std::string("uncoupled"));
   set_default("transpose: use implicit", true);
-  if (!smoother_given(muelu)) {  // rank-local (elasticity_preconditioner.hpp)
+  const bool smoother_given =
+      muelu.isParameter("smoother: type") || muelu.isParameter("smoother: pre type") ||
+      muelu.isParameter("smoother: post type") || muelu.isSublist("smoother: pre params") ||
+      muelu.isSublist("smoother: post params");
+  bool gauss_seidel_default = false;
+  if (!smoother_given) {  // rank-local (elasticity_preconditioner.hpp)
     if (multipliers) {
       muelu.set("smoother: type", std::string("RILUK"));  // ILU(0)
     } else if (!muelu.isSublist("smoother: params")) {
@@ -154,6 +153,7 @@ void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ran
       };
       gauss_seidel("pre", false);
       gauss_seidel("post", true);
+      gauss_seidel_default = true;
     }
   }
   // MueLu's default is 2000 rows. 500: the coarse KLU2 solve stays negligible, a system of
@@ -212,6 +212,7 @@ void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ran
     muelu.sublist("user data").set("Coordinates", node_coordinates);
   if (!null_space.is_null() && !muelu.sublist("user data").isParameter("Nullspace"))
     muelu.sublist("user data").set("Nullspace", null_space);
+  return gauss_seidel_default;
 }
 
 }  // namespace grout

@@ -26,8 +26,8 @@
 //   adjoint), half the sweeps of symmetric Gauss–Seidel on both sides; at 1e6 unknowns on
 //   2 ranks 36–37 CG iterations instead of 29, the Krylov phase 0.74× (docs/performance.md,
 //   "Iterative solver"). The module replaces that Gauss–Seidel by damped Jacobi, whose
-//   damping it estimates from the matrix (nonlinear/jacobi_smoother.hpp). A user's `smoother: type` (or `smoother: pre type` and `post type`)
-//   replaces either;
+//   damping it estimates from the matrix (nonlinear/jacobi_smoother.hpp). A user's
+//   `smoother: type` (or `smoother: pre type` and `post type`) replaces either;
 // - coarse solve: KLU2 on one rank. On more ranks the coarse levels are repartitioned
 //   (Zoltan2 multi-jagged on the node coordinates) onto ⌊rows / 2000⌋ ranks (at least one, so
 //   the coarsest always onto one) with a subcommunicator,
@@ -74,17 +74,14 @@ Teuchos::RCP<MultiVector> rigid_body_modes(const Map& map, int dim,
 /// every rank owns whole nodes in node-major order (collective).
 bool is_nodal_displacement_map(const Map& map, int dim, long long num_nodes);
 
-/// Whether the user's `muelu` chooses the smoother (`smoother: type`, `pre type`, `post type`,
-/// `pre params` or `post params`): Grout's smoother defaults then stay out.
-bool smoother_given(const Teuchos::ParameterList& muelu);
-
 /// Grout's MueLu defaults for elasticity, merged under the user's `muelu` entries, plus the
 /// near-null space and the coordinates in `user data` (`muelu` is modified).
 /// `separate_bodies`: the coordinates keep the bodies apart (node_coordinates), and the
 /// aggregation drops the links between them. `multipliers`: the system holds contact or tie
 /// multiplier rows (condensed), smoothed by ILU(0); without, forward Gauss–Seidel before
-/// the coarse correction and backward after.
-void set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ranks,
+/// the coarse correction and backward after. Returns whether it set that Gauss–Seidel (no
+/// multipliers, no smoother of the user's), which the module replaces by damped Jacobi.
+bool set_elasticity_defaults(Teuchos::ParameterList& muelu, int dim, int num_ranks,
                              const Teuchos::RCP<MultiVector>& null_space,
                              const Teuchos::RCP<MultiVector>& node_coordinates,
                              bool separate_bodies = false, bool multipliers = true);

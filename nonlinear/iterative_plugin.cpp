@@ -176,19 +176,16 @@ int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b
                        Teuchos::outArg(anywhere));
     bodies = anywhere == 1;
   }
-  const bool elasticity =
-      num_nodes > 0 && is_nodal_displacement_map(*K->getRowMap(), dim, num_nodes);
   // Damped Jacobi (nonlinear/jacobi_smoother.hpp) in place of the default Gauss-Seidel on a
   // system without multipliers, unless the user chose a smoother: its damping is estimated
   // from K at each new hierarchy (the coarse-level reuse keeps it).
-  const bool jacobi = elasticity && !settings.multipliers && !smoother_given(muelu) &&
-                      !muelu.isSublist("smoother: params");
-  if (elasticity)
-    set_elasticity_defaults(muelu, dim, num_ranks,
-                            rigid_body_modes(*K->getRowMap(), dim, settings.coordinates, nodes),
-                            node_coordinates(*K->getRowMap(), dim, settings.coordinates,
-                                             bodies ? settings.bodies : std::vector<int>(), nodes),
-                            bodies, settings.multipliers);
+  bool jacobi = false;
+  if (num_nodes > 0 && is_nodal_displacement_map(*K->getRowMap(), dim, num_nodes))
+    jacobi = set_elasticity_defaults(
+        muelu, dim, num_ranks, rigid_body_modes(*K->getRowMap(), dim, settings.coordinates, nodes),
+        node_coordinates(*K->getRowMap(), dim, settings.coordinates,
+                         bodies ? settings.bodies : std::vector<int>(), nodes),
+        bodies, settings.multipliers);
   if (num_ranks > 1 && !muelu.isParameter("coarse: type"))
     muelu.set("coarse: type", "RELAXATION");  // never KLU2 on a multi-rank communicator
   const auto K_crs = Teuchos::rcp_const_cast<Matrix>(K);
