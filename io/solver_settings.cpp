@@ -69,8 +69,10 @@ LinearSolverSettings read_linear(const Teuchos::ParameterList& list, const std::
       list, path, file,
       {Key::choice("type", {"auto", "mumps", "amesos2", "belos"}, "linear solver").defaults("auto"),
        Key::boolean("condense_multipliers"), Key::boolean("reuse_preconditioner"),
-       Key::boolean("symmetric_reduction").defaults("true"), Key::section("MUMPS"),
-       Key::section("Belos"), Key::section("MueLu")});
+       Key::boolean("symmetric_reduction").defaults("true"),
+       Key::choice("near_null_space", {"rigid_body", "translations"}, "near-null space")
+           .defaults("rigid_body"),
+       Key::section("MUMPS"), Key::section("Belos"), Key::section("MueLu")});
   LinearSolverSettings settings;
   settings.where = (file.empty() ? "" : file + ": ") + path;
   const std::string type = checked.string("type");
@@ -93,6 +95,7 @@ LinearSolverSettings read_linear(const Teuchos::ParameterList& list, const std::
   if (checked.has("reuse_preconditioner"))
     settings.reuse_preconditioner = checked.boolean("reuse_preconditioner");
   settings.symmetric_reduction = checked.boolean("symmetric_reduction");
+  settings.translations_only = checked.string("near_null_space") == "translations";
   return settings;
 }
 

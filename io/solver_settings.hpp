@@ -63,6 +63,9 @@ struct LinearSolverSettings {
   /// `symmetric_reduction`: condensed solves (distributed MUMPS, Belos) try the symmetric
   /// reduction first (linear_solver.hpp).
   bool symmetric_reduction = true;
+  /// `near_null_space: translations`: MueLu's near-null space on the iterative path holds the
+  /// translations only (linear_solver.hpp); false (`rigid_body`, the default): the rotations too.
+  bool translations_only = false;
   /// "<file>: grout/solver/Linear Solver", the prefix of the solvers' input errors.
   std::string where = "grout/solver/Linear Solver";
 };

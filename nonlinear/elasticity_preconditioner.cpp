@@ -24,7 +24,7 @@ long long node_index(GO node, std::size_t num_given, const std::vector<GO>* node
 
 Teuchos::RCP<MultiVector> rigid_body_modes(const Map& map, int dim,
                                            const std::vector<double>& coordinates,
-                                           const std::vector<GO>* nodes) {
+                                           const std::vector<GO>* nodes, bool translations_only) {
   const std::size_t num_nodes = coordinates.size() / std::size_t(dim);
   // Centroid of all nodes: rotations about it keep the modes well scaled. With `nodes` each
   // rank sums its own and the sums are added over the ranks.
@@ -40,7 +40,10 @@ Teuchos::RCP<MultiVector> rigid_body_modes(const Map& map, int dim,
   }
   for (int d = 0; d < dim; ++d) centre[d] /= count > 0.0 ? count : 1.0;
 
-  const int num_modes = rigid_mode_count(dim);
+  // Translations only: every prolongator row has half the columns (3D), so MueLu's products
+  // A·P and Pᵀ(AP) cost about a half and a quarter (docs/performance.md, "Two ranks against
+  // one in 3D"); bending converges more slowly without the rotations.
+  const int num_modes = translations_only ? dim : rigid_mode_count(dim);
   auto modes = Teuchos::rcp(new MultiVector(Teuchos::rcpFromRef(map), num_modes));
   auto v = modes->getLocalViewHost(Tpetra::Access::OverwriteAll);
   for (LO i = 0; i < LO(map.getNodeNumElements()); ++i) {

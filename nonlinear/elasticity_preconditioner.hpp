@@ -64,11 +64,12 @@ namespace grout {
 /// of `coordinates` (node-major x0 y0 [z0] x1 ...): every node on every rank when `nodes` is
 /// null (the replicated mesh), else the nodes of the ascending ids `*nodes`, each rank those
 /// of its rows (the distributed mesh; collective). 3 columns in 2D, 6 in 3D, the rotations
-/// about the centroid of all nodes. Throws std::invalid_argument on a GID whose node is not
-/// given.
+/// about the centroid of all nodes; `translations_only`: the `dim` translations alone.
+/// Throws std::invalid_argument on a GID whose node is not given.
 Teuchos::RCP<MultiVector> rigid_body_modes(const Map& map, int dim,
                                            const std::vector<double>& coordinates,
-                                           const std::vector<GO>* nodes = nullptr);
+                                           const std::vector<GO>* nodes = nullptr,
+                                           bool translations_only = false);
 
 /// True if every GID of `map` (all ranks) is a displacement dof of the `num_nodes` nodes and
 /// every rank owns whole nodes in node-major order (collective).

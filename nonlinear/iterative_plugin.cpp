@@ -182,7 +182,9 @@ int BelosMueLuSolver::solve(const Teuchos::RCP<const Matrix>& K, const Vector& b
   bool jacobi = false;
   if (num_nodes > 0 && is_nodal_displacement_map(*K->getRowMap(), dim, num_nodes))
     jacobi = set_elasticity_defaults(
-        muelu, dim, num_ranks, rigid_body_modes(*K->getRowMap(), dim, settings.coordinates, nodes),
+        muelu, dim, num_ranks,
+        rigid_body_modes(*K->getRowMap(), dim, settings.coordinates, nodes,
+                         settings.translations_only),
         node_coordinates(*K->getRowMap(), dim, settings.coordinates,
                          bodies ? settings.bodies : std::vector<int>(), nodes),
         bodies, settings.multipliers);

@@ -40,6 +40,7 @@ struct IterativeSettings {
   const std::vector<GO>& nodes;            ///< ids of the nodes given, ascending; empty: all
   long long num_global_nodes;              ///< all ranks; 0: the nodes of `coordinates`
   bool multipliers;                        ///< contact or tie multipliers (condensed or not)
+  bool translations_only;                  ///< near-null space: no rotations (elasticity)
 };
 
 class IterativeSolver {
@@ -80,7 +81,7 @@ class IterativeSolver {
 
 /// Bumped whenever IterativeSolver or IterativeSettings change: a module built from other
 /// sources refuses to create a solver (the loader then tries the next directory).
-constexpr int iterative_solver_interface_version = 6;
+constexpr int iterative_solver_interface_version = 7;
 
 }  // namespace grout
 

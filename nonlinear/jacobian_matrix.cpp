@@ -81,12 +81,10 @@ Teuchos::RCP<Matrix> jacobian_matrix(const Matrix& K_solid, const Teuchos::RCP<c
   // Rows: per column ascending, K_solid's entry, then the terms in key order, then the
   // multiplier diagonal's stored zero, summed in that order (a merge of K_solid's sorted row
   // with the sorted terms).
+  // Written into the views J keeps (local_csr_matrix.hpp), with room for the most the rows
+  // can hold: K_solid's entries, the terms and the multiplier diagonals.
   const bool k_sorted = K_solid.getCrsGraph()->isSorted();
-  std::vector<std::size_t> row_ptr(std::size_t(n_rows) + 1, 0);
-  std::vector<LO> col_ind;
-  std::vector<double> vals;
-  col_ind.reserve(K.values.extent(0) + terms.size() + std::size_t(n_rows - n_u));
-  vals.reserve(col_ind.capacity());
+  CsrBuilder rows(n_rows, K.values.extent(0) + terms.size() + std::size_t(n_rows - n_u));
   // K_solid's row; sorted first if its graph is not (Tpetra's fill-complete rows are)
   std::vector<std::pair<LO, double>> k_row;
   for (LO i = 0; i < n_rows; ++i) {
@@ -95,11 +93,9 @@ Teuchos::RCP<Matrix> jacobian_matrix(const Matrix& K_solid, const Teuchos::RCP<c
     if (has_solid && K_rows.getGlobalElement(i) != map->getGlobalElement(i))
       throw std::logic_error("jacobian_matrix: J's rows must start with K_solid's, in order");
     if (has_solid && t0 == t1 && k_sorted) {  // K_solid's row as it is (sorted, merged)
-      for (auto p = K.graph.row_map(i); p < K.graph.row_map(i + 1); ++p) {
-        col_ind.push_back(K.graph.entries(p));
-        vals.push_back(K.values(p));
-      }
-      row_ptr[i + 1] = col_ind.size();
+      for (auto p = K.graph.row_map(i); p < K.graph.row_map(i + 1); ++p)
+        rows.append(K.graph.entries(p), K.values(p));
+      rows.end_row();
       continue;
     }
     k_row.clear();
@@ -123,16 +119,15 @@ Teuchos::RCP<Matrix> jacobian_matrix(const Matrix& K_solid, const Teuchos::RCP<c
       for (; q < t1 && term_col[term_order[q]] == c; ++q)
         v = have ? v + terms[term_order[q]].value : terms[term_order[q]].value, have = true;
       if (diagonal_pending && c == diagonal) v = have ? v + 0.0 : 0.0, diagonal_pending = false;
-      col_ind.push_back(c);
-      vals.push_back(v);
+      rows.append(c, v);
     }
-    row_ptr[i + 1] = col_ind.size();
+    rows.end_row();
   }
 
   const Teuchos::RCP<const Map> column_map =
       Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(), columns.data(),
                            columns.size(), map->getIndexBase(), map->getComm()));
-  return local_csr_matrix(map, column_map, row_ptr, col_ind, vals, map, map);
+  return rows.matrix(map, column_map, map, map);
 }
 
 }  // namespace grout

@@ -351,7 +351,8 @@ int LinearSolver::solve_system(const Teuchos::RCP<const Matrix>& K, const Vector
                                    impl_->layout.node_bodies,
                                    impl_->layout.nodes,
                                    impl_->layout.num_global_nodes,
-                                   with_multipliers};
+                                   with_multipliers,
+                                   impl_->settings.translations_only};
   try {
     return impl_->agreed_iterative_solve(K, b, x, belos_type, settings);
   } catch (const ExitCodeError&) {  // no module, or an error with its own exit code

@@ -46,6 +46,10 @@
 //   symmetric_reduction: true    (default true) condensed solves on the distributed MUMPS path
 //                            and on the iterative path first try the symmetric reduction
 //                            (below); false: always the condensation.
+//   near_null_space: rigid_body  (default) MueLu's near-null space on the iterative path: the
+//                            rigid-body modes of the coordinates; `translations`: the
+//                            translations only, a cheaper set-up for more CG iterations
+//                            (docs/input.md).
 // --- condensed multipliers (nonlinear/condensed_solve.hpp) ---
 //   condense_multipliers: true   (default: true on the iterative path and the distributed
 //                            MUMPS path, 3D's default; false on the gathered direct solves

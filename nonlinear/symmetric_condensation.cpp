@@ -562,10 +562,8 @@ void SymmetricCondensation::Impl::build_reduced_matrix(
   std::vector<LO> j_row(n);  // K̃'s row -> J's row
   for (LO i = 0, r = 0; i < LO(row_map.getNodeNumElements()); ++i)
     if (!m.is_lambda(row_map.getGlobalElement(i))) j_row[r++] = i;
-  std::vector<std::size_t> ptr(std::size_t(n) + 1, 0);
-  std::vector<LO> ind;
-  std::vector<double> val;
-  ind.reserve(local.values.extent(0)), val.reserve(local.values.extent(0));
+  // Room for J's entries; the contact rows' fill may grow it (CsrBuilder).
+  CsrBuilder rows(n, local.values.extent(0));
   std::vector<std::pair<LO, double>> row_entries;
   for (LO i = 0; i < n; ++i) {
     const GO ng = m.reduced_map->getGlobalElement(i);
@@ -609,17 +607,17 @@ void SymmetricCondensation::Impl::build_reduced_matrix(
     }
     const bool keep_zeros = extra.count(ng) != 0;  // the eliminated rows' pattern
     for (const auto& [c, v] : row_entries)
-      if (v != 0.0 || keep_zeros) ind.push_back(c), val.push_back(v);
-    ptr[i + 1] = ind.size();
+      if (v != 0.0 || keep_zeros) rows.append(c, v);
+    rows.end_row();
   }
   const auto col_map =
       Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
                            col_gids.data(), col_gids.size(), 0, comm));
   // Rows sorted and merged (J's sorted rows keep their order under j_col_new, the others were
-  // sorted above): local_csr_matrix copies them once into the views the matrix keeps (at 3e5
-  // unknowns the earlier ArrayRCP route's zero fill and second copy were a quarter of the
-  // reduction).
-  m.A = local_csr_matrix(m.reduced_map, col_map, ptr, ind, val, m.reduced_map, m.reduced_map);
+  // sorted above), written into the views K̃ keeps (at 3e5 unknowns the earlier ArrayRCP
+  // route's zero fill and second copy were a quarter of the reduction; at 1e6 a copy from
+  // vectors was 0.5 GB of fresh pages a Newton iteration).
+  m.A = rows.matrix(m.reduced_map, col_map, m.reduced_map, m.reduced_map);
 }
 
 bool SymmetricCondensation::condense(const Matrix& J, const Vector& b,

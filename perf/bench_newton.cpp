@@ -178,6 +178,11 @@ double timed(Work&& work, double* cpu = nullptr) {
   return max_over_ranks(wall);
 }
 
+bool env_flag(const char* name) {
+  const char* v = std::getenv(name);
+  return v && std::string(v) != "0" && !std::string(v).empty();
+}
+
 double timer_seconds(const char* name) {
   return Teuchos::TimeMonitor::getNewTimer(name)->totalElapsedTime();
 }
@@ -339,6 +344,8 @@ void newton_benchmark(benchmark::State& state, int dim, std::string solver_type)
     }
     state.SetIterationTime(t_residual + jacobian + solve);
   }
+  // Every Teuchos timer (MueLu's per phase and level when its verbosity is high), on request.
+  if (env_flag("GROUT_BENCH_NEWTON_TIMERS")) Teuchos::TimeMonitor::summarize();
   if (!ok) {
     state.SkipWithError(("failed: " + error).c_str());
     return;
@@ -483,11 +490,6 @@ void step_benchmark(benchmark::State& state, int dim, bool dynamic) {
     state.counters["iteration_ratio"] =
         (cost.step_s / cost.newton_per_step) / (q.step_s / q.newton_per_step);
   }
-}
-
-bool env_flag(const char* name) {
-  const char* v = std::getenv(name);
-  return v && std::string(v) != "0" && !std::string(v).empty();
 }
 
 void register_benchmarks() {

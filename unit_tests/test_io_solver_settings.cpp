@@ -61,6 +61,7 @@ TEST(SolverSettings, DefaultsAreTheSolversDefaults) {
   EXPECT_FALSE(s.linear.condense_multipliers.has_value());
   EXPECT_FALSE(s.linear.reuse_preconditioner.has_value());  // the coarse levels kept
   EXPECT_TRUE(s.linear.symmetric_reduction);
+  EXPECT_FALSE(s.linear.translations_only);  // the rotations in the near-null space
   EXPECT_EQ(s.linear.where, "case.yaml: grout/solver/Linear Solver");
 }
 
@@ -82,6 +83,7 @@ TEST(SolverSettings, ReadsEveryKeyTyped) {
       condense_multipliers: false
       reuse_preconditioner: true
       symmetric_reduction: false
+      near_null_space: translations
       MUMPS: {ordering: amd, gather: true, symmetric: false}
       Belos: {Solver Type: GMRES, Maximum Iterations: 50, Convergence Tolerance: 1.0e-9}
       MueLu:
@@ -108,6 +110,7 @@ TEST(SolverSettings, ReadsEveryKeyTyped) {
   EXPECT_EQ(s.linear.condense_multipliers, std::optional<bool>(false));
   EXPECT_EQ(s.linear.reuse_preconditioner, std::optional<bool>(true));
   EXPECT_FALSE(s.linear.symmetric_reduction);
+  EXPECT_TRUE(s.linear.translations_only);
   EXPECT_EQ(s.linear.mumps.ordering, "amd");
   EXPECT_TRUE(s.linear.mumps.gather);
   EXPECT_TRUE(s.linear.mumps_given);
@@ -132,6 +135,9 @@ TEST(SolverSettings, LinearSolverShapeAndType) {
   expect_error("{Linear Solver: {type: superlu}}",
                "case.yaml: grout/solver/Linear Solver/type: unknown linear solver 'superlu' "
                "(expected one of: auto, mumps, amesos2, belos)");
+  expect_error("{Linear Solver: {near_null_space: rotations}}",
+               "case.yaml: grout/solver/Linear Solver/near_null_space: unknown near-null space "
+               "'rotations' (expected one of: rigid_body, translations)");
   expect_error("{Linear Solver: {MUMPS: 5}}",
                "case.yaml: grout/solver/Linear Solver/MUMPS: expected a section of keys, got an "
                "integer '5'");
@@ -146,12 +152,12 @@ TEST(SolverSettings, LinearSolverShapeAndType) {
 TEST(SolverSettings, MisspeltKeysAreNamedWithASuggestion) {
   expect_error("{Linear Solver: {typ: mumps}}",
                "case.yaml: grout/solver/Linear Solver: unknown key 'typ' (expected one of: type, "
-               "condense_multipliers, reuse_preconditioner, symmetric_reduction, MUMPS, Belos, "
-               "MueLu); did you mean 'type'?");
+               "condense_multipliers, reuse_preconditioner, symmetric_reduction, near_null_space, "
+               "MUMPS, Belos, MueLu); did you mean 'type'?");
   expect_error("{Linear Solver: {condense_multiplier: true}}",
                "case.yaml: grout/solver/Linear Solver: unknown key 'condense_multiplier' (expected "
                "one of: type, condense_multipliers, reuse_preconditioner, symmetric_reduction, "
-               "MUMPS, Belos, MueLu); did you mean 'condense_multipliers'?");
+               "near_null_space, MUMPS, Belos, MueLu); did you mean 'condense_multipliers'?");
   expect_error("{Linear Solver: {MUMPS: {orderin: amd}}}",
                "case.yaml: grout/solver/Linear Solver/MUMPS: unknown key 'orderin' (expected one "
                "of: ordering, symmetric, gather); did you mean 'ordering'?");
