@@ -56,6 +56,11 @@ void CsrBuilder::grow() {
   Kokkos::resize(values_, grown);
 }
 
+void CsrBuilder::too_many_rows() const {
+  throw std::logic_error("CsrBuilder: a row closed past the last of " +
+                         std::to_string(offsets_.extent(0) - 1));
+}
+
 Teuchos::RCP<Matrix> CsrBuilder::matrix(const Teuchos::RCP<const Map>& row_map,
                                         const Teuchos::RCP<const Map>& col_map,
                                         const Teuchos::RCP<const Map>& domain,

@@ -50,8 +50,12 @@ class CsrBuilder {
     values_(nnz_) = value;
     ++nnz_;
   }
-  /// Closes the current row; the next append opens the next.
-  void end_row() { offsets_(++row_) = nnz_; }
+  /// Closes the current row; the next append opens the next. Throws std::logic_error past the
+  /// last row.
+  void end_row() {
+    if (std::size_t(row_) + 1 >= offsets_.extent(0)) too_many_rows();
+    offsets_(++row_) = nnz_;
+  }
   std::size_t size() const { return nnz_; }
   /// The matrix, as local_csr_matrix, once every row is closed (throws std::logic_error
   /// otherwise); the builder is left empty.
@@ -62,6 +66,7 @@ class CsrBuilder {
 
  private:
   void grow();
+  [[noreturn]] void too_many_rows() const;
   CsrRowOffsets offsets_;
   CsrColumns columns_;
   CsrValues values_;

@@ -1,6 +1,6 @@
 // CsrBuilder (nonlinear/local_csr_matrix.hpp) against the same matrix inserted the plain Tpetra
 // way, on 1 and 2 ranks: a builder given room for one entry grows many times over and keeps
-// every entry, rows with no entry included; a builder whose rows are not all closed refuses.
+// every entry, rows with no entry included; a builder refuses open rows and rows past the last.
 
 #include <gtest/gtest.h>
 
@@ -64,6 +64,8 @@ TEST(CsrBuilder, RefusesOpenRows) {
   rows.append(0, 1.0);
   rows.end_row();  // the second row never closed
   EXPECT_THROW(rows.matrix(map, map, map, map), std::logic_error);
+  rows.end_row();
+  EXPECT_THROW(rows.end_row(), std::logic_error);  // a third row of two
 }
 
 }  // namespace
