@@ -80,9 +80,8 @@ Teuchos::RCP<Matrix> jacobian_matrix(const Matrix& K_solid, const Teuchos::RCP<c
 
   // Rows: per column ascending, K_solid's entry, then the terms in key order, then the
   // multiplier diagonal's stored zero, summed in that order (a merge of K_solid's sorted row
-  // with the sorted terms).
-  // Written into the views J keeps (local_csr_matrix.hpp), with room for the most the rows
-  // can hold: K_solid's entries, the terms and the multiplier diagonals.
+  // with the sorted terms), written into the views J keeps (local_csr_matrix.hpp), with room
+  // for the most the rows can hold: K_solid's entries, the terms and the multiplier diagonals.
   const bool k_sorted = K_solid.getCrsGraph()->isSorted();
   CsrBuilder rows(n_rows, K.values.extent(0) + terms.size() + std::size_t(n_rows - n_u));
   // K_solid's row; sorted first if its graph is not (Tpetra's fill-complete rows are)
